@@ -1,0 +1,70 @@
+// A double that carries a rigorous bound on its own rounding error: the semi-static filter.
+//
+// Derivation (standard model fl(a op b) = (a op b)(1 + d), |d| <= u = 2^-53, plus an
+// absolute error |eta| <= 2^-1075 for a product that underflows; sums are exact when subnormal).
+// Each value carries v (computed), p (a "permanent") and a compile-time count K, with
+//   (I1) |v - x| <= gamma_K * p      (x: the exact value, gamma_K = K u / (1 - K u))
+//   (I2) |v| <= p
+// * input:               v = x, p = |x|, K = 0.
+// * difference of inputs: v = fl(a - b), p = |v|, K = 1      (|fl(y) - y| <= u |fl(y)| under RN).
+// * sum/difference:      p = fl(pa + pb), K = max(Ka, Kb) + 1:
+//     |v - x| <= gamma_Ka pa + gamma_Kb pb + u (pa + pb) <= gamma_{max+1} (pa + pb).
+// * product:             p = fl(fl(pa pb) + c), c = 2^-1020, K = Ka + Kb + 1:
+//     |va vb - xa xb| <= |va||vb - xb| + |xb||va - xa| <= (gamma_Ka + gamma_Kb + gamma_Ka gamma_Kb) pa pb
+//     and the rounding adds u |va vb| + eta; gamma_{Ka+Kb+1} c >= u c = 2^-1073 > eta covers eta.
+// Rounding of p itself loses at most a factor (1 - u) per operation; the final bound is inflated
+// by (1 + 2^-20), valid for expressions of fewer than 2^30 operations, plus 2^-1060 to absorb
+// the rounding of gamma * p. Overflow makes p infinite or NaN, so the bound test fails and the
+// filter answers "uncertain": it never claims a sign it cannot prove, at any input magnitude.
+export module incidence.arith:filtered;
+import :eft;
+
+export namespace incidence::arith {
+
+inline constexpr double unit_roundoff = 1.0 / 9007199254740992.0; // 2^-53
+
+template <int K>
+struct filtered {
+    static constexpr int ops = K;
+    double v;
+    double p;
+};
+
+[[nodiscard]] constexpr filtered<0> lift_filtered(double x) { return {x, abs(x)}; }
+
+template <int A, int B>
+[[nodiscard]] constexpr auto operator+(filtered<A> a, filtered<B> b) {
+    const double v = a.v + b.v;
+    if constexpr (A == 0 && B == 0) return filtered<1>{v, abs(v)};
+    else return filtered<(A > B ? A : B) + 1>{v, a.p + b.p};
+}
+template <int A, int B>
+[[nodiscard]] constexpr auto operator-(filtered<A> a, filtered<B> b) {
+    const double v = a.v - b.v;
+    if constexpr (A == 0 && B == 0) return filtered<1>{v, abs(v)};
+    else return filtered<(A > B ? A : B) + 1>{v, a.p + b.p};
+}
+template <int A>
+[[nodiscard]] constexpr filtered<A> operator-(filtered<A> a) { return {-a.v, a.p}; }
+template <int A, int B>
+[[nodiscard]] constexpr filtered<A + B + 1> operator*(filtered<A> a, filtered<B> b) {
+    return {a.v * b.v, a.p * b.p + 0x1p-1020};
+}
+
+template <int K>
+[[nodiscard]] constexpr double error_bound(filtered<K> a) {
+    constexpr double ku = K * unit_roundoff;
+    constexpr double gamma = ku / (1.0 - ku) * (1.0 + 0x1p-20);
+    return gamma * a.p + 0x1p-1060;
+}
+
+// +1 / -1 when the sign is proven, 0 when the filter cannot decide.
+template <int K>
+[[nodiscard]] constexpr int proven_sign(filtered<K> a) {
+    const double b = error_bound(a);
+    if (a.v > b) return 1;
+    if (a.v < -b) return -1;
+    return 0;
+}
+
+} // namespace incidence::arith

@@ -1,0 +1,212 @@
+// One predicate, four tiers. A predicate is written once as a generic lambda
+//     [&](auto L) { ... return polynomial(L(x0), L(x1), ...); }
+// that lifts its double inputs with L and returns a polynomial expression in them. Each
+// *kernel* evaluates it with a different number type and turns the result into a sign:
+//   approx_kernel  plain double                      (tier approximate)
+//   filter_kernel  filtered<K> (rigorous error bound) (classify; conservative/aggressive)
+//   exact_kernel   filter, then expansions in a safe exponent window, then dyadic big integers
+// A query body is a template over the kernel, so the *same* decision logic runs in every tier.
+//
+// Rule for predicate polynomials: homogeneous in their inputs (every input has degree 1,
+// no literal constants), so scaling all inputs by 2^s keeps the sign. The range probe checks it.
+module;
+#include <array>
+#include <cstdint>
+export module incidence.arith:kernel;
+import incidence.core;
+import :eft;
+import :expansion;
+import :filtered;
+import :dyadic;
+
+export namespace incidence::arith {
+
+// --- generic small vector algebra over any number type --------------------------------------
+template <class T>
+struct v3 {
+    T x, y, z;
+};
+template <class T>
+struct v2 {
+    T x, y;
+};
+template <class L>
+[[nodiscard]] constexpr auto lift(L l, point3 p) { return v3<decltype(l(0.0))>{l(p.x), l(p.y), l(p.z)}; }
+template <class L>
+[[nodiscard]] constexpr auto lift(L l, vec3 p) { return v3<decltype(l(0.0))>{l(p.x), l(p.y), l(p.z)}; }
+template <class L>
+[[nodiscard]] constexpr auto lift(L l, point2 p) { return v2<decltype(l(0.0))>{l(p.x), l(p.y)}; }
+template <class L>
+[[nodiscard]] constexpr auto lift(L l, vec2 p) { return v2<decltype(l(0.0))>{l(p.x), l(p.y)}; }
+
+template <class A, class B>
+[[nodiscard]] constexpr auto operator-(const v3<A>& a, const v3<B>& b) {
+    return v3<decltype(a.x - b.x)>{a.x - b.x, a.y - b.y, a.z - b.z};
+}
+template <class A, class B>
+[[nodiscard]] constexpr auto operator+(const v3<A>& a, const v3<B>& b) {
+    return v3<decltype(a.x + b.x)>{a.x + b.x, a.y + b.y, a.z + b.z};
+}
+template <class A, class B>
+[[nodiscard]] constexpr auto dot(const v3<A>& a, const v3<B>& b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+template <class A, class B>
+[[nodiscard]] constexpr auto cross(const v3<A>& a, const v3<B>& b) {
+    using T = decltype(a.y * b.z - a.z * b.y);
+    return v3<T>{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+// det[a; b; c] = a . (b x c)
+template <class A, class B, class C>
+[[nodiscard]] constexpr auto det3(const v3<A>& a, const v3<B>& b, const v3<C>& c) {
+    return a.x * (b.y * c.z - b.z * c.y) + a.y * (b.z * c.x - b.x * c.z) + a.z * (b.x * c.y - b.y * c.x);
+}
+template <class A, class B>
+[[nodiscard]] constexpr auto operator-(const v2<A>& a, const v2<B>& b) {
+    return v2<decltype(a.x - b.x)>{a.x - b.x, a.y - b.y};
+}
+template <class A, class B>
+[[nodiscard]] constexpr auto dot(const v2<A>& a, const v2<B>& b) { return a.x * b.x + a.y * b.y; }
+template <class A, class B>
+[[nodiscard]] constexpr auto cross(const v2<A>& a, const v2<B>& b) { return a.x * b.y - a.y * b.x; }
+
+// --- lifts -----------------------------------------------------------------------------------
+struct lift_double {
+    [[nodiscard]] constexpr double operator()(double x) const { return x; }
+};
+struct lift_filter {
+    [[nodiscard]] constexpr filtered<0> operator()(double x) const { return lift_filtered(x); }
+};
+struct lift_expansion {
+    int shift = 0; // inputs are scaled by 2^shift (exact inside the safe window)
+    [[nodiscard]] constexpr expansion<1> operator()(double x) const {
+        return expansion<1>(shift == 0 ? x : scale_by_power_of_two(x, shift));
+    }
+};
+struct lift_dyadic {
+    [[nodiscard]] constexpr dyadic operator()(double x) const { return to_dyadic(x); }
+};
+
+// Range probe: the polynomial's degree range and the exponent range of its nonzero inputs.
+struct range_probe {
+    int dmin = 1, dmax = 1;
+    int emin = 1 << 20, emax = -(1 << 20);
+    bool finite = true;
+};
+[[nodiscard]] constexpr range_probe merge_range(range_probe a, range_probe b) {
+    return {a.dmin, a.dmax, a.emin < b.emin ? a.emin : b.emin, a.emax > b.emax ? a.emax : b.emax,
+            a.finite && b.finite};
+}
+[[nodiscard]] constexpr range_probe operator+(range_probe a, range_probe b) {
+    auto r = merge_range(a, b);
+    r.dmin = a.dmin < b.dmin ? a.dmin : b.dmin;
+    r.dmax = a.dmax > b.dmax ? a.dmax : b.dmax;
+    return r;
+}
+[[nodiscard]] constexpr range_probe operator-(range_probe a, range_probe b) { return a + b; }
+[[nodiscard]] constexpr range_probe operator-(range_probe a) { return a; }
+[[nodiscard]] constexpr range_probe operator*(range_probe a, range_probe b) {
+    auto r = merge_range(a, b);
+    r.dmin = a.dmin + b.dmin;
+    r.dmax = a.dmax + b.dmax;
+    return r;
+}
+struct lift_range {
+    [[nodiscard]] constexpr range_probe operator()(double x) const {
+        range_probe r;
+        if (!is_finite(x)) r.finite = false;
+        else if (x != 0.0) r.emin = r.emax = exponent_of(x);
+        return r;
+    }
+};
+
+// --- exact sign ------------------------------------------------------------------------------
+[[nodiscard]] constexpr sign to_sign(int s) { return s > 0 ? sign::positive : (s < 0 ? sign::negative : sign::zero); }
+[[nodiscard]] constexpr sign sign_of_double(double v) {
+    return v > 0.0 ? sign::positive : (v < 0.0 ? sign::negative : sign::zero);
+}
+
+// Largest expansion capacity evaluated on the stack; larger predicates go to the dyadic path.
+inline constexpr int max_expansion_capacity = 2048;
+
+// Exact sign of a generic polynomial predicate at the exact values of its inputs.
+// `valid` is cleared for non-finite inputs (their sign is then reported as zero).
+template <class F>
+[[nodiscard]] constexpr sign exact_sign(F f, bool& valid) {
+    // Stage 1: semi-static filter.
+    if (const int s = proven_sign(f(lift_filter{})); s != 0) return to_sign(s);
+    const range_probe r = f(lift_range{});
+    if (!r.finite) {
+        valid = false;
+        return sign::zero;
+    }
+    if (r.emax < r.emin) return sign::zero; // every input is zero
+    // Stage 2: expansions, when every intermediate stays clear of underflow and overflow.
+    // A d-fold product of components of exponent >= emin - 106 stays >= d (emin - 106), which
+    // must be >= -1000; the largest sum stays below d (emax + 1) + 7 <= 1000 (64 terms at most).
+    using X = decltype(f(lift_expansion{}));
+    if constexpr (X::capacity <= max_expansion_capacity) {
+        if (r.dmin == r.dmax) {
+            const int d = r.dmax;
+            const int lo = 108 - 1000 / d; // 2 of margin for the integer halving below
+            const int hi = 1000 / d - 7;
+            if (r.emax - r.emin <= hi - lo - 2) {
+                const int shift = (lo + hi) / 2 - (r.emin + r.emax) / 2;
+                return to_sign(f(lift_expansion{shift}).sign());
+            }
+        }
+    }
+    // Stage 3: dyadic big integers, exact over the whole finite range.
+    return to_sign(sign_of(f(lift_dyadic{})));
+}
+
+// --- kernels ---------------------------------------------------------------------------------
+struct approx_kernel {
+    template <class F>
+    [[nodiscard]] constexpr sign sgn(F f) { return sign_of_double(f(lift_double{})); }
+};
+
+struct filter_kernel {
+    bool failed = false; // some sign could not be proven: the query's answer is uncertain
+    template <class F>
+    [[nodiscard]] constexpr sign sgn(F f) {
+        const int s = proven_sign(f(lift_filter{}));
+        if (s == 0) failed = true;
+        return to_sign(s);
+    }
+};
+
+struct exact_kernel {
+    bool valid = true; // false when a predicate saw a NaN or infinite input
+    template <class F>
+    [[nodiscard]] constexpr sign sgn(F f) { return exact_sign(f, valid); }
+};
+
+// Run a yes/no query body in a tier. The body is `template <class K> bool(K&)`.
+template <class Tier, class Body>
+[[nodiscard]] constexpr bool decide(Body body) {
+    if constexpr (__is_same(Tier, approximate)) {
+        approx_kernel k;
+        return body(k);
+    } else {
+        filter_kernel f;
+        const bool r = body(f);
+        if (!f.failed) return r;
+        if constexpr (__is_same(Tier, conservative)) return true;
+        else if constexpr (__is_same(Tier, aggressive)) return false;
+        else {
+            exact_kernel e;
+            const bool x = body(e);
+            return e.valid && x;
+        }
+    }
+}
+
+template <class Body>
+[[nodiscard]] constexpr certainty classify_body(Body body) {
+    filter_kernel f;
+    const bool r = body(f);
+    return f.failed ? certainty::uncertain : to_certainty(r);
+}
+
+} // namespace incidence::arith

@@ -1,0 +1,5 @@
+// incidence.core: points and vectors, signs and tiers, errors and results.
+export module incidence.core;
+export import :vec;
+export import :tier;
+export import :error;

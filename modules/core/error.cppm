@@ -1,0 +1,40 @@
+// Why a checked constructor refused its input, and the result type that carries it.
+module;
+#include <boost/outcome/result.hpp>
+export module incidence.core:error;
+
+export namespace incidence {
+
+enum class errc : unsigned char {
+    not_finite,          // a coordinate or scalar is NaN or infinite
+    zero_direction,      // a ray or line direction is the zero vector
+    zero_normal,         // a plane normal is the zero vector
+    negative_radius,     // a sphere radius is negative
+    inverted_box,        // an AABB has min > max on some axis
+    degenerate_triangle, // the three vertices are collinear (exactly)
+    degenerate_segment,  // both end points coincide
+};
+
+struct error {
+    errc code;
+    [[nodiscard]] constexpr const char* message() const {
+        switch (code) {
+        case errc::not_finite: return "a coordinate or scalar is NaN or infinite";
+        case errc::zero_direction: return "the direction vector is zero";
+        case errc::zero_normal: return "the plane normal is zero";
+        case errc::negative_radius: return "the radius is negative";
+        case errc::inverted_box: return "the box has min > max on some axis";
+        case errc::degenerate_triangle: return "the triangle's vertices are collinear (zero area)";
+        case errc::degenerate_segment: return "the segment's end points coincide";
+        }
+        return "unknown error";
+    }
+    friend constexpr bool operator==(const error&, const error&) = default;
+};
+
+// Fallible construction returns either the shape or the reason it was refused.
+// `.value()` on an error terminates; check `has_value()` or `operator bool` first.
+template <class T>
+using result = boost::outcome_v2::basic_result<T, error, boost::outcome_v2::policy::terminate>;
+
+} // namespace incidence

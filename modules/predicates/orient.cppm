@@ -1,0 +1,103 @@
+// orient2d, orient3d, incircle, insphere with Shewchuk's sign conventions, exact for every
+// finite input and usable in constant expressions.
+// Source: Shewchuk, DCG 18 (1997), section 4 (the determinants) and section 2 (exactness);
+// here the adaptive stages are the generic kernel's: filter, expansions, dyadic integers.
+// Worst-case expansion lengths (kernel stage 2): orient2d 16, orient3d 192, incircle 1536;
+// insphere (9216) goes straight from the filter to the dyadic stage.
+export module incidence.predicates:orient;
+import incidence.core;
+import incidence.arith;
+
+export namespace incidence {
+
+namespace poly {
+// The predicate polynomials, generic over the number type (see incidence.arith:kernel).
+[[nodiscard]] constexpr auto orient2d(point2 a, point2 b, point2 c) {
+    return [=](auto L) {
+        const auto A = arith::lift(L, a), B = arith::lift(L, b), C = arith::lift(L, c);
+        return arith::cross(A - C, B - C);
+    };
+}
+[[nodiscard]] constexpr auto orient3d(point3 a, point3 b, point3 c, point3 d) {
+    return [=](auto L) {
+        const auto A = arith::lift(L, a), B = arith::lift(L, b), C = arith::lift(L, c), D = arith::lift(L, d);
+        return arith::det3(A - D, B - D, C - D);
+    };
+}
+[[nodiscard]] constexpr auto incircle(point2 a, point2 b, point2 c, point2 d) {
+    return [=](auto L) {
+        const auto D = arith::lift(L, d);
+        const auto ad = arith::lift(L, a) - D, bd = arith::lift(L, b) - D, cd = arith::lift(L, c) - D;
+        const auto alift = ad.x * ad.x + ad.y * ad.y;
+        const auto blift = bd.x * bd.x + bd.y * bd.y;
+        const auto clift = cd.x * cd.x + cd.y * cd.y;
+        return alift * (bd.x * cd.y - cd.x * bd.y) + blift * (cd.x * ad.y - ad.x * cd.y) +
+               clift * (ad.x * bd.y - bd.x * ad.y);
+    };
+}
+[[nodiscard]] constexpr auto insphere(point3 a, point3 b, point3 c, point3 d, point3 e) {
+    return [=](auto L) {
+        const auto E = arith::lift(L, e);
+        const auto ae = arith::lift(L, a) - E, be = arith::lift(L, b) - E, ce = arith::lift(L, c) - E,
+                   de = arith::lift(L, d) - E;
+        const auto ab = ae.x * be.y - be.x * ae.y, bc = be.x * ce.y - ce.x * be.y;
+        const auto cd = ce.x * de.y - de.x * ce.y, da = de.x * ae.y - ae.x * de.y;
+        const auto ac = ae.x * ce.y - ce.x * ae.y, bd = be.x * de.y - de.x * be.y;
+        const auto abc = ae.z * bc - be.z * ac + ce.z * ab;
+        const auto bcd = be.z * cd - ce.z * bd + de.z * bc;
+        const auto cda = ce.z * da + de.z * ac + ae.z * cd;
+        const auto dab = de.z * ab + ae.z * bd + be.z * da;
+        const auto alift = ae.x * ae.x + ae.y * ae.y + ae.z * ae.z;
+        const auto blift = be.x * be.x + be.y * be.y + be.z * be.z;
+        const auto clift = ce.x * ce.x + ce.y * ce.y + ce.z * ce.z;
+        const auto dlift = de.x * de.x + de.y * de.y + de.z * de.z;
+        return (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+    };
+}
+} // namespace poly
+
+template <class Tier>
+concept sign_tier = __is_same(Tier, exact) || __is_same(Tier, approximate);
+
+template <sign_tier Tier, class F>
+[[nodiscard]] constexpr sign evaluate_sign(F f) {
+    if constexpr (__is_same(Tier, approximate)) return arith::approx_kernel{}.sgn(f);
+    else return arith::exact_kernel{}.sgn(f);
+}
+
+// positive: a, b, c are in counterclockwise order.
+template <sign_tier Tier = exact>
+[[nodiscard]] constexpr sign orient2d(point2 a, point2 b, point2 c) {
+    return evaluate_sign<Tier>(poly::orient2d(a, b, c));
+}
+// positive: d lies below the plane through a, b, c, "below" being the side from which a, b, c
+// appear clockwise (so a, b, c are counterclockwise seen from above). Equals det[a-d; b-d; c-d].
+template <sign_tier Tier = exact>
+[[nodiscard]] constexpr sign orient3d(point3 a, point3 b, point3 c, point3 d) {
+    return evaluate_sign<Tier>(poly::orient3d(a, b, c, d));
+}
+// positive: d lies inside the circle through a, b, c, which must be counterclockwise.
+template <sign_tier Tier = exact>
+[[nodiscard]] constexpr sign incircle(point2 a, point2 b, point2 c, point2 d) {
+    return evaluate_sign<Tier>(poly::incircle(a, b, c, d));
+}
+// positive: e lies inside the sphere through a, b, c, d, which must have orient3d(a,b,c,d) > 0.
+template <sign_tier Tier = exact>
+[[nodiscard]] constexpr sign insphere(point3 a, point3 b, point3 c, point3 d, point3 e) {
+    return evaluate_sign<Tier>(poly::insphere(a, b, c, d, e));
+}
+
+// The filter alone: the sign when it is provable in floating point, otherwise std::nullopt-like
+// sign::zero with `proven == false`.
+struct filtered_sign {
+    sign value;
+    bool proven;
+};
+template <class F>
+[[nodiscard]] constexpr filtered_sign classify_sign(F f) {
+    arith::filter_kernel k;
+    const sign s = k.sgn(f);
+    return {s, !k.failed};
+}
+
+} // namespace incidence

@@ -1,0 +1,180 @@
+// incidence.query: the public front door. Each pair is written once, in lexicographic order
+// of the shape names, as a kernel-generic body in namespace incidence::pair; the templates
+// here give every tier, and serve the reversed argument order by forwarding.
+//
+//   intersects<Tier>(a, b) -> bool        classify(a, b) -> certainty (filter only)
+//   contains<Tier>(a, b)   -> bool        intersection<Tier>(a, b) -> std::optional<hit>
+//   squared_distance<Tier>(box, point), max_squared_distance<Tier>(box, point)
+//   covers(a, b, c): does a u b contain the box c
+// Tier is one of exact (the default), conservative, aggressive, approximate.
+module;
+#include <optional>
+export module incidence.query;
+export import :point_sphere;
+export import :sphere_sphere;
+export import :aabb_point;
+export import :aabb_aabb;
+export import :ray_sphere;
+export import :aabb_ray;
+export import :ray_triangle;
+export import :segment_triangle;
+import incidence.core;
+import incidence.arith;
+import incidence.shapes;
+
+export namespace incidence {
+
+template <class A, class B>
+concept canonical_pair = requires(arith::filter_kernel& k, const A& a, const B& b) {
+    { pair::intersects(k, a, b) };
+};
+template <class A, class B>
+concept has_pair = canonical_pair<A, B> || canonical_pair<B, A>;
+
+namespace detail {
+template <class A, class B>
+concept approximate_override = requires(const A& a, const B& b) { pair::intersects_approximate(a, b); };
+} // namespace detail
+
+// Does a meet b? Closed sets: touching counts.
+template <tier Tier = exact, class A, class B>
+    requires has_pair<A, B>
+[[nodiscard]] constexpr bool intersects(const A& a, const B& b) {
+    if constexpr (canonical_pair<A, B>) {
+        if constexpr (__is_same(Tier, approximate) && detail::approximate_override<A, B>)
+            return pair::intersects_approximate(a, b);
+        else
+            return arith::decide<Tier>([&](auto& k) { return pair::intersects(k, a, b); });
+    } else {
+        return intersects<Tier>(b, a);
+    }
+}
+
+// The floating-point filter's verdict alone: yes, no, or uncertain (never wrong).
+template <class A, class B>
+    requires has_pair<A, B>
+[[nodiscard]] constexpr certainty classify(const A& a, const B& b) {
+    if constexpr (canonical_pair<A, B>) {
+        return arith::classify_body([&](auto& k) { return pair::intersects(k, a, b); });
+    } else {
+        return classify(b, a);
+    }
+}
+
+// Is b inside a (closed sets)?
+template <tier Tier = exact, class A, class B>
+    requires requires(arith::filter_kernel& k, const A& a, const B& b) { pair::contains(k, a, b); }
+[[nodiscard]] constexpr bool contains(const A& a, const B& b) {
+    return arith::decide<Tier>([&](auto& k) { return pair::contains(k, a, b); });
+}
+
+template <class A, class B>
+    requires requires(arith::filter_kernel& k, const A& a, const B& b) { pair::contains(k, a, b); }
+[[nodiscard]] constexpr certainty classify_contains(const A& a, const B& b) {
+    return arith::classify_body([&](auto& k) { return pair::contains(k, a, b); });
+}
+
+// Do the boxes a and b together cover the box c completely? Exact (comparisons only).
+[[nodiscard]] constexpr bool covers(const aabb3& a, const aabb3& b, const aabb3& c) { return pair::covers(a, b, c); }
+
+// Squared distance from a point to the nearest / farthest point of a box. exact: correctly
+// rounded double; approximate: plain double (relative error <= gamma_4); conservative and
+// aggressive: an interval that contains the exact value.
+template <tier Tier = exact>
+[[nodiscard]] constexpr auto squared_distance(const aabb3& b, const point3& p) {
+    return pair::squared_distance_impl<Tier>(b, p, pair::distance_kind::nearest);
+}
+template <tier Tier = exact>
+[[nodiscard]] constexpr auto squared_distance(const point3& p, const aabb3& b) { return squared_distance<Tier>(b, p); }
+template <tier Tier = exact>
+[[nodiscard]] constexpr auto max_squared_distance(const aabb3& b, const point3& p) {
+    return pair::squared_distance_impl<Tier>(b, p, pair::distance_kind::farthest);
+}
+template <tier Tier = exact>
+[[nodiscard]] constexpr auto max_squared_distance(const point3& p, const aabb3& b) { return max_squared_distance<Tier>(b, p); }
+
+// --- intersection (find) -------------------------------------------------------------------
+// Existence follows the tier's contract; the values of a reported hit are computed exactly
+// and correctly rounded for exact, conservative and aggressive, in plain double for approximate.
+
+template <tier Tier = exact>
+[[nodiscard]] constexpr std::optional<ray_sphere_hit> intersection(const ray3& r, const sphere3& s) {
+    if constexpr (__is_same(Tier, approximate)) return pair::ray_sphere_geometric(r, s);
+    else if constexpr (__is_same(Tier, exact)) return pair::ray_sphere_exact(r, s);
+    else {
+        if (!intersects<Tier>(r, s)) return std::nullopt;
+        if (auto h = pair::ray_sphere_exact(r, s)) return h;
+        return ray_sphere_hit{0.0, r.origin}; // uncertain and truly missing: nearest candidate
+    }
+}
+template <tier Tier = exact>
+[[nodiscard]] constexpr std::optional<ray_sphere_hit> intersection(const sphere3& s, const ray3& r) {
+    return intersection<Tier>(r, s);
+}
+
+template <tier Tier = exact>
+[[nodiscard]] constexpr std::optional<aabb_ray_hit> intersection(const aabb3& b, const ray3& r) {
+    if constexpr (__is_same(Tier, approximate)) return pair::aabb_ray_slab(b, r);
+    else if constexpr (__is_same(Tier, exact)) return pair::aabb_ray_exact(b, r);
+    else {
+        if (!intersects<Tier>(b, r)) return std::nullopt;
+        if (auto h = pair::aabb_ray_exact(b, r)) return h;
+        return aabb_ray_hit{0.0, 0.0};
+    }
+}
+template <tier Tier = exact>
+[[nodiscard]] constexpr std::optional<aabb_ray_hit> intersection(const ray3& r, const aabb3& b) {
+    return intersection<Tier>(b, r);
+}
+
+template <tier Tier = exact>
+[[nodiscard]] constexpr std::optional<ray_triangle_hit> intersection(const ray3& r, const triangle3& t) {
+    if constexpr (__is_same(Tier, approximate)) return pair::ray_triangle_watertight(r, t);
+    else {
+        if (!intersects<Tier>(r, t)) return std::nullopt;
+        return pair::linear_triangle_values(pair::linear3{r.origin, r.direction, r.origin, pair::extent::ray}, t);
+    }
+}
+template <tier Tier = exact>
+[[nodiscard]] constexpr std::optional<ray_triangle_hit> intersection(const triangle3& t, const ray3& r) {
+    return intersection<Tier>(r, t);
+}
+
+template <tier Tier = exact>
+[[nodiscard]] constexpr std::optional<ray_triangle_hit> intersection(const segment3& s, const triangle3& t) {
+    if (!intersects<Tier>(s, t)) return std::nullopt;
+    const pair::linear3 l{s.a, vec3{0, 0, 0}, s.b, pair::extent::segment};
+    if constexpr (__is_same(Tier, approximate)) {
+        const auto h = pair::ray_triangle_watertight(ray3{s.a, s.b - s.a}, t);
+        if (h && h->t <= 1.0) return h;
+        return std::nullopt;
+    } else {
+        return pair::linear_triangle_values(l, t);
+    }
+}
+template <tier Tier = exact>
+[[nodiscard]] constexpr std::optional<ray_triangle_hit> intersection(const triangle3& t, const segment3& s) {
+    return intersection<Tier>(s, t);
+}
+
+// Alternative algorithms kept for comparison (the audit charts them against the tiers).
+namespace method {
+[[nodiscard]] constexpr std::optional<ray_triangle_hit> ray_triangle_watertight(const ray3& r, const triangle3& t) {
+    return pair::ray_triangle_watertight(r, t);
+}
+[[nodiscard]] constexpr std::optional<ray_triangle_hit> ray_triangle_moller_trumbore(const ray3& r, const triangle3& t) {
+    return pair::ray_triangle_moller_trumbore(r, t);
+}
+[[nodiscard]] constexpr std::optional<aabb_ray_hit> aabb_ray_slab(const aabb3& b, const ray3& r) {
+    return pair::aabb_ray_slab(b, r);
+}
+[[nodiscard]] constexpr bool aabb_ray_woo(const aabb3& b, const ray3& r) { return pair::aabb_ray_woo(b, r); }
+[[nodiscard]] constexpr std::optional<ray_sphere_hit> ray_sphere_geometric(const ray3& r, const sphere3& s) {
+    return pair::ray_sphere_geometric(r, s);
+}
+[[nodiscard]] constexpr std::optional<ray_sphere_hit> ray_sphere_algebraic(const ray3& r, const sphere3& s) {
+    return pair::ray_sphere_algebraic(r, s);
+}
+} // namespace method
+
+} // namespace incidence

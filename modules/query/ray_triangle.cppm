@@ -1,0 +1,299 @@
+// ray3 against triangle3: intersects, and intersection (t, point, normal, barycentrics).
+// Semantics: closed triangle, so hits on edges and vertices count; a ray lying in the
+// triangle's plane hits when it meets the triangle (2D test); a collinear (degenerate)
+// triangle is its convex hull, a segment or a point; a zero direction is the point `origin`.
+// Method (exact tiers): signs only, as in CGAL's Ray_3/Triangle_3 do_intersect. With
+// n.d = det(b-a, c-a, d), the Pluecker edge values w_a = det(d, b-o, c-o), w_b = det(d, c-o, a-o),
+// w_c = det(d, a-o, b-o) (summing to n.d) and num = det(b-a, c-a, a-o):
+//   n.d != 0: hit iff w_a, w_b, w_c all have the sign of n.d or are zero, and num * n.d >= 0
+//   n.d == 0, n != 0: coplanar iff num == 0, then a 2D test in the plane projected along an
+//                     axis where n is nonzero (origin inside, or a crossing of an edge)
+//   n == 0: the triangle is a segment or a point: test its three edges.
+// Every sign is of a homogeneous polynomial of degree <= 3 (expansion length <= 192).
+// The exact tier's t = num / n.d and barycentrics w_i / n.d are correctly rounded.
+// Approximate tier: watertight ray-triangle, Woop, Benthin and Wald, JCGT 2(1), 2013 (a ray
+// through a shared edge hits at least one of the two triangles); Moeller and Trumbore, JGT 2(1),
+// 1997, kept as method::ray_triangle_moller_trumbore for comparison.
+// Error bound (approximate): wrong only when some w_i or num is within 2^-36 of its permanent
+// (sum of the absolute values of its monomials), i.e. within that relative distance of an
+// edge, a vertex or the origin's plane (checked by tests/query/ray_triangle.cpp).
+module;
+#include <optional>
+export module incidence.query:ray_triangle;
+import incidence.core;
+import incidence.arith;
+import incidence.predicates;
+import incidence.shapes;
+
+export namespace incidence {
+
+struct ray_triangle_hit {
+    double t;            // parameter along the ray (or along the segment, in [0, 1])
+    point3 point;        // origin + t * direction
+    vec3 normal;         // (b - a) x (c - a), not normalised: its orientation tells the side hit
+    double u, v, w;      // barycentrics of a, b, c: point = u a + v b + w c, u + v + w = 1
+};
+
+} // namespace incidence
+
+export namespace incidence::pair {
+
+enum class extent : unsigned char { ray, segment };
+
+// The linear object o + t d: t >= 0 for a ray, 0 <= t <= 1 for a segment (d = q - p, exact).
+struct linear3 {
+    point3 o;
+    vec3 d;   // ray direction (unused for a segment)
+    point3 q; // segment end (unused for a ray)
+    extent kind;
+
+    template <class L>
+    [[nodiscard]] constexpr auto O(L l) const { return arith::lift(l, o); }
+    template <class L>
+    [[nodiscard]] constexpr auto D(L l) const {
+        if (kind == extent::segment) return arith::lift(l, q) - arith::lift(l, o);
+        // Same expression type as the segment branch: d = (d - 0) with 0 exact.
+        return arith::lift(l, d) - arith::lift(l, vec3{0, 0, 0});
+    }
+    [[nodiscard]] constexpr bool is_point() const {
+        return kind == extent::segment ? o == q : (d.x == 0.0 && d.y == 0.0 && d.z == 0.0);
+    }
+};
+
+template <class T>
+[[nodiscard]] constexpr auto pick(const arith::v3<T>& v, int axis) {
+    return axis == 0 ? v.x : (axis == 1 ? v.y : v.z);
+}
+template <class T>
+[[nodiscard]] constexpr auto drop_axis(const arith::v3<T>& v, int axis) {
+    return axis == 0 ? arith::v2<T>{v.y, v.z} : (axis == 1 ? arith::v2<T>{v.z, v.x} : arith::v2<T>{v.x, v.y});
+}
+
+// 2D: does the linear object (projected along `axis`) meet the closed segment [p, q]?
+template <class K>
+[[nodiscard]] constexpr bool linear_segment_2d(K& k, const linear3& s, int axis, point3 p, point3 q) {
+    const sign sp = k.sgn([=](auto L) {
+        return arith::cross(drop_axis(s.D(L), axis), drop_axis(arith::lift(L, p) - s.O(L), axis));
+    });
+    const sign sq = k.sgn([=](auto L) {
+        return arith::cross(drop_axis(s.D(L), axis), drop_axis(arith::lift(L, q) - s.O(L), axis));
+    });
+    if (sp != sign::zero && sp == sq) return false; // the edge lies strictly on one side
+    if (sp == sign::zero && sq == sign::zero) {
+        // Collinear with the carrier line: 1D overlap of [0, d.d] (or [0, inf)) with [p.d, q.d].
+        const sign dp = k.sgn([=](auto L) { return arith::dot(arith::lift(L, p) - s.O(L), s.D(L)); });
+        const sign dq = k.sgn([=](auto L) { return arith::dot(arith::lift(L, q) - s.O(L), s.D(L)); });
+        if (dp == sign::negative && dq == sign::negative) return false;
+        if (s.kind == extent::ray) return true;
+        const sign ep = k.sgn([=](auto L) {
+            const auto D = s.D(L);
+            return arith::dot(arith::lift(L, p) - s.O(L), D) - arith::dot(D, D);
+        });
+        const sign eq = k.sgn([=](auto L) {
+            const auto D = s.D(L);
+            return arith::dot(arith::lift(L, q) - s.O(L), D) - arith::dot(D, D);
+        });
+        return !(ep == sign::positive && eq == sign::positive);
+    }
+    // Proper crossing of the carrier line at t = cross(p - o, q - p) / cross(d, q - p).
+    const sign den = k.sgn([=](auto L) {
+        return arith::cross(drop_axis(s.D(L), axis), drop_axis(arith::lift(L, q) - arith::lift(L, p), axis));
+    });
+    const sign num = k.sgn([=](auto L) {
+        return arith::cross(drop_axis(arith::lift(L, p) - s.O(L), axis),
+                            drop_axis(arith::lift(L, q) - arith::lift(L, p), axis));
+    });
+    if (num * den == sign::negative) return false; // t < 0
+    if (s.kind == extent::ray) return true;
+    const sign over = k.sgn([=](auto L) { // den - num: t <= 1 iff (den - num) * den >= 0
+        const auto pq = drop_axis(arith::lift(L, q) - arith::lift(L, p), axis);
+        return arith::cross(drop_axis(s.D(L), axis), pq) - arith::cross(drop_axis(arith::lift(L, p) - s.O(L), axis), pq);
+    });
+    return over * den != sign::negative;
+}
+
+// 3D: the linear object against the closed segment [p, q] (for degenerate triangles).
+template <class K>
+[[nodiscard]] constexpr bool linear_segment_3d(K& k, const linear3& s, point3 p, point3 q) {
+    const sign cop = k.sgn([=](auto L) {
+        return arith::det3(s.D(L), arith::lift(L, p) - s.O(L), arith::lift(L, q) - s.O(L));
+    });
+    if (cop != sign::zero) return false;
+    for (int axis = 0; axis < 3; ++axis) {
+        const sign m = k.sgn([=](auto L) {
+            return pick(arith::cross(s.D(L), arith::lift(L, q) - arith::lift(L, p)), axis);
+        });
+        if (m != sign::zero) return linear_segment_2d(k, s, axis, p, q);
+    }
+    // d parallel to q - p (or p == q): the segment must lie on the carrier line.
+    for (int axis = 0; axis < 3; ++axis) {
+        const sign m = k.sgn([=](auto L) { return pick(arith::cross(s.D(L), arith::lift(L, p) - s.O(L)), axis); });
+        if (m != sign::zero) return false;
+    }
+    // On the line: reuse the 2D collinear branch along any axis (both cross products vanish).
+    return linear_segment_2d(k, s, 0, p, q);
+}
+
+template <class K>
+[[nodiscard]] constexpr bool point_in_triangle(K& k, point3 x, const triangle3& t);
+
+template <class K>
+[[nodiscard]] constexpr bool linear_triangle(K& k, const linear3& s, const triangle3& t) {
+    if (s.is_point()) return point_in_triangle(k, s.o, t);
+    const point3 a = t.a, b = t.b, c = t.c;
+    auto n_of = [=](auto L) {
+        const auto A = arith::lift(L, a);
+        return arith::cross(arith::lift(L, b) - A, arith::lift(L, c) - A);
+    };
+    const sign nd = k.sgn([=](auto L) { return arith::dot(n_of(L), s.D(L)); });
+    if (nd != sign::zero) {
+        auto w = [&](point3 u, point3 v) {
+            return k.sgn([=](auto L) {
+                return arith::det3(s.D(L), arith::lift(L, u) - s.O(L), arith::lift(L, v) - s.O(L));
+            });
+        };
+        if (w(b, c) == -nd || w(c, a) == -nd || w(a, b) == -nd) return false;
+        const sign num = k.sgn([=](auto L) { return arith::dot(n_of(L), arith::lift(L, a) - s.O(L)); });
+        if (num == -nd) return false; // t < 0
+        if (s.kind == extent::ray) return true;
+        const sign over = k.sgn([=](auto L) { // n.d - num = n.(q - a)
+            return arith::dot(n_of(L), s.O(L) + s.D(L) - arith::lift(L, a));
+        });
+        return over != -nd; // t <= 1
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+        const sign na = k.sgn([=](auto L) { return pick(n_of(L), axis); });
+        if (na == sign::zero) continue;
+        // Non-degenerate triangle, line parallel to its plane: coplanar iff the origin is in it.
+        const sign num = k.sgn([=](auto L) { return arith::dot(n_of(L), arith::lift(L, a) - s.O(L)); });
+        if (num != sign::zero) return false;
+        if (point_in_triangle(k, s.o, t)) return true;
+        return linear_segment_2d(k, s, axis, a, b) || linear_segment_2d(k, s, axis, b, c) ||
+               linear_segment_2d(k, s, axis, c, a);
+    }
+    // Degenerate triangle: the union of its edges is its convex hull.
+    return linear_segment_3d(k, s, a, b) || linear_segment_3d(k, s, b, c) || linear_segment_3d(k, s, c, a);
+}
+
+// Closed triangle (or its hull when degenerate) contains the point x.
+template <class K>
+[[nodiscard]] constexpr bool point_in_triangle(K& k, point3 x, const triangle3& t) {
+    const point3 a = t.a, b = t.b, c = t.c;
+    if (k.sgn(poly::orient3d(a, b, c, x)) != sign::zero) return false;
+    for (int axis = 0; axis < 3; ++axis) {
+        const sign na = k.sgn([=](auto L) {
+            const auto A = arith::lift(L, a);
+            return pick(arith::cross(arith::lift(L, b) - A, arith::lift(L, c) - A), axis);
+        });
+        if (na == sign::zero) continue;
+        auto side = [&](point3 u, point3 v) {
+            return k.sgn([=](auto L) {
+                const auto U = arith::lift(L, u);
+                return arith::cross(drop_axis(arith::lift(L, v) - U, axis), drop_axis(arith::lift(L, x) - U, axis));
+            });
+        };
+        const sign s = na; // the projected triangle's orientation equals the sign of n_axis
+        return side(a, b) != -s && side(b, c) != -s && side(c, a) != -s;
+    }
+    // Degenerate: x on one of the edges (a zero-length segment is its point).
+    const linear3 px{x, vec3{0, 0, 0}, x, extent::segment};
+    auto on_edge = [&](point3 p, point3 q) {
+        for (int axis = 0; axis < 3; ++axis) {
+            const sign m = k.sgn([=](auto L) { return pick(arith::cross(arith::lift(L, q) - arith::lift(L, p), arith::lift(L, x) - arith::lift(L, p)), axis); });
+            if (m != sign::zero) return false;
+        }
+        const sign d0 = k.sgn([=](auto L) { return arith::dot(arith::lift(L, x) - arith::lift(L, p), arith::lift(L, q) - arith::lift(L, p)); });
+        const sign d1 = k.sgn([=](auto L) { return arith::dot(arith::lift(L, q) - arith::lift(L, x), arith::lift(L, q) - arith::lift(L, p)); });
+        if (p == q) return x == p;
+        return d0 != sign::negative && d1 != sign::negative;
+    };
+    (void)px;
+    return on_edge(a, b) || on_edge(b, c) || on_edge(c, a);
+}
+
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const ray3& r, const triangle3& t) {
+    return linear_triangle(k, linear3{r.origin, r.direction, r.origin, extent::ray}, t);
+}
+
+// Watertight ray-triangle (Woop, Benthin, Wald 2013), closed triangle, t >= 0.
+[[nodiscard]] constexpr std::optional<ray_triangle_hit> ray_triangle_watertight(const ray3& r, const triangle3& tri) {
+    const double d[3] = {r.direction.x, r.direction.y, r.direction.z};
+    int kz = 0;
+    if (arith::abs(d[1]) > arith::abs(d[kz])) kz = 1;
+    if (arith::abs(d[2]) > arith::abs(d[kz])) kz = 2;
+    int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+    if (d[kz] < 0.0) { const int tmp = kx; kx = ky; ky = tmp; }
+    if (!(d[kz] != 0.0)) return std::nullopt;
+    const double sx = d[kx] / d[kz], sy = d[ky] / d[kz], sz = 1.0 / d[kz];
+    const vec3 av = tri.a - r.origin, bv = tri.b - r.origin, cv = tri.c - r.origin;
+    const double A[3] = {av.x, av.y, av.z}, B[3] = {bv.x, bv.y, bv.z}, C[3] = {cv.x, cv.y, cv.z};
+    const double ax = A[kx] - sx * A[kz], ay = A[ky] - sy * A[kz];
+    const double bx = B[kx] - sx * B[kz], by = B[ky] - sy * B[kz];
+    const double cx = C[kx] - sx * C[kz], cy = C[ky] - sy * C[kz];
+    const double U = cx * by - cy * bx;
+    const double V = ax * cy - ay * cx;
+    const double W = bx * ay - by * ax;
+    if ((U < 0.0 || V < 0.0 || W < 0.0) && (U > 0.0 || V > 0.0 || W > 0.0)) return std::nullopt;
+    const double det = U + V + W;
+    if (!(det != 0.0)) return std::nullopt;
+    const double az = sz * A[kz], bz = sz * B[kz], cz = sz * C[kz];
+    const double T = U * az + V * bz + W * cz;
+    if ((det < 0.0 && T > 0.0) || (det > 0.0 && T < 0.0)) return std::nullopt;
+    const double inv = 1.0 / det;
+    const double t = T * inv;
+    return ray_triangle_hit{t, r.at(t), cross(tri.b - tri.a, tri.c - tri.a), U * inv, V * inv, W * inv};
+}
+
+// Moeller-Trumbore (1997), closed triangle, no epsilon: det == 0 is a miss.
+[[nodiscard]] constexpr std::optional<ray_triangle_hit> ray_triangle_moller_trumbore(const ray3& r, const triangle3& tri) {
+    const vec3 e1 = tri.b - tri.a, e2 = tri.c - tri.a;
+    const vec3 p = cross(r.direction, e2);
+    const double det = dot(e1, p);
+    if (!(det != 0.0)) return std::nullopt;
+    const double inv = 1.0 / det;
+    const vec3 s = r.origin - tri.a;
+    const double u = dot(s, p) * inv;
+    if (u < 0.0 || u > 1.0) return std::nullopt;
+    const vec3 q = cross(s, e1);
+    const double v = dot(r.direction, q) * inv;
+    if (v < 0.0 || u + v > 1.0) return std::nullopt;
+    const double t = dot(e2, q) * inv;
+    if (!(t >= 0.0)) return std::nullopt;
+    return ray_triangle_hit{t, r.at(t), cross(e1, e2), 1.0 - u - v, u, v};
+}
+
+// Exact hit values (correctly rounded) for a hit with n.d != 0. A coplanar or degenerate
+// configuration has no unique hit parameter; it reports the origin's t = 0 when the origin is
+// on the triangle and otherwise the first point, computed by the 2D edge crossing.
+[[nodiscard]] constexpr ray_triangle_hit linear_triangle_values(const linear3& s, const triangle3& tri) {
+    using arith::dyadic;
+    auto D3 = [](point3 p) { return arith::v3<dyadic>{arith::to_dyadic(p.x), arith::to_dyadic(p.y), arith::to_dyadic(p.z)}; };
+    const auto O = D3(s.o), A = D3(tri.a), B = D3(tri.b), C = D3(tri.c);
+    const auto Dv = s.kind == extent::segment ? D3(s.q) - O
+                                               : arith::v3<dyadic>{arith::to_dyadic(s.d.x), arith::to_dyadic(s.d.y), arith::to_dyadic(s.d.z)};
+    const auto n = arith::cross(B - A, C - A);
+    const dyadic nd = arith::dot(n, Dv);
+    const vec3 normal{arith::to_double(n.x), arith::to_double(n.y), arith::to_double(n.z)};
+    if (arith::sign_of(nd) == 0) {
+        return ray_triangle_hit{0.0, s.o, normal, 0.0, 0.0, 0.0};
+    }
+    const dyadic num = arith::dot(n, A - O);
+    const double t = arith::quotient(num, nd);
+    const dyadic wa = arith::det3(Dv, B - O, C - O);
+    const dyadic wb = arith::det3(Dv, C - O, A - O);
+    const dyadic wc = arith::det3(Dv, A - O, B - O);
+    // point_i = o_i + (num / nd) d_i = (o_i nd + num d_i) / nd
+    const point3 p{arith::quotient(O.x * nd + num * Dv.x, nd), arith::quotient(O.y * nd + num * Dv.y, nd),
+                   arith::quotient(O.z * nd + num * Dv.z, nd)};
+    return ray_triangle_hit{t, p, normal, arith::quotient(wa, nd), arith::quotient(wb, nd), arith::quotient(wc, nd)};
+}
+
+} // namespace incidence::pair
+
+export namespace incidence::pair {
+// The approximate tier of intersects(ray3, triangle3) is the watertight algorithm.
+[[nodiscard]] constexpr bool intersects_approximate(const ray3& r, const triangle3& t) {
+    return ray_triangle_watertight(r, t).has_value();
+}
+} // namespace incidence::pair

@@ -1,0 +1,9 @@
+// incidence.shapes: the primitives, one per file, each an aggregate with a checked make().
+export module incidence.shapes;
+export import :ray3;
+export import :line3;
+export import :segment3;
+export import :plane3;
+export import :sphere3;
+export import :aabb3;
+export import :triangle3;
