@@ -92,6 +92,21 @@ struct two_double {
     return x;
 }
 
+// Square root usable in constant evaluation (Newton from a power-of-two start, monotone
+// convergence), the hardware instruction at run time. Only used for starting guesses and the
+// approximate tier, never for a decision of the exact tier.
+[[nodiscard]] constexpr double sqrt(double x) {
+    if (!__builtin_is_constant_evaluated()) return __builtin_sqrt(x);
+    if (!(x > 0.0) || !(x < __builtin_huge_val())) return x == 0.0 ? 0.0 : (x > 0.0 ? x : 0.0);
+    double y = scale_by_power_of_two(1.0, (exponent_of(x) + 1) / 2 + 1); // y >= sqrt(x)
+    for (int i = 0; i < 200; ++i) {
+        const double z = 0.5 * (y + x / y);
+        if (!(z < y)) break;
+        y = z;
+    }
+    return y;
+}
+
 [[nodiscard]] constexpr double next_up(double x) {
     if (x != x || x == __builtin_huge_val()) return x;
     if (x == 0.0) return std::bit_cast<double>(std::uint64_t{1});

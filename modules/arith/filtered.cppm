@@ -32,14 +32,25 @@ struct filtered {
 
 [[nodiscard]] constexpr filtered<0> lift_filtered(double x) { return {x, abs(x)}; }
 
+// In constant evaluation an operation that yields NaN (inf - inf, 0 * inf) is ill-formed, so an
+// overflowed operand short-circuits to the "unbounded" value {0, inf}; at run time the IEEE
+// result (inf or NaN) is just as conclusive, since the bound test then fails.
+inline constexpr double infinity = __builtin_huge_val();
+template <int A, int B>
+[[nodiscard]] constexpr bool poisoned(filtered<A> a, filtered<B> b) {
+    return __builtin_is_constant_evaluated() && !(a.p < infinity && b.p < infinity);
+}
+
 template <int A, int B>
 [[nodiscard]] constexpr auto operator+(filtered<A> a, filtered<B> b) {
+    if (poisoned(a, b)) return filtered<(A > B ? A : B) + 1>{0.0, infinity};
     const double v = a.v + b.v;
     if constexpr (A == 0 && B == 0) return filtered<1>{v, abs(v)};
     else return filtered<(A > B ? A : B) + 1>{v, a.p + b.p};
 }
 template <int A, int B>
 [[nodiscard]] constexpr auto operator-(filtered<A> a, filtered<B> b) {
+    if (poisoned(a, b)) return filtered<(A > B ? A : B) + 1>{0.0, infinity};
     const double v = a.v - b.v;
     if constexpr (A == 0 && B == 0) return filtered<1>{v, abs(v)};
     else return filtered<(A > B ? A : B) + 1>{v, a.p + b.p};
@@ -48,6 +59,7 @@ template <int A>
 [[nodiscard]] constexpr filtered<A> operator-(filtered<A> a) { return {-a.v, a.p}; }
 template <int A, int B>
 [[nodiscard]] constexpr filtered<A + B + 1> operator*(filtered<A> a, filtered<B> b) {
+    if (poisoned(a, b)) return {0.0, infinity};
     return {a.v * b.v, a.p * b.p + 0x1p-1020};
 }
 

@@ -46,8 +46,9 @@ template <class Le, class Lt>
         if (!ok(a)) lo = a;
         if (ok(b)) hi = b;
     }
-    while (hi - lo > 1) {
-        const std::int64_t mid = lo + (hi - lo) / 2;
+    // hi - lo can exceed INT64_MAX (the key range spans 2^64): take the difference unsigned.
+    while (static_cast<std::uint64_t>(hi) - static_cast<std::uint64_t>(lo) > 1) {
+        const std::int64_t mid = lo + static_cast<std::int64_t>((static_cast<std::uint64_t>(hi) - static_cast<std::uint64_t>(lo)) / 2);
         if (ok(mid)) hi = mid;
         else lo = mid;
     }
@@ -70,6 +71,20 @@ template <class Le, class Lt>
         return (std::bit_cast<std::uint64_t>(a) & 1u) ? b : a;
     }
     return from_order_key(k);
+}
+
+// Correctly rounded n / d (d != 0), by bracketing: n/d <= y  <=>  sign(d) (n - y d) <= 0.
+[[nodiscard]] constexpr double quotient(const dyadic& n, const dyadic& d) {
+    const int sd = sign_of(d);
+    auto le = [&](const dyadic& y) { return sign_of(n - y * d) * sd <= 0; };
+    auto lt = [&](const dyadic& y) { return sign_of(n - y * d) * sd < 0; };
+    const double nd = to_double(n), dd = to_double(d);
+    double guess = 0.0;
+    if (is_finite(nd) && is_finite(dd) && dd != 0.0 && nd != 0.0) {
+        const int k = exponent_of(nd) - exponent_of(dd);
+        if (k > -1000 && k < 1000) guess = nd / dd;
+    }
+    return correctly_round(le, lt, guess);
 }
 
 } // namespace incidence::arith

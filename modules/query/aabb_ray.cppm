@@ -13,8 +13,12 @@
 // Approximate tier: the classic slab method with reciprocal directions (Kay and Kajiya,
 // SIGGRAPH 1986; robust form of Williams et al., JGT 10(1), 2005). Woo's method
 // (Graphics Gems, 1990, "Fast Ray-Box Intersection") is kept as method::aabb_ray_woo.
-// Error bound (approximate): wrong only when the ray passes within 2^-40 of the box's extent
-// plus the origin's distance of an edge or corner, relative (checked by the tests).
+// Error bound (approximate slab): for inputs whose nonzero magnitudes lie in [2^-500, 2^500],
+// wrong only when some pairwise slab sign U_j d_i - L_i d_j is within 2^-40 of its permanent
+// (the ray grazes the box). Woo's method is weaker: it compares a rounded hit point with the
+// face bounds, so it can also fail when the ray enters through an edge or corner and then
+// runs deep inside; its bound adds the ray's relative distance 2^-40 to each edge line
+// (tests/query/aabb_ray.cpp measures both).
 module;
 #include <optional>
 export module incidence.query:aabb_ray;

@@ -11,8 +11,9 @@
 // Approximate tier: the optimized geometric method with early rejections, Akenine-Moller et al.,
 // Real-Time Rendering 4th ed. (2018), section 22.6.2; the algebraic quadratic is kept as
 // method::ray_sphere_algebraic (Ericson, Real-Time Collision Detection, section 5.3.2).
-// Error bound (approximate): wrong only when the ray passes within 2^-40 (|o - c| + r) of the
-// sphere's silhouette, or its origin within that distance of the sphere (checked by the tests).
+// Error bound (approximate), nonzero input magnitudes in [2^-500, 2^500]: wrong only when one
+// of the three signs above is within 2^-40 of its permanent, i.e. the ray passes within that
+// relative distance of the silhouette or starts that close to the sphere (checked by tests).
 module;
 #include <optional>
 export module incidence.query:ray_sphere;
@@ -59,12 +60,12 @@ template <class K>
     const double a = dot(r.direction, r.direction);
     if (l2 <= r2) return ray_sphere_hit{0.0, r.origin};
     if (!(a > 0.0)) return std::nullopt;
-    const double len = __builtin_sqrt(a);
+    const double len = arith::sqrt(a);
     const double sproj = dot(l, r.direction) / len;
     if (sproj < 0.0) return std::nullopt; // outside and pointing away
     const double m2 = l2 - sproj * sproj;
     if (m2 > r2) return std::nullopt; // passes beside the sphere
-    const double q = __builtin_sqrt(r2 - m2);
+    const double q = arith::sqrt(r2 - m2);
     const double t = (sproj - q) / len;
     return ray_sphere_hit{t, r.at(t)};
 }
@@ -79,7 +80,7 @@ template <class K>
     const double a = dot(r.direction, r.direction);
     const double disc = b * b - a * c;
     if (disc < 0.0) return std::nullopt;
-    const double t = c / (-b + __builtin_sqrt(disc));
+    const double t = c / (-b + arith::sqrt(disc));
     return ray_sphere_hit{t, r.at(t)};
 }
 

@@ -14,7 +14,8 @@
 // Approximate tier: watertight ray-triangle, Woop, Benthin and Wald, JCGT 2(1), 2013 (a ray
 // through a shared edge hits at least one of the two triangles); Moeller and Trumbore, JGT 2(1),
 // 1997, kept as method::ray_triangle_moller_trumbore for comparison.
-// Error bound (approximate): wrong only when some w_i or num is within 2^-36 of its permanent
+// Error bound (approximate), for inputs whose nonzero magnitudes lie in [2^-500, 2^500]:
+// wrong only when some w_i or num is within 2^-36 of its permanent
 // (sum of the absolute values of its monomials), i.e. within that relative distance of an
 // edge, a vertex or the origin's plane (checked by tests/query/ray_triangle.cpp).
 module;

@@ -1,0 +1,115 @@
+// Error-free transforms, expansions, dyadic rounding and correct rounding, checked against
+// independent arithmetic (long double where exact, Boost cpp_rational otherwise).
+#include <catch2/catch_test_macros.hpp>
+#include <boost/multiprecision/cpp_int.hpp>
+import incidence;
+#include "../support/testing.hpp"
+
+using namespace incidence;
+using rational = boost::multiprecision::cpp_rational;
+
+namespace {
+rational Q(double x) { return rational(x); }
+// nearest-even check for x against the exact rational v
+bool nearest(const rational& v, double x) {
+    const rational d = abs(v - Q(x));
+    for (double nb : {std::nextafter(x, INFINITY), std::nextafter(x, -INFINITY)}) {
+        if (!std::isfinite(nb)) continue;
+        const rational dn = abs(v - Q(nb));
+        if (dn < d) return false;
+        if (dn == d && (std::bit_cast<std::uint64_t>(x) & 1u)) return false;
+    }
+    return true;
+}
+double random_double(support::rng& r) {
+    // raw bit patterns of finite doubles, biased towards interesting exponents
+    for (;;) {
+        const double x = std::bit_cast<double>(r.bits());
+        if (std::isfinite(x)) return r.integer(0, 3) == 0 ? x : std::ldexp(r.uniform(-1, 1), r.integer(-60, 60));
+    }
+}
+} // namespace
+
+TEST_CASE("arith: two_sum, two_diff and two_product are error-free", "[arith]") {
+    support::rng r(support::seed());
+    long n = 0, bad = 0;
+    for (long i = 0; i < support::cases(100000); ++i) {
+        const double a = std::ldexp(r.uniform(-1, 1), r.integer(-400, 400)), b = std::ldexp(r.uniform(-1, 1), r.integer(-400, 400));
+        const auto s = arith::two_sum(a, b);
+        const auto d = arith::two_diff(a, b);
+        const auto p = arith::two_product(a, b);
+        ++n;
+        if (Q(s.hi) + Q(s.lo) != Q(a) + Q(b) || Q(d.hi) + Q(d.lo) != Q(a) - Q(b) || Q(p.hi) + Q(p.lo) != Q(a) * Q(b)) ++bad;
+        if (s.hi != a + b || p.hi != a * b) ++bad;
+    }
+    std::printf("[cases] error-free transforms: %ld, wrong %ld\n", n, bad);
+    CHECK(bad == 0);
+    static_assert(arith::two_product(0.1, 0.1).lo != 0.0);
+}
+
+TEST_CASE("arith: expansion arithmetic is exact", "[arith]") {
+    support::rng r(support::seed() + 1);
+    long bad = 0;
+    for (long i = 0; i < support::cases(20000); ++i) {
+        const double x[4] = {std::ldexp(r.uniform(-1, 1), r.integer(-100, 100)), std::ldexp(r.uniform(-1, 1), r.integer(-100, 100)),
+                             std::ldexp(r.uniform(-1, 1), r.integer(-100, 100)), std::ldexp(r.uniform(-1, 1), r.integer(-100, 100))};
+        using E = arith::expansion<1>;
+        const auto e = (E(x[0]) - E(x[1])) * (E(x[2]) + E(x[3])) - E(x[0]) * E(x[2]);
+        const rational want = (Q(x[0]) - Q(x[1])) * (Q(x[2]) + Q(x[3])) - Q(x[0]) * Q(x[2]);
+        rational got = 0;
+        for (int k = 0; k < e.n; ++k) got += Q(e.c[static_cast<unsigned>(k)]);
+        if (got != want) ++bad;
+        // nonoverlapping, increasing magnitude
+        for (int k = 1; k < e.n; ++k)
+            if (std::fabs(e.c[static_cast<unsigned>(k - 1)]) >= std::fabs(e.c[static_cast<unsigned>(k)])) ++bad;
+    }
+    CHECK(bad == 0);
+}
+
+TEST_CASE("arith: dyadic rounding and quotients are correctly rounded (subnormal to overflow)", "[arith]") {
+    support::rng r(support::seed() + 2);
+    long n = 0, bad = 0;
+    for (long i = 0; i < support::cases(20000); ++i) {
+        const double a = random_double(r), b = random_double(r), c = random_double(r);
+        const auto s = arith::to_dyadic(a) * arith::to_dyadic(b) + arith::to_dyadic(c);
+        const rational v = Q(a) * Q(b) + Q(c);
+        const double got = arith::to_double(s);
+        ++n;
+        if (std::isfinite(got) ? !nearest(v, got) : abs(v) < Q(0x1.fffffffffffffp1023)) ++bad;
+        if (b != 0.0) {
+            const double q = arith::quotient(arith::to_dyadic(a) - arith::to_dyadic(c), arith::to_dyadic(b));
+            const rational vq = (Q(a) - Q(c)) / Q(b);
+            if (std::isfinite(q) && !nearest(vq, q)) ++bad;
+        }
+    }
+    std::printf("[cases] dyadic rounding: %ld, wrong %ld\n", n, bad);
+    CHECK(bad == 0);
+    static_assert(arith::to_double(arith::to_dyadic(0x1p-1074) + arith::to_dyadic(0x1p-1074)) == 0x1p-1073);
+}
+
+TEST_CASE("arith: the filter never claims a wrong sign", "[arith]") {
+    support::rng r(support::seed() + 3);
+    long n = 0, wrong = 0, proven = 0;
+    for (long i = 0; i < support::cases(100000); ++i) {
+        const double x[4] = {random_double(r), random_double(r), random_double(r), random_double(r)};
+        const auto f = [&](auto L) { return (L(x[0]) - L(x[1])) * (L(x[2]) - L(x[3])) - L(x[0]) * L(x[2]); };
+        const int fs = arith::proven_sign(f(arith::lift_filter{}));
+        const rational v = (Q(x[0]) - Q(x[1])) * (Q(x[2]) - Q(x[3])) - Q(x[0]) * Q(x[2]);
+        const int t = v > 0 ? 1 : (v < 0 ? -1 : 0);
+        ++n;
+        if (fs != 0) { ++proven; if (fs != t) ++wrong; }
+        bool valid = true;
+        if (static_cast<int>(arith::exact_sign(f, valid)) != t) ++wrong;
+    }
+    std::printf("[cases] filter: %ld, proven %ld, wrong %ld\n", n, proven, wrong);
+    CHECK(wrong == 0);
+}
+
+TEST_CASE("arith: correctly_round finds the nearest double of sqrt(2) and of 1/3", "[arith]") {
+    using arith::dyadic;
+    const auto two = arith::to_dyadic(2.0);
+    const double s2 = arith::correctly_round([&](const dyadic& y) { return arith::sign_of(y) >= 0 && arith::sign_of(y * y - two) >= 0; },
+                                             [&](const dyadic& y) { return arith::sign_of(y) > 0 && arith::sign_of(y * y - two) > 0; }, 1.0);
+    CHECK(s2 == std::sqrt(2.0));
+    CHECK(arith::quotient(arith::to_dyadic(1.0), arith::to_dyadic(3.0)) == 1.0 / 3.0);
+}

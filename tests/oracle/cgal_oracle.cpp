@@ -1,0 +1,182 @@
+#include "cgal_oracle.hpp"
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/intersections.h>
+#include <CGAL/squared_distance_3.h>
+#include <cmath>
+#include <type_traits>
+#include <utility>
+#include <cstdint>
+#include <cstring>
+
+namespace oracle {
+namespace {
+using K = CGAL::Exact_predicates_exact_constructions_kernel;
+using KI = CGAL::Exact_predicates_inexact_constructions_kernel;
+using FT = K::FT;
+using Q = std::decay_t<decltype(CGAL::exact(std::declval<K::FT>()))>; // GMP rationals
+Q qabs(const Q& x) { return x < 0 ? Q(-x) : x; }
+template <class Kern = K>
+typename Kern::Point_3 P(const double p[3]) { return {p[0], p[1], p[2]}; }
+template <class Kern = K>
+typename Kern::Vector_3 V(const double p[3]) { return {p[0], p[1], p[2]}; }
+K::Point_2 P2(const double p[2]) { return {p[0], p[1]}; }
+int sgn(CGAL::Sign s) { return s == CGAL::POSITIVE ? 1 : (s == CGAL::NEGATIVE ? -1 : 0); }
+Q exact(const FT& x) { return CGAL::exact(x); }
+
+// x is the nearest double to v (ties to even): |v - x| <= |v - neighbours|, with tie rule.
+bool nearest(const Q& v, double x) {
+    if (std::isnan(x)) return false;
+    if (std::isinf(x)) { // rounds to infinity iff |v| >= DBL_MAX + ulp(DBL_MAX)/2 = 2^1024 - 2^970
+        const Q limit = Q(0x1.fffffffffffffp1023) + Q(0x1p970);
+        return x > 0 ? v >= limit : v <= -limit;
+    }
+    const Q qx(x);
+    const double up = std::nextafter(x, INFINITY), dn = std::nextafter(x, -INFINITY);
+    const Q dx = qabs(v - qx);
+    for (double nb : {up, dn}) {
+        if (!std::isfinite(nb)) continue;
+        const Q dn_ = qabs(v - Q(nb));
+        if (dn_ < dx) return false;
+        if (dn_ == dx) { // tie: x must be even
+            std::uint64_t bits;
+            std::memcpy(&bits, &x, 8);
+            if (bits & 1u) return false;
+        }
+    }
+    return true;
+}
+} // namespace
+
+int orient2d(const double a[2], const double b[2], const double c[2]) {
+    return sgn(CGAL::orientation(P2(a), P2(b), P2(c)));
+}
+// Shewchuk: positive when d is below the plane of ccw a, b, c; CGAL: positive when d is on the
+// positive side, i.e. above. Hence the minus sign.
+int orient3d(const double a[3], const double b[3], const double c[3], const double d[3]) {
+    return -sgn(CGAL::orientation(P(a), P(b), P(c), P(d)));
+}
+int incircle(const double a[2], const double b[2], const double c[2], const double d[2]) {
+    return sgn(CGAL::side_of_oriented_circle(P2(a), P2(b), P2(c), P2(d)));
+}
+// CGAL: side_of_oriented_sphere(p,q,r,s,t) positive when t is inside the sphere and p,q,r,s are
+// positively oriented (CGAL orientation). Shewchuk's insphere is positive when e is inside and
+// orient3d(a,b,c,d) > 0 (Shewchuk), which is CGAL-negative: the two differ by that sign.
+int insphere(const double a[3], const double b[3], const double c[3], const double d[3], const double e[3]) {
+    return -sgn(CGAL::side_of_oriented_sphere(P(a), P(b), P(c), P(d), P(e)));
+}
+
+bool triangle_is_degenerate(const double a[3], const double b[3], const double c[3]) {
+    return CGAL::collinear(P(a), P(b), P(c));
+}
+bool ray_triangle(const double o[3], const double d[3], const double a[3], const double b[3], const double c[3]) {
+    return CGAL::do_intersect(K::Ray_3(P(o), V(d)), K::Triangle_3(P(a), P(b), P(c)));
+}
+bool segment_triangle(const double p[3], const double q[3], const double a[3], const double b[3], const double c[3]) {
+    return CGAL::do_intersect(K::Segment_3(P(p), P(q)), K::Triangle_3(P(a), P(b), P(c)));
+}
+bool ray_box(const double o[3], const double d[3], const double mn[3], const double mx[3]) {
+    return CGAL::do_intersect(K::Ray_3(P(o), V(d)), K::Iso_cuboid_3(P(mn), P(mx)));
+}
+bool box_box(const double amn[3], const double amx[3], const double bmn[3], const double bmx[3]) {
+    return CGAL::do_intersect(K::Iso_cuboid_3(P(amn), P(amx)), K::Iso_cuboid_3(P(bmn), P(bmx)));
+}
+bool point_in_box(const double p[3], const double mn[3], const double mx[3]) {
+    return !K::Iso_cuboid_3(P(mn), P(mx)).has_on_unbounded_side(P(p));
+}
+bool box_contains_box(const double amn[3], const double amx[3], const double bmn[3], const double bmx[3]) {
+    const K::Iso_cuboid_3 a(P(amn), P(amx));
+    return !a.has_on_unbounded_side(P(bmn)) && !a.has_on_unbounded_side(P(bmx));
+}
+bool point_in_ball(const double p[3], const double c[3], double r) {
+    return CGAL::squared_distance(P(p), P(c)) <= FT(r) * FT(r);
+}
+bool ball_ball(const double c1[3], double r1, const double c2[3], double r2) {
+    const FT s = FT(r1) + FT(r2);
+    return CGAL::squared_distance(P(c1), P(c2)) <= s * s;
+}
+bool ball_contains_ball(const double c1[3], double r1, const double c2[3], double r2) {
+    const FT s = FT(r1) - FT(r2);
+    return s >= 0 && CGAL::squared_distance(P(c1), P(c2)) <= s * s;
+}
+bool ray_ball(const double o[3], const double d[3], const double c[3], double r) {
+    return CGAL::squared_distance(K::Ray_3(P(o), V(d)), P(c)) <= FT(r) * FT(r);
+}
+
+bool is_rounded_ray_triangle_t(const double o[3], const double d[3], const double a[3], const double b[3],
+                               const double c[3], double t) {
+    const auto res = CGAL::intersection(K::Ray_3(P(o), V(d)), K::Triangle_3(P(a), P(b), P(c)));
+    if (!res) return false;
+    const K::Point_3* p = boost::get<K::Point_3>(&*res);
+    if (!p) return true; // segment result (coplanar): no unique t to check
+    const K::Vector_3 dv = V(d);
+    const FT tt = ((*p - P(o)) * dv) / (dv * dv);
+    return nearest(exact(tt), t);
+}
+bool is_rounded_point_box_sqdist(const double p[3], const double mn[3], const double mx[3], bool farthest, double x) {
+    FT s = 0;
+    for (int i = 0; i < 3; ++i) {
+        const FT pi(p[i]), lo(mn[i]), hi(mx[i]);
+        FT g = 0;
+        if (farthest) g = CGAL::max(CGAL::abs(pi - lo), CGAL::abs(hi - pi));
+        else if (pi < lo) g = lo - pi;
+        else if (pi > hi) g = pi - hi;
+        s += g * g;
+    }
+    return nearest(exact(s), x);
+}
+bool is_rounded_ray_box_t(const double o[3], const double d[3], const double mn[3], const double mx[3], double t_enter,
+                          double t_exit) {
+    // Exact slab parameters in rationals, independently of the library.
+    Q t0 = 0;
+    bool bounded = false;
+    Q t1 = 0;
+    for (int i = 0; i < 3; ++i) {
+        if (d[i] == 0.0) continue;
+        Q a = (Q(mn[i]) - Q(o[i])) / Q(d[i]);
+        Q b = (Q(mx[i]) - Q(o[i])) / Q(d[i]);
+        if (b < a) std::swap(a, b);
+        if (a > t0) t0 = a;
+        if (!bounded || b < t1) t1 = b;
+        bounded = true;
+    }
+    if (!nearest(t0, t_enter)) return false;
+    if (!bounded) return t_exit == INFINITY;
+    return nearest(t1, t_exit);
+}
+bool is_rounded_ray_ball_t(const double o[3], const double d[3], const double c[3], double r, double x) {
+    // f(t) = a t^2 + 2 b t + c', first root t1; x is nearest iff t1 lies between the
+    // midpoints m- = (prev + x)/2 and m+ = (x + next)/2 (ties: x even).
+    Q a = 0, b = 0, cc = -Q(r) * Q(r);
+    for (int i = 0; i < 3; ++i) {
+        const Q m = Q(o[i]) - Q(c[i]);
+        a += Q(d[i]) * Q(d[i]);
+        b += m * Q(d[i]);
+        cc += m * m;
+    }
+    if (cc <= 0) return x == 0.0;
+    auto f = [&](const Q& t) { return Q(a * t * t + 2 * b * t + cc); }; // a value, not a gmpxx expression
+    auto le = [&](const Q& y) { return a * y + b >= 0 || f(y) <= 0; }; // t1 <= y
+    auto lt = [&](const Q& y) { return a * y + b > 0 || f(y) < 0; };   // t1 < y
+    const Q mp = (Q(x) + Q(std::nextafter(x, INFINITY))) / 2;
+    const Q mm = (Q(x) + Q(std::nextafter(x, -INFINITY))) / 2;
+    std::uint64_t bits;
+    std::memcpy(&bits, &x, 8);
+    const bool even = (bits & 1u) == 0;
+    const bool upper_ok = even ? le(mp) : lt(mp);
+    const bool lower_ok = even ? !lt(mm) : !le(mm);
+    return upper_ok && lower_ok;
+}
+
+bool ray_triangle_epick(const double o[3], const double d[3], const double a[3], const double b[3], const double c[3]) {
+    return CGAL::do_intersect(KI::Ray_3(P<KI>(o), V<KI>(d)), KI::Triangle_3(P<KI>(a), P<KI>(b), P<KI>(c)));
+}
+bool ray_box_epick(const double o[3], const double d[3], const double mn[3], const double mx[3]) {
+    return CGAL::do_intersect(KI::Ray_3(P<KI>(o), V<KI>(d)), KI::Iso_cuboid_3(P<KI>(mn), P<KI>(mx)));
+}
+int orient3d_epick(const double a[3], const double b[3], const double c[3], const double d[3]) {
+    return -sgn(CGAL::orientation(P<KI>(a), P<KI>(b), P<KI>(c), P<KI>(d)));
+}
+
+} // namespace oracle

@@ -1,0 +1,42 @@
+// The CGAL oracle: plain functions over double arrays, compiled in their own translation unit
+// (CGAL headers and `import incidence;` never meet). Every answer is computed with CGAL's
+// exact kernel Epeck (exact rationals), or with Epick where the name says so (for timing).
+// Balls, not spheres: CGAL's Sphere_3 is a surface, so ball tests use exact squared distances.
+#pragma once
+
+namespace oracle {
+
+// Shewchuk's sign conventions (see incidence::orient3d), computed by CGAL::orientation etc.
+int orient2d(const double a[2], const double b[2], const double c[2]);
+int orient3d(const double a[3], const double b[3], const double c[3], const double d[3]);
+int incircle(const double a[2], const double b[2], const double c[2], const double d[2]);
+int insphere(const double a[3], const double b[3], const double c[3], const double d[3], const double e[3]);
+
+bool triangle_is_degenerate(const double a[3], const double b[3], const double c[3]);
+bool ray_triangle(const double o[3], const double d[3], const double a[3], const double b[3], const double c[3]);
+bool segment_triangle(const double p[3], const double q[3], const double a[3], const double b[3], const double c[3]);
+bool ray_box(const double o[3], const double d[3], const double mn[3], const double mx[3]);
+bool box_box(const double amn[3], const double amx[3], const double bmn[3], const double bmx[3]);
+bool point_in_box(const double p[3], const double mn[3], const double mx[3]);
+bool box_contains_box(const double amn[3], const double amx[3], const double bmn[3], const double bmx[3]);
+bool point_in_ball(const double p[3], const double c[3], double r);
+bool ball_ball(const double c1[3], double r1, const double c2[3], double r2);
+bool ball_contains_ball(const double c1[3], double r1, const double c2[3], double r2);
+bool ray_ball(const double o[3], const double d[3], const double c[3], double r);
+
+// Is `x` the correctly rounded (nearest, ties to even) value of the exact quantity?
+bool is_rounded_ray_triangle_t(const double o[3], const double d[3], const double a[3], const double b[3],
+                               const double c[3], double t);
+bool is_rounded_point_box_sqdist(const double p[3], const double mn[3], const double mx[3], bool farthest, double x);
+bool is_rounded_ray_box_t(const double o[3], const double d[3], const double mn[3], const double mx[3], double t_enter,
+                          double t_exit);
+// For the ray-ball first hit t1 (irrational): x is nearest to t1, checked by exact sign tests
+// of the quadratic at the midpoints around x (an algebraic check independent of the library).
+bool is_rounded_ray_ball_t(const double o[3], const double d[3], const double c[3], double r, double x);
+
+// Epick (filtered, inexact constructions) versions for the benchmarks.
+bool ray_triangle_epick(const double o[3], const double d[3], const double a[3], const double b[3], const double c[3]);
+bool ray_box_epick(const double o[3], const double d[3], const double mn[3], const double mx[3]);
+int orient3d_epick(const double a[3], const double b[3], const double c[3], const double d[3]);
+
+} // namespace oracle

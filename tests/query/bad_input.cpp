@@ -1,0 +1,64 @@
+// Unchecked queries on NaN, infinite, huge, subnormal and zero-size inputs must finish without
+// crashing and without undefined behaviour (this file runs under ASan + UBSan in the suite).
+// They return *some* answer; the exact tier reports no intersection when an input is NaN or
+// infinite, and classify answers uncertain.
+#include <catch2/catch_test_macros.hpp>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+import incidence;
+#include "../support/testing.hpp"
+
+using namespace incidence;
+
+namespace {
+constexpr double nan_ = std::numeric_limits<double>::quiet_NaN();
+constexpr double inf_ = std::numeric_limits<double>::infinity();
+double special(support::rng& r) {
+    static constexpr double values[] = {0.0, -0.0, 1.0, -1.0, 0x1p-1074, -0x1p-1074, 0x1p-1022, 0x1.fffffffffffffp1023,
+                                        -0x1.fffffffffffffp1023, nan_, inf_, -inf_, 0x1p-537, 0x1p511};
+    const int k = r.integer(0, 16);
+    if (k < 14) return values[k];
+    return std::bit_cast<double>(r.bits()); // raw bits: any NaN payload, subnormal, huge
+}
+template <class A, class B>
+void every_tier(const A& a, const B& b, long& yes) {
+    yes += intersects<exact>(a, b) + intersects<conservative>(a, b) + intersects<aggressive>(a, b) +
+           intersects<approximate>(a, b) + (classify(a, b) == certainty::uncertain);
+}
+} // namespace
+
+TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and extremes", "[bad_input]") {
+    support::rng r(support::seed());
+    long yes = 0, n = 0;
+    auto p = [&] { return point3{special(r), special(r), special(r)}; };
+    auto v = [&] { return vec3{special(r), special(r), special(r)}; };
+    for (long i = 0; i < support::cases(3000); ++i) {
+        const ray3 ray{p(), v()};
+        const triangle3 t{p(), p(), p()};
+        const sphere3 s{p(), special(r)};
+        const aabb3 b{p(), p()};
+        const segment3 seg{p(), p()};
+        every_tier(ray, t, yes);
+        every_tier(seg, t, yes);
+        every_tier(ray, s, yes);
+        every_tier(b, ray, yes);
+        every_tier(p(), s, yes);
+        every_tier(s, s, yes);
+        every_tier(b, p(), yes);
+        every_tier(b, b, yes);
+        yes += contains(s, s) + contains(b, b) + covers(b, b, b);
+        yes += intersection(ray, t).has_value() + intersection(ray, s).has_value() + intersection(b, ray).has_value();
+        yes += intersection<approximate>(ray, t).has_value() + intersection<approximate>(ray, s).has_value();
+        yes += static_cast<long>(std::isnan(squared_distance(b, p())) + std::isnan(max_squared_distance<approximate>(b, p())));
+        yes += orient3d(p(), p(), p(), p()) == sign::zero;
+        yes += insphere(p(), p(), p(), p(), p()) == sign::zero;
+        n += 30;
+    }
+    std::printf("[cases] bad input: %ld query calls on special values completed (%ld yes)\n", n, yes);
+    // The exact tier says no for NaN input.
+    CHECK_FALSE(intersects(ray3{{nan_, 0, 0}, {1, 0, 0}}, triangle3{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}));
+    CHECK(classify(ray3{{nan_, 0, 0}, {1, 0, 0}}, triangle3{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}) == certainty::uncertain);
+    CHECK_FALSE(intersects(sphere3{{inf_, 0, 0}, 1}, sphere3{{0, 0, 0}, 1}));
+}

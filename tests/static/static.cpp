@@ -1,0 +1,71 @@
+// Compile-time tests: if this file compiles, the exact tier ran in constant evaluation on
+// touching and degenerate cases (the filter cannot decide those, so the expansion and dyadic
+// stages ran at compile time too). Also: point + point does not compile, and no project macro
+// leaks out of `import incidence;`.
+#include <catch2/catch_test_macros.hpp>
+import incidence;
+
+using namespace incidence;
+
+namespace {
+constexpr triangle3 T{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+constexpr aabb3 B{{0, 0, 0}, {1, 1, 1}};
+constexpr sphere3 S{{0, 0, 0}, 1};
+constexpr double tiny = 0x1p-1074;
+constexpr double huge = 0x1p1000;
+
+// ray-triangle: interior, edge, vertex, coplanar, degenerate triangle, miss
+static_assert(intersects(ray3{{0.25, 0.25, 1}, {0, 0, -1}}, T));
+static_assert(intersects(ray3{{0.5, 0, 1}, {0, 0, -1}}, T));
+static_assert(intersects(ray3{{0, 1, 1}, {0, 0, -1}}, T));
+static_assert(intersects(ray3{{-1, 0.5, 0}, {1, 0, 0}}, T));
+static_assert(!intersects(ray3{{-1, 0.5, 0}, {-1, 0, 0}}, T));
+static_assert(intersects(ray3{{1, 1, 1}, {-1, -1, -1}}, triangle3{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}));
+static_assert(!intersects(ray3{{0.5, 0.5000000000000001, 1}, {0, 0, -1}}, T));
+static_assert(intersects(T, ray3{{0.5, 0.5, 1}, {0, 0, -1}}));            // reversed order, hypotenuse
+static_assert(intersects(ray3{{tiny, tiny, 1}, {0, 0, -1}}, T));          // subnormal, interior
+static_assert(intersects(ray3{{0.5 * huge, 0, huge}, {0, 0, -huge}}, triangle3{{0, 0, 0}, {huge, 0, 0}, {0, huge, 0}}));
+// segment-triangle
+static_assert(intersects(segment3{{0.25, 0.25, 1}, {0.25, 0.25, 0}}, T));
+static_assert(!intersects(segment3{{0.25, 0.25, 1}, {0.25, 0.25, 0.5}}, T));
+// ray-box
+static_assert(intersects(B, ray3{{-1, 1, 1}, {1, 0, 0}}));                // along an edge
+static_assert(intersects(B, ray3{{2, 1, 0}, {-1, -1, 0}}));               // touching an edge only
+static_assert(!intersects(B, ray3{{2.0000000000000004, 1, 0}, {-1, -1, 0}}));
+// ray-sphere, spheres, points, boxes
+static_assert(intersects(ray3{{-5, 1, 0}, {1, 0, 0}}, S));                // tangent
+static_assert(!intersects(ray3{{-5, 1.0000000000000002, 0}, {1, 0, 0}}, S));
+static_assert(intersects(sphere3{{0, 0, 0}, 1}, sphere3{{2, 0, 0}, 1}));  // tangent balls
+static_assert(contains(sphere3{{0, 0, 0}, 4}, sphere3{{1, 2, 2}, 1}));    // internally tangent
+static_assert(intersects(point3{1, 2, 2}, sphere3{{0, 0, 0}, 3}));        // on the sphere
+static_assert(!intersects(point3{1, 2, 2.0000000000000004}, sphere3{{0, 0, 0}, 3}));
+static_assert(intersects(B, aabb3{{1, 1, 1}, {2, 2, 2}}));
+static_assert(covers(aabb3{{0, 0, 0}, {1, 1, 1}}, aabb3{{1, 0, 0}, {2, 1, 1}}, aabb3{{0, 0, 0}, {2, 1, 1}}));
+static_assert(squared_distance(B, point3{2, 3, 4}) == 14.0);
+// predicates, including the subnormal range
+static_assert(orient3d(point3{0, 0, 0}, point3{tiny, 0, 0}, point3{0, tiny, 0}, point3{0, 0, -tiny}) == sign::positive);
+static_assert(orient3d(point3{0.1, 0.2, 0.3}, point3{0.2, 0.4, 0.6}, point3{0.3, 0.1, 0.7}, point3{0.1, 0.2, 0.3}) == sign::zero);
+static_assert(orient2d(point2{0.5, 0.5}, point2{12, 12}, point2{24, 24}) == sign::zero);
+static_assert(incircle(point2{0, 0}, point2{1, 0}, point2{0, 1}, point2{1, 1}) == sign::zero);
+// exact values computed at compile time
+static_assert(intersection(ray3{{-5, 0, 0}, {2, 0, 0}}, S)->t == 2.0);
+static_assert(intersection(ray3{{0.25, 0.25, 1}, {0, 0, -3}}, T)->t == 1.0 / 3.0);
+static_assert(intersection(B, ray3{{-1, 0.5, 0.5}, {2, 0, 0}})->t_exit == 1.0);
+
+// point + point must not compile; point - point is a vector.
+template <class A, class B>
+concept addable = requires(A a, B b) { a + b; };
+static_assert(!addable<point3, point3>);
+static_assert(addable<point3, vec3>);
+static_assert(__is_same(decltype(point3{} - point3{}), vec3));
+static_assert(!addable<point2, point2>);
+} // namespace
+
+// Module hygiene: no macro from the library's implementation is visible here.
+#if defined(INCIDENCE_EXPORT) || defined(BOOST_OUTCOME_V2_NAMESPACE) || defined(BOOST_MP_CXX14_CONSTEXPR)
+#error "a macro leaked out of import incidence;"
+#endif
+
+TEST_CASE("static: the exact tier runs at compile time (this file compiled)", "[static]") {
+    SUCCEED("33 static_assert cases compiled");
+}

@@ -1,0 +1,74 @@
+// The tier-contract check shared by every oracle test. Include after testing.hpp.
+#pragma once
+#include <functional>
+
+namespace support {
+
+// One case of a canonical pair (a, b) whose true answer is `truth` (from the oracle).
+// Checks: exact == truth; both argument orders agree; conservative never misses a true yes;
+// aggressive never reports a false yes; classify is never wrong; approximate is wrong only
+// within its stated relative margin `bound` (measured by margin_kernel on the same body).
+template <class A, class B>
+void check_pair(tally& t, const A& a, const B& b, bool truth, double bound, const std::function<std::string()>& describe) {
+    using namespace incidence;
+    ++t.n;
+    const bool e = intersects<exact>(a, b);
+    if (e != truth) {
+        if (++t.exact_wrong <= 5) std::printf("  exact disagrees (truth %d): %s\n", truth, describe().c_str());
+    }
+    if (intersects<exact>(b, a) != e || intersects<approximate>(b, a) != intersects<approximate>(a, b)) ++t.symmetry_wrong;
+    if (truth && !intersects<conservative>(a, b)) {
+        if (++t.conservative_violations <= 5) std::printf("  conservative misses: %s\n", describe().c_str());
+    }
+    if (!truth && intersects<aggressive>(a, b)) {
+        if (++t.aggressive_violations <= 5) std::printf("  aggressive false yes: %s\n", describe().c_str());
+    }
+    const certainty c = classify(a, b);
+    if (c == certainty::uncertain) ++t.uncertain;
+    else if ((c == certainty::yes) != truth) ++t.classify_wrong;
+    if (intersects<approximate>(a, b) != truth) {
+        ++t.approx_wrong;
+        support_margin::margin_kernel mk;
+        (void)pair::intersects(mk, a, b);
+        if (mk.min_rel > bound) {
+            if (++t.approx_outside_bound <= 5)
+                std::printf("  approximate wrong at margin %g: %s\n", mk.min_rel, describe().c_str());
+        }
+    }
+}
+
+} // namespace support
+
+namespace support {
+
+inline std::string str(incidence::point3 q) { return "(" + hex(q.x) + "," + hex(q.y) + "," + hex(q.z) + ")"; }
+inline std::string str(incidence::vec3 q) { return "(" + hex(q.x) + "," + hex(q.y) + "," + hex(q.z) + ")"; }
+inline void arr(incidence::point3 p, double* o) { o[0] = p.x; o[1] = p.y; o[2] = p.z; }
+inline void arr(incidence::vec3 p, double* o) { o[0] = p.x; o[1] = p.y; o[2] = p.z; }
+
+// Run n generated cases of a canonical pair against the oracle and require every contract.
+// gen(rng) -> std::pair<A, B>; truth(a, b) -> bool (oracle); skip(a, b) -> bool (outside the
+// oracle's preconditions); describe(a, b) -> std::string.
+template <class Gen, class Truth, class Skip, class Describe>
+tally run_oracle(const char* name, long n, double bound, Gen gen, Truth truth, Skip skip, Describe describe) {
+    rng r(seed());
+    tally t{name};
+    long skipped = 0;
+    for (long i = 0; i < n; ++i) {
+        auto [a, b] = gen(r);
+        if (skip(a, b)) { ++skipped; continue; }
+        check_pair(t, a, b, truth(a, b), bound, [&] { return describe(a, b); });
+    }
+    std::printf("[cases] %s: seed %llu, %ld generated cases skipped (oracle precondition)\n", name,
+                static_cast<unsigned long long>(seed()), skipped);
+    t.print();
+    CHECK(t.exact_wrong == 0);
+    CHECK(t.symmetry_wrong == 0);
+    CHECK(t.conservative_violations == 0);
+    CHECK(t.aggressive_violations == 0);
+    CHECK(t.classify_wrong == 0);
+    CHECK(t.approx_outside_bound == 0);
+    return t;
+}
+
+} // namespace support
