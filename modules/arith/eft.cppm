@@ -15,7 +15,7 @@ struct two_double {
     double lo; // exact rounding error: hi + lo == exact result
 };
 
-[[nodiscard]] constexpr double abs(double x) { return x < 0.0 ? -x : (x == 0.0 ? 0.0 : x); }
+[[nodiscard]] constexpr double abs(double x) { return __builtin_fabs(x); }
 
 // Dekker's Fast-Two-Sum; requires |a| >= |b| (or a == 0).
 [[nodiscard]] constexpr two_double fast_two_sum(double a, double b) {

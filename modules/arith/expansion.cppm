@@ -14,11 +14,16 @@ export namespace incidence::arith {
 template <int N>
 struct expansion {
     static constexpr int capacity = N;
-    std::array<double, N> c{};
+    // Only c[0 .. n) is ever read; the rest stays uninitialised (no memset of large capacities).
+    std::array<double, N> c;
     int n = 1; // at least one component; zero is {0.0}
 
-    constexpr expansion() = default;
-    constexpr explicit expansion(double x) { c[0] = x; }
+    // Constant evaluation forbids copying indeterminate values, so fill there only.
+    constexpr expansion() {
+        if (__builtin_is_constant_evaluated()) c.fill(0.0);
+        c[0] = 0.0;
+    }
+    constexpr explicit expansion(double x) : expansion() { c[0] = x; }
 
     [[nodiscard]] constexpr double estimate() const {
         double s = 0.0;

@@ -13,9 +13,11 @@
 //     |va vb - xa xb| <= |va||vb - xb| + |xb||va - xa| <= (gamma_Ka + gamma_Kb + gamma_Ka gamma_Kb) pa pb
 //     and the rounding adds u |va vb| + eta; gamma_{Ka+Kb+1} c >= u c = 2^-1073 > eta covers eta.
 // Rounding of p itself loses at most a factor (1 - u) per operation; the final bound is inflated
-// by (1 + 2^-20), valid for expressions of fewer than 2^30 operations, plus 2^-1060 to absorb
-// the rounding of gamma * p. Overflow makes p infinite or NaN, so the bound test fails and the
-// filter answers "uncertain": it never claims a sign it cannot prove, at any input magnitude.
+// by (1 + 2^-20), valid for expressions of fewer than 2^30 operations. A permanent below 2^-900
+// is not trusted (gamma * p could round in the subnormal range): the filter says "uncertain".
+// This also keeps every operand of the fast path normal (a subnormal operand costs a microcode
+// assist of ~100 cycles on x86). Overflow makes p infinite or NaN, so the bound test fails too:
+// the filter never claims a sign it cannot prove, at any input magnitude.
 export module incidence.arith:filtered;
 import :eft;
 
@@ -67,12 +69,13 @@ template <int K>
 [[nodiscard]] constexpr double error_bound(filtered<K> a) {
     constexpr double ku = K * unit_roundoff;
     constexpr double gamma = ku / (1.0 - ku) * (1.0 + 0x1p-20);
-    return gamma * a.p + 0x1p-1060;
+    return gamma * a.p;
 }
 
 // +1 / -1 when the sign is proven, 0 when the filter cannot decide.
 template <int K>
 [[nodiscard]] constexpr int proven_sign(filtered<K> a) {
+    if (!(a.p >= 0x1p-900)) return 0; // tiny, zero or NaN permanent: not trusted
     const double b = error_bound(a);
     if (a.v > b) return 1;
     if (a.v < -b) return -1;

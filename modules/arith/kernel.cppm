@@ -1,5 +1,5 @@
 // One predicate, four tiers. A predicate is written once as a generic lambda
-//     [&](auto L) { ... return polynomial(L(x0), L(x1), ...); }
+//     [=](auto L) { ... return polynomial(L(x0), L(x1), ...); }
 // that lifts its double inputs with L and returns a polynomial expression in them. Each
 // *kernel* evaluates it with a different number type and turns the result into a sign:
 //   approx_kernel  plain double                      (tier approximate)
@@ -129,12 +129,24 @@ struct lift_range {
 // Largest expansion capacity evaluated on the stack; larger predicates go to the dyadic path.
 inline constexpr int max_expansion_capacity = 2048;
 
+// Stages 2 and 3 live in their own (never inlined) function: their expansion and dyadic
+// temporaries make a large stack frame, which must not be paid for when the filter decides.
+// The predicate is passed by value (predicates capture their inputs by value): nothing of the
+// fast path escapes to memory, so the filter runs on registers without store-forwarding stalls.
+template <class F>
+[[nodiscard, gnu::noinline]] constexpr sign exact_sign_fallback(F f, bool& valid);
+
 // Exact sign of a generic polynomial predicate at the exact values of its inputs.
 // `valid` is cleared for non-finite inputs (their sign is then reported as zero).
 template <class F>
-[[nodiscard]] constexpr sign exact_sign(F f, bool& valid) {
+[[nodiscard, gnu::always_inline]] constexpr sign exact_sign(const F& f, bool& valid) {
     // Stage 1: semi-static filter.
     if (const int s = proven_sign(f(lift_filter{})); s != 0) return to_sign(s);
+    return exact_sign_fallback(f, valid);
+}
+
+template <class F>
+[[nodiscard, gnu::noinline]] constexpr sign exact_sign_fallback(F f, bool& valid) {
     const range_probe r = f(lift_range{});
     if (!r.finite) {
         valid = false;
@@ -163,13 +175,13 @@ template <class F>
 // --- kernels ---------------------------------------------------------------------------------
 struct approx_kernel {
     template <class F>
-    [[nodiscard]] constexpr sign sgn(F f) { return sign_of_double(f(lift_double{})); }
+    [[nodiscard, gnu::always_inline]] constexpr sign sgn(const F& f) { return sign_of_double(f(lift_double{})); }
 };
 
 struct filter_kernel {
     bool failed = false; // some sign could not be proven: the query's answer is uncertain
     template <class F>
-    [[nodiscard]] constexpr sign sgn(F f) {
+    [[nodiscard, gnu::always_inline]] constexpr sign sgn(const F& f) {
         const int s = proven_sign(f(lift_filter{}));
         if (s == 0) failed = true;
         return to_sign(s);
@@ -179,12 +191,20 @@ struct filter_kernel {
 struct exact_kernel {
     bool valid = true; // false when a predicate saw a NaN or infinite input
     template <class F>
-    [[nodiscard]] constexpr sign sgn(F f) { return exact_sign(f, valid); }
+    [[nodiscard, gnu::always_inline]] constexpr sign sgn(const F& f) { return exact_sign(f, valid); }
 };
+
+// The exact re-run of a query body, out of line: its exact signs may carry large temporaries.
+template <class Body>
+[[nodiscard, gnu::noinline]] constexpr bool decide_exactly(const Body& body) {
+    exact_kernel e;
+    const bool x = body(e);
+    return e.valid && x;
+}
 
 // Run a yes/no query body in a tier. The body is `template <class K> bool(K&)`.
 template <class Tier, class Body>
-[[nodiscard]] constexpr bool decide(Body body) {
+[[nodiscard]] constexpr bool decide(const Body& body) {
     if constexpr (__is_same(Tier, approximate)) {
         approx_kernel k;
         return body(k);
@@ -194,16 +214,12 @@ template <class Tier, class Body>
         if (!f.failed) return r;
         if constexpr (__is_same(Tier, conservative)) return true;
         else if constexpr (__is_same(Tier, aggressive)) return false;
-        else {
-            exact_kernel e;
-            const bool x = body(e);
-            return e.valid && x;
-        }
+        else return decide_exactly(body);
     }
 }
 
 template <class Body>
-[[nodiscard]] constexpr certainty classify_body(Body body) {
+[[nodiscard]] constexpr certainty classify_body(const Body& body) {
     filter_kernel f;
     const bool r = body(f);
     return f.failed ? certainty::uncertain : to_certainty(r);

@@ -12,20 +12,20 @@ export namespace incidence {
 
 namespace poly {
 // The predicate polynomials, generic over the number type (see incidence.arith:kernel).
-[[nodiscard]] constexpr auto orient2d(point2 a, point2 b, point2 c) {
-    return [=](auto L) {
-        const auto A = arith::lift(L, a), B = arith::lift(L, b), C = arith::lift(L, c);
-        return arith::cross(A - C, B - C);
-    };
+// Each takes the lift L first; callers wrap them as [=](auto L) { return poly::f(L, ...); }.
+template <class L>
+[[nodiscard]] constexpr auto orient2d(L l, const point2& a, const point2& b, const point2& c) {
+    const auto A = arith::lift(l, a), B = arith::lift(l, b), C = arith::lift(l, c);
+    return arith::cross(A - C, B - C);
 }
-[[nodiscard]] constexpr auto orient3d(point3 a, point3 b, point3 c, point3 d) {
-    return [=](auto L) {
-        const auto A = arith::lift(L, a), B = arith::lift(L, b), C = arith::lift(L, c), D = arith::lift(L, d);
-        return arith::det3(A - D, B - D, C - D);
-    };
+template <class L>
+[[nodiscard]] constexpr auto orient3d(L l, const point3& a, const point3& b, const point3& c, const point3& d) {
+    const auto A = arith::lift(l, a), B = arith::lift(l, b), C = arith::lift(l, c), D = arith::lift(l, d);
+    return arith::det3(A - D, B - D, C - D);
 }
-[[nodiscard]] constexpr auto incircle(point2 a, point2 b, point2 c, point2 d) {
-    return [=](auto L) {
+template <class Lf>
+[[nodiscard]] constexpr auto incircle(Lf L, const point2& a, const point2& b, const point2& c, const point2& d) {
+    {
         const auto D = arith::lift(L, d);
         const auto ad = arith::lift(L, a) - D, bd = arith::lift(L, b) - D, cd = arith::lift(L, c) - D;
         const auto alift = ad.x * ad.x + ad.y * ad.y;
@@ -33,10 +33,12 @@ namespace poly {
         const auto clift = cd.x * cd.x + cd.y * cd.y;
         return alift * (bd.x * cd.y - cd.x * bd.y) + blift * (cd.x * ad.y - ad.x * cd.y) +
                clift * (ad.x * bd.y - bd.x * ad.y);
-    };
+    }
 }
-[[nodiscard]] constexpr auto insphere(point3 a, point3 b, point3 c, point3 d, point3 e) {
-    return [=](auto L) {
+template <class Lf>
+[[nodiscard]] constexpr auto insphere(Lf L, const point3& a, const point3& b, const point3& c, const point3& d,
+                                      const point3& e) {
+    {
         const auto E = arith::lift(L, e);
         const auto ae = arith::lift(L, a) - E, be = arith::lift(L, b) - E, ce = arith::lift(L, c) - E,
                    de = arith::lift(L, d) - E;
@@ -52,7 +54,7 @@ namespace poly {
         const auto clift = ce.x * ce.x + ce.y * ce.y + ce.z * ce.z;
         const auto dlift = de.x * de.x + de.y * de.y + de.z * de.z;
         return (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
-    };
+    }
 }
 } // namespace poly
 
@@ -60,7 +62,7 @@ template <class Tier>
 concept sign_tier = __is_same(Tier, exact) || __is_same(Tier, approximate);
 
 template <sign_tier Tier, class F>
-[[nodiscard]] constexpr sign evaluate_sign(F f) {
+[[nodiscard, gnu::always_inline]] constexpr sign evaluate_sign(const F& f) {
     if constexpr (__is_same(Tier, approximate)) return arith::approx_kernel{}.sgn(f);
     else return arith::exact_kernel{}.sgn(f);
 }
@@ -68,23 +70,23 @@ template <sign_tier Tier, class F>
 // positive: a, b, c are in counterclockwise order.
 template <sign_tier Tier = exact>
 [[nodiscard]] constexpr sign orient2d(point2 a, point2 b, point2 c) {
-    return evaluate_sign<Tier>(poly::orient2d(a, b, c));
+    return evaluate_sign<Tier>([=](auto L) { return poly::orient2d(L, a, b, c); });
 }
 // positive: d lies below the plane through a, b, c, "below" being the side from which a, b, c
 // appear clockwise (so a, b, c are counterclockwise seen from above). Equals det[a-d; b-d; c-d].
 template <sign_tier Tier = exact>
 [[nodiscard]] constexpr sign orient3d(point3 a, point3 b, point3 c, point3 d) {
-    return evaluate_sign<Tier>(poly::orient3d(a, b, c, d));
+    return evaluate_sign<Tier>([=](auto L) { return poly::orient3d(L, a, b, c, d); });
 }
 // positive: d lies inside the circle through a, b, c, which must be counterclockwise.
 template <sign_tier Tier = exact>
 [[nodiscard]] constexpr sign incircle(point2 a, point2 b, point2 c, point2 d) {
-    return evaluate_sign<Tier>(poly::incircle(a, b, c, d));
+    return evaluate_sign<Tier>([=](auto L) { return poly::incircle(L, a, b, c, d); });
 }
 // positive: e lies inside the sphere through a, b, c, d, which must have orient3d(a,b,c,d) > 0.
 template <sign_tier Tier = exact>
 [[nodiscard]] constexpr sign insphere(point3 a, point3 b, point3 c, point3 d, point3 e) {
-    return evaluate_sign<Tier>(poly::insphere(a, b, c, d, e));
+    return evaluate_sign<Tier>([=](auto L) { return poly::insphere(L, a, b, c, d, e); });
 }
 
 // The filter alone: the sign when it is provable in floating point, otherwise std::nullopt-like
@@ -94,7 +96,7 @@ struct filtered_sign {
     bool proven;
 };
 template <class F>
-[[nodiscard]] constexpr filtered_sign classify_sign(F f) {
+[[nodiscard]] constexpr filtered_sign classify_sign(const F& f) {
     arith::filter_kernel k;
     const sign s = k.sgn(f);
     return {s, !k.failed};

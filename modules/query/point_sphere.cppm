@@ -11,17 +11,13 @@ import incidence.shapes;
 
 export namespace incidence::pair {
 
-[[nodiscard]] constexpr auto point_in_ball_poly(point3 p, sphere3 s) {
-    return [=](auto L) {
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const point3& p, const sphere3& s) {
+    return k.sgn([=](auto L) {
         const auto d = arith::lift(L, p) - arith::lift(L, s.center);
         const auto r = L(s.radius);
         return r * r - arith::dot(d, d);
-    };
-}
-
-template <class K>
-[[nodiscard]] constexpr bool intersects(K& k, const point3& p, const sphere3& s) {
-    return k.sgn(point_in_ball_poly(p, s)) != sign::negative;
+    }) != sign::negative;
 }
 
 template <class K>

@@ -1,0 +1,300 @@
+// Google Benchmark: every query x tier x input set, named tier/query/pair/distribution, with CGAL
+// Epick and Epeck on the same inputs where CGAL has the query. Before timing, each benchmark
+// checks its answers against CGAL Epeck on the whole input set: the exact tier, conservative,
+// aggressive and classify must keep their promises (SkipWithError otherwise); approximate
+// methods report their wrong answers as the counter `wrong_pct`.
+// Run: bench/incidence_bench --benchmark_format=json  (the numbers belong in notes, not tests)
+#include <benchmark/benchmark.h>
+#include "../tests/oracle/cgal_oracle.hpp"
+#include <cmath>
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+import incidence;
+
+using namespace incidence;
+
+namespace {
+constexpr int set_size = 1024;
+std::mt19937_64 gen(20261122);
+double uni(double a, double b) { return std::uniform_real_distribution<double>(a, b)(gen); }
+int irand(int a, int b) { return std::uniform_int_distribution<int>(a, b)(gen); }
+double small() { return irand(-16, 16) + irand(0, 3) * 0.25; }
+double nudge(double x) {
+    const int k = irand(-2, 2);
+    for (int i = 0; i < k; ++i) x = std::nextafter(x, INFINITY);
+    for (int i = 0; i > k; --i) x = std::nextafter(x, -INFINITY);
+    return x;
+}
+point3 rp() { return {uni(-1, 1), uni(-1, 1), uni(-1, 1)}; }
+point3 np(double x, double y, double z) { return {nudge(x), nudge(y), nudge(z)}; }
+void arr(point3 p, double* o) { o[0] = p.x; o[1] = p.y; o[2] = p.z; }
+void arr(vec3 p, double* o) { o[0] = p.x; o[1] = p.y; o[2] = p.z; }
+
+enum class check { exact, conservative, aggressive, classify, approximate };
+
+// Registers one benchmark over a case set: f(case) -> bool (or certainty for classify).
+template <class Case, class F>
+void reg(const std::string& name, const std::vector<Case>& cases, const std::vector<bool>& truth, check kind, F f) {
+    benchmark::RegisterBenchmark(name.c_str(), [cases, truth, kind, f](benchmark::State& st) {
+        long wrong = 0, broken = 0;
+        for (std::size_t i = 0; i < cases.size(); ++i) {
+            const auto r = f(cases[i]);
+            bool yes;
+            if constexpr (std::is_same_v<decltype(r), const certainty>) {
+                if (r == certainty::uncertain) continue;
+                yes = r == certainty::yes;
+                if (yes != truth[i]) ++broken;
+                continue;
+            } else {
+                yes = static_cast<bool>(r);
+            }
+            if (yes != truth[i]) ++wrong;
+            if (kind == check::exact && yes != truth[i]) ++broken;
+            if (kind == check::conservative && truth[i] && !yes) ++broken;
+            if (kind == check::aggressive && !truth[i] && yes) ++broken;
+        }
+        if (broken != 0) {
+            st.SkipWithError("answer check failed before timing");
+            return;
+        }
+        std::size_t i = 0;
+        for (auto _ : st) {
+            benchmark::DoNotOptimize(f(cases[i]));
+            if (++i == cases.size()) i = 0;
+        }
+        st.counters["wrong_pct"] = 100.0 * static_cast<double>(wrong) / static_cast<double>(cases.size());
+    });
+}
+
+struct rt { ray3 r; triangle3 t; };
+struct ab { aabb3 b; ray3 r; };
+struct o3 { point3 a, b, c, d; };
+struct rs { ray3 r; sphere3 s; };
+struct ss { sphere3 a, b; };
+struct bb { aabb3 a, b; };
+
+std::vector<rt> ray_triangle_set(bool near) {
+    std::vector<rt> v;
+    while (v.size() < set_size) {
+        if (!near) {
+            const point3 o = rp();
+            const triangle3 t{rp(), rp(), rp()};
+            v.push_back({ray3{o, (t.a - o) * 0.4 + (t.b - o) * 0.3 + vec3{uni(-0.5, 0.5), uni(-0.5, 0.5), uni(-0.5, 0.5)}}, t});
+        } else { // aimed at a vertex or an edge point, nudged by up to 2 ulps
+            const point3 a{small(), small(), small()}, b{small(), small(), small()}, c{small(), small(), small()};
+            const double s = irand(0, 4) * 0.25;
+            const point3 target{a.x + s * (b.x - a.x), a.y + s * (b.y - a.y), a.z + s * (b.z - a.z)};
+            const point3 o{small(), small(), small()};
+            const vec3 d = target - o;
+            v.push_back({ray3{np(o.x, o.y, o.z), d}, triangle3{np(a.x, a.y, a.z), np(b.x, b.y, b.z), np(c.x, c.y, c.z)}});
+        }
+        double a_[3], b_[3], c_[3];
+        arr(v.back().t.a, a_); arr(v.back().t.b, b_); arr(v.back().t.c, c_);
+        if (oracle::triangle_is_degenerate(a_, b_, c_) || v.back().r.direction == vec3{0, 0, 0}) v.pop_back();
+    }
+    return v;
+}
+std::vector<ab> aabb_ray_set(bool near) {
+    std::vector<ab> v;
+    while (v.size() < set_size) {
+        if (!near) {
+            point3 lo = rp(), hi = rp();
+            if (lo.x > hi.x) std::swap(lo.x, hi.x);
+            if (lo.y > hi.y) std::swap(lo.y, hi.y);
+            if (lo.z > hi.z) std::swap(lo.z, hi.z);
+            v.push_back({aabb3{lo, hi}, ray3{point3{uni(-3, 3), uni(-3, 3), uni(-3, 3)}, vec3{uni(-1, 1), uni(-1, 1), uni(-1, 1)}}});
+        } else { // aimed at a face, an edge or a corner
+            const point3 lo{small(), small(), small()};
+            const point3 hi{lo.x + irand(1, 6) * 0.5, lo.y + irand(1, 6) * 0.5, lo.z + irand(1, 6) * 0.5};
+            const point3 target{irand(0, 1) ? lo.x : hi.x, irand(0, 1) ? lo.y : hi.y, irand(0, 2) ? lo.z : (lo.z + hi.z) / 2};
+            const point3 o{small(), small(), small()};
+            v.push_back({aabb3{np(lo.x, lo.y, lo.z), np(hi.x, hi.y, hi.z)}, ray3{np(o.x, o.y, o.z), target - o}});
+            if (v.back().b.min.x > v.back().b.max.x || v.back().b.min.y > v.back().b.max.y || v.back().b.min.z > v.back().b.max.z) v.pop_back();
+        }
+        if (!v.empty() && v.back().r.direction == vec3{0, 0, 0}) v.pop_back();
+    }
+    return v;
+}
+std::vector<o3> orient3d_set(bool near) {
+    std::vector<o3> v;
+    while (v.size() < set_size) {
+        if (!near) {
+            v.push_back({rp(), rp(), rp(), rp()});
+        } else { // coplanar by construction, then nudged
+            const point3 a{small(), small(), small()}, b{small(), small(), small()}, c{small(), small(), small()};
+            const double s = irand(-4, 4) * 0.5, t = irand(-4, 4) * 0.5;
+            const point3 d{a.x + s * (b.x - a.x) + t * (c.x - a.x), a.y + s * (b.y - a.y) + t * (c.y - a.y), a.z + s * (b.z - a.z) + t * (c.z - a.z)};
+            v.push_back({np(a.x * 0.1, a.y * 0.1, a.z * 0.1), np(b.x * 0.1, b.y * 0.1, b.z * 0.1), np(c.x * 0.1, c.y * 0.1, c.z * 0.1),
+                         np(d.x * 0.1, d.y * 0.1, d.z * 0.1)});
+        }
+    }
+    return v;
+}
+std::vector<rs> ray_sphere_set(bool near) {
+    std::vector<rs> v;
+    while (v.size() < set_size) {
+        if (!near) {
+            v.push_back({ray3{rp(), vec3{uni(-1, 1), uni(-1, 1), uni(-1, 1)}}, sphere3{rp(), uni(0, 0.7)}});
+        } else { // tangent rays: origin (c.x + r, c.y - k, c.z), direction +y
+            const point3 c{small(), small(), small()};
+            const double r = irand(1, 8) * 0.5;
+            v.push_back({ray3{np(c.x + r, c.y - irand(1, 8), c.z), vec3{0, 1, 0}}, sphere3{np(c.x, c.y, c.z), r}});
+        }
+    }
+    return v;
+}
+std::vector<ss> sphere_sphere_set(bool near) {
+    std::vector<ss> v;
+    while (v.size() < set_size) {
+        if (!near) v.push_back({sphere3{rp(), uni(0, 0.7)}, sphere3{rp(), uni(0, 0.7)}});
+        else {
+            const point3 c{small(), small(), small()};
+            const double r1 = irand(1, 8) * 0.5, r2 = irand(1, 8) * 0.5;
+            v.push_back({sphere3{np(c.x, c.y, c.z), r1}, sphere3{np(c.x + 2 * (r1 + r2) * 0.5, c.y, c.z), r2}});
+        }
+    }
+    return v;
+}
+std::vector<bb> aabb_aabb_set(bool near) {
+    std::vector<bb> v;
+    while (v.size() < set_size) {
+        point3 lo = near ? point3{small(), small(), small()} : rp();
+        point3 hi = near ? point3{lo.x + 1, lo.y + 1, lo.z + 1} : rp();
+        if (lo.x > hi.x) std::swap(lo.x, hi.x);
+        if (lo.y > hi.y) std::swap(lo.y, hi.y);
+        if (lo.z > hi.z) std::swap(lo.z, hi.z);
+        point3 lo2 = near ? point3{hi.x, lo.y, lo.z} : rp(); // touching faces when near
+        point3 hi2 = near ? point3{hi.x + 1, hi.y, hi.z} : rp();
+        if (lo2.x > hi2.x) std::swap(lo2.x, hi2.x);
+        if (lo2.y > hi2.y) std::swap(lo2.y, hi2.y);
+        if (lo2.z > hi2.z) std::swap(lo2.z, hi2.z);
+        v.push_back({aabb3{lo, hi}, aabb3{lo2, hi2}});
+    }
+    return v;
+}
+
+template <class Case, class Truth, class Tiered>
+void tiers(const std::string& pair, const std::string& dist, const std::vector<Case>& cs, Truth truth_of, Tiered f) {
+    std::vector<bool> truth;
+    for (const auto& c : cs) truth.push_back(truth_of(c));
+    reg("exact/intersects/" + pair + "/" + dist, cs, truth, check::exact, [f](const Case& c) { return f(exact{}, c); });
+    reg("conservative/intersects/" + pair + "/" + dist, cs, truth, check::conservative, [f](const Case& c) { return f(conservative{}, c); });
+    reg("aggressive/intersects/" + pair + "/" + dist, cs, truth, check::aggressive, [f](const Case& c) { return f(aggressive{}, c); });
+    reg("approximate/intersects/" + pair + "/" + dist, cs, truth, check::approximate, [f](const Case& c) { return f(approximate{}, c); });
+}
+
+void register_all() {
+    for (const bool near : {false, true}) {
+        const std::string dist = near ? "near_degenerate" : "random";
+        {
+            const auto cs = ray_triangle_set(near);
+            auto truth = [](const rt& c) {
+                double o[3], d[3], a[3], b[3], cc[3];
+                arr(c.r.origin, o); arr(c.r.direction, d); arr(c.t.a, a); arr(c.t.b, b); arr(c.t.c, cc);
+                return oracle::ray_triangle(o, d, a, b, cc);
+            };
+            tiers("ray_triangle", dist, cs, truth, [](auto tier, const rt& c) { return intersects<decltype(tier)>(c.r, c.t); });
+            std::vector<bool> t;
+            for (const auto& c : cs) t.push_back(truth(c));
+            reg("classify/intersects/ray_triangle/" + dist, cs, t, check::classify, [](const rt& c) { return classify(c.r, c.t); });
+            reg("moller_trumbore/intersects/ray_triangle/" + dist, cs, t, check::approximate,
+                [](const rt& c) { return method::ray_triangle_moller_trumbore(c.r, c.t).has_value(); });
+            reg("sign_algorithm_double/intersects/ray_triangle/" + dist, cs, t, check::approximate, [](const rt& c) {
+                arith::approx_kernel k;
+                return pair::intersects(k, c.r, c.t);
+            });
+            reg("exact/intersection/ray_triangle/" + dist, cs, t, check::exact, [](const rt& c) { return intersection(c.r, c.t).has_value(); });
+            // Epick builds Ray_3(point, vector) by rounding point + vector: not exact for such rays.
+            reg("cgal_epick/intersects/ray_triangle/" + dist, cs, t, check::approximate, [](const rt& c) {
+                double o[3], d[3], a[3], b[3], cc[3];
+                arr(c.r.origin, o); arr(c.r.direction, d); arr(c.t.a, a); arr(c.t.b, b); arr(c.t.c, cc);
+                return oracle::ray_triangle_epick(o, d, a, b, cc);
+            });
+            reg("cgal_epeck/intersects/ray_triangle/" + dist, cs, t, check::exact, truth);
+        }
+        {
+            const auto cs = aabb_ray_set(near);
+            auto truth = [](const ab& c) {
+                double o[3], d[3], mn[3], mx[3];
+                arr(c.r.origin, o); arr(c.r.direction, d); arr(c.b.min, mn); arr(c.b.max, mx);
+                return oracle::ray_box(o, d, mn, mx);
+            };
+            tiers("aabb_ray", dist, cs, truth, [](auto tier, const ab& c) { return intersects<decltype(tier)>(c.b, c.r); });
+            std::vector<bool> t;
+            for (const auto& c : cs) t.push_back(truth(c));
+            reg("woo/intersects/aabb_ray/" + dist, cs, t, check::approximate, [](const ab& c) { return method::aabb_ray_woo(c.b, c.r); });
+            reg("sign_algorithm_double/intersects/aabb_ray/" + dist, cs, t, check::approximate, [](const ab& c) {
+                arith::approx_kernel k;
+                return pair::intersects(k, c.b, c.r);
+            });
+            reg("cgal_epick/intersects/aabb_ray/" + dist, cs, t, check::approximate, [](const ab& c) {
+                double o[3], d[3], mn[3], mx[3];
+                arr(c.r.origin, o); arr(c.r.direction, d); arr(c.b.min, mn); arr(c.b.max, mx);
+                return oracle::ray_box_epick(o, d, mn, mx);
+            });
+            reg("cgal_epeck/intersects/aabb_ray/" + dist, cs, t, check::exact, truth);
+        }
+        {
+            const auto cs = orient3d_set(near);
+            std::vector<bool> t; // "truth" for orient3d: sign > 0 (the full sign is checked below)
+            std::vector<int> sgn;
+            for (const auto& c : cs) {
+                double a[3], b[3], cc[3], d[3];
+                arr(c.a, a); arr(c.b, b); arr(c.c, cc); arr(c.d, d);
+                sgn.push_back(oracle::orient3d(a, b, cc, d));
+                t.push_back(sgn.back() > 0);
+            }
+            reg("exact/orient3d/points/" + dist, cs, t, check::exact, [](const o3& c) { return orient3d(c.a, c.b, c.c, c.d) == sign::positive; });
+            reg("approximate/orient3d/points/" + dist, cs, t, check::approximate,
+                [](const o3& c) { return orient3d<approximate>(c.a, c.b, c.c, c.d) == sign::positive; });
+            reg("cgal_epick/orient3d/points/" + dist, cs, t, check::exact, [](const o3& c) {
+                double a[3], b[3], cc[3], d[3];
+                arr(c.a, a); arr(c.b, b); arr(c.c, cc); arr(c.d, d);
+                return oracle::orient3d_epick(a, b, cc, d) > 0;
+            });
+        }
+        {
+            const auto cs = ray_sphere_set(near);
+            auto truth = [](const rs& c) {
+                double o[3], d[3], cc[3];
+                arr(c.r.origin, o); arr(c.r.direction, d); arr(c.s.center, cc);
+                return oracle::ray_ball(o, d, cc, c.s.radius);
+            };
+            tiers("ray_sphere", dist, cs, truth, [](auto tier, const rs& c) { return intersects<decltype(tier)>(c.r, c.s); });
+            std::vector<bool> t;
+            for (const auto& c : cs) t.push_back(truth(c));
+            reg("algebraic/intersects/ray_sphere/" + dist, cs, t, check::approximate, [](const rs& c) { return method::ray_sphere_algebraic(c.r, c.s).has_value(); });
+            reg("cgal_epeck/intersects/ray_sphere/" + dist, cs, t, check::exact, truth);
+        }
+        {
+            const auto cs = sphere_sphere_set(near);
+            auto truth = [](const ss& c) {
+                double a[3], b[3];
+                arr(c.a.center, a); arr(c.b.center, b);
+                return oracle::ball_ball(a, c.a.radius, b, c.b.radius);
+            };
+            tiers("sphere_sphere", dist, cs, truth, [](auto tier, const ss& c) { return intersects<decltype(tier)>(c.a, c.b); });
+        }
+        {
+            const auto cs = aabb_aabb_set(near);
+            auto truth = [](const bb& c) {
+                double a0[3], a1[3], b0[3], b1[3];
+                arr(c.a.min, a0); arr(c.a.max, a1); arr(c.b.min, b0); arr(c.b.max, b1);
+                return oracle::box_box(a0, a1, b0, b1);
+            };
+            tiers("aabb_aabb", dist, cs, truth, [](auto tier, const bb& c) { return intersects<decltype(tier)>(c.a, c.b); });
+        }
+    }
+}
+} // namespace
+
+int main(int argc, char** argv) {
+    register_all();
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}
