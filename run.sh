@@ -1,0 +1,92 @@
+#!/usr/bin/env bash
+# The two commands of the README:
+#   ./run.sh demo   build (release) and run the demo: the tiers on touching cases + a speed table
+#   ./run.sh test   the whole test suite: release build and tests (oracle, static, consumer,
+#                   benchmark smoke), the ASan+UBSan build and its tests, and the fuzzers
+# Both install what is missing first (Debian bookworm + bookworm-backports) and skip what is there.
+set -euo pipefail
+cd "$(dirname "$0")"
+
+# Debian packages, and the backports suite for the two that need newer versions.
+packages=(clang-19 clang-tools-19 libclang-rt-19-dev libfuzzer-19-dev ninja-build libboost-dev libgmp-dev
+          libmpfr-dev libcgal-dev libbenchmark-dev)
+backports=(cmake catch2)
+
+as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
+installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"; }
+version_ok() { # package, minimum version
+    local v; v=$(dpkg-query -W -f='${Version}' "$1" 2>/dev/null || true)
+    [ -n "$v" ] && dpkg --compare-versions "$v" ge "$2"
+}
+
+setup() {
+    local missing=() from_backports=()
+    for p in "${packages[@]}"; do installed "$p" || missing+=("$p"); done
+    version_ok cmake 3.30 || from_backports+=(cmake)
+    version_ok catch2 3.0 || from_backports+=(catch2)
+    if [ ${#missing[@]} -eq 0 ] && [ ${#from_backports[@]} -eq 0 ]; then
+        echo "setup: every dependency is installed"
+        return
+    fi
+    echo "setup: installing ${missing[*]} ${from_backports[*]}"
+    if [ ${#from_backports[@]} -gt 0 ] && ! grep -rqs "bookworm-backports" /etc/apt/sources.list /etc/apt/sources.list.d/; then
+        echo "deb http://deb.debian.org/debian bookworm-backports main" | as_root tee /etc/apt/sources.list.d/bookworm-backports.list >/dev/null
+    fi
+    as_root apt-get update -qq
+    export DEBIAN_FRONTEND=noninteractive
+    if [ ${#missing[@]} -gt 0 ]; then as_root apt-get install -y -qq "${missing[@]}" >/dev/null; fi
+    if [ ${#from_backports[@]} -gt 0 ]; then as_root apt-get install -y -qq -t bookworm-backports "${from_backports[@]}" >/dev/null; fi
+}
+
+build() { # preset
+    cmake --preset "$1" -Wno-dev >/dev/null
+    cmake --build --preset "$1"
+}
+
+total_passed=0
+total_failed=0
+run_tests() { # preset [ctest args...]: prints every "[cases]" line and the summary
+    local preset=$1; shift
+    local log="build/$preset/ctest.log" rc=0
+    ctest --preset "$preset" -V "$@" >"$log" 2>&1 || rc=$?
+    local summary
+    summary=$(grep -E "tests passed, [0-9]+ tests failed out of [0-9]+" "$log" | tail -1 || true)
+    if [[ $summary =~ ([0-9]+)\ tests\ failed\ out\ of\ ([0-9]+) ]]; then
+        total_failed=$(( total_failed + BASH_REMATCH[1] ))
+        total_passed=$(( total_passed + BASH_REMATCH[2] - BASH_REMATCH[1] ))
+    fi
+    grep -E "^\S*[0-9]+: \[cases\]|^\[cases\]|replayed [0-9]+ inputs|Done [0-9]+ runs|tests passed|tests failed" "$log" | sed 's/^[0-9]*: //' || true
+    if [ $rc -ne 0 ]; then
+        echo "---- failures (full log: $log) ----"
+        grep -E "\*\*\*Failed|\*\*\*Exception|FAILED|Timeout" "$log" | head -50 || true
+        ctest --preset "$preset" --rerun-failed --output-on-failure 2>&1 | tail -120 || true
+        exit $rc
+    fi
+}
+
+case "${1:-}" in
+demo)
+    setup
+    build release
+    ./build/release/tools/demo/incidence_demo
+    ;;
+test)
+    setup
+    start=$(date +%s)
+    echo "== release build: unit, oracle, static, consumer-from-install, benchmark smoke, corpus replay"
+    build release
+    run_tests release
+    echo "== debug build with AddressSanitizer + UndefinedBehaviorSanitizer (a tenth of the oracle cases)"
+    build debug
+    ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 run_tests debug -E consumer_from_install
+    echo "== fuzz build (libFuzzer + ASan + UBSan): corpus replay, then each fuzzer for a fixed time"
+    build fuzz
+    run_tests fuzz
+    echo "== all suites passed in $(( $(date +%s) - start )) s"
+    echo "$total_passed passed, $total_failed failed"
+    ;;
+*)
+    echo "usage: $0 demo | test" >&2
+    exit 2
+    ;;
+esac
