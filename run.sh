@@ -55,7 +55,7 @@ run_tests() { # preset [ctest args...]: prints every "[cases]" line and the summ
         total_failed=$(( total_failed + BASH_REMATCH[1] ))
         total_passed=$(( total_passed + BASH_REMATCH[2] - BASH_REMATCH[1] ))
     fi
-    grep -E "^\S*[0-9]+: \[cases\]|^\[cases\]|replayed [0-9]+ inputs|Done [0-9]+ runs|tests passed|tests failed" "$log" | sed 's/^[0-9]*: //' || true
+    grep -E "\[cases\]|replayed [0-9]+ inputs|Done [0-9]+ runs|^[0-9]+% tests passed" "$log" | sed -E "s/^[0-9]+: //" || true
     if [ $rc -ne 0 ]; then
         echo "---- failures (full log: $log) ----"
         grep -E "\*\*\*Failed|\*\*\*Exception|FAILED|Timeout" "$log" | head -50 || true

@@ -4,6 +4,7 @@ export module incidence.arith;
 export import :eft;
 export import :expansion;
 export import :filtered;
+export import :filtered2;
 export import :dyadic;
 export import :kernel;
 export import :rounding;

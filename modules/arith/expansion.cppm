@@ -37,68 +37,65 @@ struct expansion {
     }
 };
 
-// Shewchuk's Fast-Expansion-Sum-Zeroelim: h = e + f.
-template <int N, int M>
-[[nodiscard]] constexpr expansion<N + M> fast_expansion_sum_zeroelim(const expansion<N>& e,
-                                                                     const expansion<M>& f) {
-    expansion<N + M> h;
-    int hindex = 0;
-    int ei = 0, fi = 0;
-    double enow = e.c[0], fnow = f.c[0];
+// Shewchuk's Fast-Expansion-Sum-Zeroelim: h = e + f, returns the length of h (>= 1).
+// h must not alias e or f and must hold elen + flen components.
+[[nodiscard]] constexpr int fast_expansion_sum_zeroelim(int elen, const double* e, int flen, const double* f, double* h) {
+    int hindex = 0, ei = 0, fi = 0;
+    double enow = e[0], fnow = f[0];
     double q;
-    auto next_e = [&] { ++ei; if (ei < e.n) enow = e.c[static_cast<unsigned>(ei)]; };
-    auto next_f = [&] { ++fi; if (fi < f.n) fnow = f.c[static_cast<unsigned>(fi)]; };
-    auto emit = [&](double hh) { if (hh != 0.0) h.c[static_cast<unsigned>(hindex++)] = hh; };
+    auto next_e = [&] { if (++ei < elen) enow = e[ei]; };
+    auto next_f = [&] { if (++fi < flen) fnow = f[fi]; };
+    auto emit = [&](double hh) { if (hh != 0.0) h[hindex++] = hh; };
     if ((fnow > enow) == (fnow > -enow)) { q = enow; next_e(); }
     else { q = fnow; next_f(); }
-    if (ei < e.n && fi < f.n) {
+    if (ei < elen && fi < flen) {
         two_double s{};
         if ((fnow > enow) == (fnow > -enow)) { s = fast_two_sum(enow, q); next_e(); }
         else { s = fast_two_sum(fnow, q); next_f(); }
         q = s.hi; emit(s.lo);
-        while (ei < e.n && fi < f.n) {
+        while (ei < elen && fi < flen) {
             if ((fnow > enow) == (fnow > -enow)) { s = two_sum(q, enow); next_e(); }
             else { s = two_sum(q, fnow); next_f(); }
             q = s.hi; emit(s.lo);
         }
     }
-    while (ei < e.n) { const auto s = two_sum(q, enow); next_e(); q = s.hi; emit(s.lo); }
-    while (fi < f.n) { const auto s = two_sum(q, fnow); next_f(); q = s.hi; emit(s.lo); }
-    if (q != 0.0 || hindex == 0) h.c[static_cast<unsigned>(hindex++)] = q;
-    h.n = hindex;
-    return h;
+    while (ei < elen) { const auto s = two_sum(q, enow); next_e(); q = s.hi; emit(s.lo); }
+    while (fi < flen) { const auto s = two_sum(q, fnow); next_f(); q = s.hi; emit(s.lo); }
+    if (q != 0.0 || hindex == 0) h[hindex++] = q;
+    return hindex;
 }
 
-// Shewchuk's Scale-Expansion-Zeroelim: h = e * b.
-template <int N>
-[[nodiscard]] constexpr expansion<2 * N> scale_expansion_zeroelim(const expansion<N>& e, double b) {
-    expansion<2 * N> h;
+// Shewchuk's Scale-Expansion-Zeroelim: h = e * b, returns the length of h (>= 1).
+// h must not alias e and must hold 2 elen components.
+[[nodiscard]] constexpr int scale_expansion_zeroelim(int elen, const double* e, double b, double* h) {
     int hindex = 0;
-    auto emit = [&](double hh) { if (hh != 0.0) h.c[static_cast<unsigned>(hindex++)] = hh; };
-    auto p = two_product(e.c[0], b);
+    auto emit = [&](double hh) { if (hh != 0.0) h[hindex++] = hh; };
+    auto p = two_product(e[0], b);
     double q = p.hi;
     emit(p.lo);
-    for (int i = 1; i < e.n; ++i) {
-        const auto prod = two_product(e.c[static_cast<unsigned>(i)], b);
+    for (int i = 1; i < elen; ++i) {
+        const auto prod = two_product(e[i], b);
         const auto s = two_sum(q, prod.lo);
         emit(s.lo);
         const auto t = fast_two_sum(prod.hi, s.hi);
         q = t.hi;
         emit(t.lo);
     }
-    if (q != 0.0 || hindex == 0) h.c[static_cast<unsigned>(hindex++)] = q;
-    h.n = hindex;
-    return h;
+    if (q != 0.0 || hindex == 0) h[hindex++] = q;
+    return hindex;
 }
 
 template <int N, int M>
 [[nodiscard]] constexpr expansion<N + M> operator+(const expansion<N>& a, const expansion<M>& b) {
-    return fast_expansion_sum_zeroelim(a, b);
+    expansion<N + M> r;
+    r.n = fast_expansion_sum_zeroelim(a.n, a.c.data(), b.n, b.c.data(), r.c.data());
+    return r;
 }
 template <int N>
 [[nodiscard]] constexpr expansion<N> operator-(const expansion<N>& a) {
-    expansion<N> r = a;
-    for (int i = 0; i < r.n; ++i) r.c[static_cast<unsigned>(i)] = -r.c[static_cast<unsigned>(i)];
+    expansion<N> r;
+    r.n = a.n;
+    for (int i = 0; i < a.n; ++i) r.c[static_cast<unsigned>(i)] = -a.c[static_cast<unsigned>(i)];
     return r;
 }
 template <int N, int M>
@@ -111,33 +108,35 @@ template <int N, int M>
         else { r.c[0] = d.hi; r.n = 1; }
         return r;
     } else {
-        return fast_expansion_sum_zeroelim(a, -b);
+        return a + (-b);
     }
 }
-// Product: scale the longer operand by each component of the shorter and sum the pieces.
+// Product: scale the longer operand by each component of the shorter and accumulate, ping-
+// ponging between two buffers so that nothing is copied.
 template <int N, int M>
 [[nodiscard]] constexpr expansion<2 * N * M> operator*(const expansion<N>& a, const expansion<M>& b) {
-    expansion<2 * N * M> acc;
     const bool a_short = a.n <= b.n;
-    const int count = a_short ? a.n : b.n;
-    for (int i = 0; i < count; ++i) {
-        expansion<2 * N * M> piece;
-        if (a_short) {
-            const auto s = scale_expansion_zeroelim(b, a.c[static_cast<unsigned>(i)]);
-            piece.n = s.n;
-            for (int j = 0; j < s.n; ++j) piece.c[static_cast<unsigned>(j)] = s.c[static_cast<unsigned>(j)];
-        } else {
-            const auto s = scale_expansion_zeroelim(a, b.c[static_cast<unsigned>(i)]);
-            piece.n = s.n;
-            for (int j = 0; j < s.n; ++j) piece.c[static_cast<unsigned>(j)] = s.c[static_cast<unsigned>(j)];
-        }
-        if (i == 0) { acc = piece; continue; }
-        // acc + piece never exceeds the product's capacity: it is a partial sum of the product.
-        const auto sum = fast_expansion_sum_zeroelim(acc, piece);
-        acc.n = sum.n;
-        for (int j = 0; j < sum.n; ++j) acc.c[static_cast<unsigned>(j)] = sum.c[static_cast<unsigned>(j)];
+    const double* sc = a_short ? a.c.data() : b.c.data();
+    const double* lg = a_short ? b.c.data() : a.c.data();
+    const int sn = a_short ? a.n : b.n, ln = a_short ? b.n : a.n;
+    expansion<2 * N * M> r, other;
+    std::array<double, 2 * (N > M ? N : M)> piece;
+    if (__builtin_is_constant_evaluated()) piece.fill(0.0);
+    double* acc = r.c.data();
+    double* tmp = other.c.data();
+    int accn = scale_expansion_zeroelim(ln, lg, sc[0], acc);
+    for (int i = 1; i < sn; ++i) {
+        const int pn = scale_expansion_zeroelim(ln, lg, sc[i], piece.data());
+        // acc + piece is a partial sum of the product: it fits in 2 N M components.
+        accn = fast_expansion_sum_zeroelim(accn, acc, pn, piece.data(), tmp);
+        double* t = acc;
+        acc = tmp;
+        tmp = t;
     }
-    return acc;
+    if (acc != r.c.data())
+        for (int i = 0; i < accn; ++i) r.c[static_cast<unsigned>(i)] = acc[i];
+    r.n = accn;
+    return r;
 }
 
 } // namespace incidence::arith

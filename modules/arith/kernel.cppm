@@ -17,6 +17,7 @@ import incidence.core;
 import :eft;
 import :expansion;
 import :filtered;
+import :filtered2;
 import :dyadic;
 
 export namespace incidence::arith {
@@ -76,6 +77,9 @@ struct lift_double {
 };
 struct lift_filter {
     [[nodiscard]] constexpr filtered<0> operator()(double x) const { return lift_filtered(x); }
+};
+struct lift_filter2 {
+    [[nodiscard]] constexpr filtered2<0> operator()(double x) const { return lift_filtered2(x); }
 };
 struct lift_expansion {
     int shift = 0; // inputs are scaled by 2^shift (exact inside the safe window)
@@ -147,6 +151,8 @@ template <class F>
 
 template <class F>
 [[nodiscard, gnu::noinline]] constexpr sign exact_sign_fallback(F f, bool& valid) {
+    // Stage 1b: double-double filter (decides configurations a few ulps off the boundary).
+    if (const int s = proven_sign(f(lift_filter2{})); s != 0) return to_sign(s);
     const range_probe r = f(lift_range{});
     if (!r.finite) {
         valid = false;

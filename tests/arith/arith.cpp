@@ -113,3 +113,21 @@ TEST_CASE("arith: correctly_round finds the nearest double of sqrt(2) and of 1/3
     CHECK(s2 == std::sqrt(2.0));
     CHECK(arith::quotient(arith::to_dyadic(1.0), arith::to_dyadic(3.0)) == 1.0 / 3.0);
 }
+
+TEST_CASE("arith: the double-double filter never claims a wrong sign, near cancellation", "[arith]") {
+    support::rng r(support::seed() + 4);
+    long n = 0, wrong = 0, proven = 0;
+    for (long i = 0; i < support::cases(100000); ++i) {
+        // x0 x2 - x1 x3 with x0 x2 ~ x1 x3: near cancellation, a few ulps apart or exactly equal
+        const double a = std::ldexp(r.uniform(0.5, 1), r.integer(-300, 300)), b = std::ldexp(r.uniform(0.5, 1), r.integer(-300, 300));
+        const double x[4] = {a, support::nudge(a * b / b, r.integer(-3, 3)), support::nudge(b, r.integer(-2, 2)), b};
+        const auto f = [&](auto L) { return L(x[0]) * L(x[2]) - L(x[1]) * L(x[3]) + (L(x[0]) - L(x[1])) * (L(x[2]) - L(x[3])); };
+        const int fs = arith::proven_sign(f(arith::lift_filter2{}));
+        const rational v = Q(x[0]) * Q(x[2]) - Q(x[1]) * Q(x[3]) + (Q(x[0]) - Q(x[1])) * (Q(x[2]) - Q(x[3]));
+        const int t = v > 0 ? 1 : (v < 0 ? -1 : 0);
+        ++n;
+        if (fs != 0) { ++proven; if (fs != t) ++wrong; }
+    }
+    std::printf("[cases] double-double filter: %ld near-cancelling, proven %ld, wrong %ld\n", n, proven, wrong);
+    CHECK(wrong == 0);
+}
