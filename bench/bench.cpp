@@ -7,6 +7,7 @@
 #include <benchmark/benchmark.h>
 #include "../tests/oracle/cgal_oracle.hpp"
 #include <cmath>
+#include <algorithm>
 #include <functional>
 #include <random>
 #include <string>
@@ -28,6 +29,9 @@ double nudge(double x) {
     return x;
 }
 point3 rp() { return {uni(-1, 1), uni(-1, 1), uni(-1, 1)}; }
+aabb3 box(point3 a, point3 b) { // the box spanned by two corners in any order
+    return {{std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)}, {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)}};
+}
 point3 np(double x, double y, double z) { return {nudge(x), nudge(y), nudge(z)}; }
 void arr(point3 p, double* o) { o[0] = p.x; o[1] = p.y; o[2] = p.z; }
 void arr(vec3 p, double* o) { o[0] = p.x; o[1] = p.y; o[2] = p.z; }
@@ -100,11 +104,7 @@ std::vector<ab> aabb_ray_set(bool near) {
     std::vector<ab> v;
     while (v.size() < set_size) {
         if (!near) {
-            point3 lo = rp(), hi = rp();
-            if (lo.x > hi.x) std::swap(lo.x, hi.x);
-            if (lo.y > hi.y) std::swap(lo.y, hi.y);
-            if (lo.z > hi.z) std::swap(lo.z, hi.z);
-            v.push_back({aabb3{lo, hi}, ray3{point3{uni(-3, 3), uni(-3, 3), uni(-3, 3)}, vec3{uni(-1, 1), uni(-1, 1), uni(-1, 1)}}});
+            v.push_back({box(rp(), rp()), ray3{point3{uni(-3, 3), uni(-3, 3), uni(-3, 3)}, vec3{uni(-1, 1), uni(-1, 1), uni(-1, 1)}}});
         } else { // aimed at a face, an edge or a corner
             const point3 lo{small(), small(), small()};
             const point3 hi{lo.x + irand(1, 6) * 0.5, lo.y + irand(1, 6) * 0.5, lo.z + irand(1, 6) * 0.5};
@@ -160,17 +160,11 @@ std::vector<ss> sphere_sphere_set(bool near) {
 std::vector<bb> aabb_aabb_set(bool near) {
     std::vector<bb> v;
     while (v.size() < set_size) {
-        point3 lo = near ? point3{small(), small(), small()} : rp();
-        point3 hi = near ? point3{lo.x + 1, lo.y + 1, lo.z + 1} : rp();
-        if (lo.x > hi.x) std::swap(lo.x, hi.x);
-        if (lo.y > hi.y) std::swap(lo.y, hi.y);
-        if (lo.z > hi.z) std::swap(lo.z, hi.z);
-        point3 lo2 = near ? point3{hi.x, lo.y, lo.z} : rp(); // touching faces when near
-        point3 hi2 = near ? point3{hi.x + 1, hi.y, hi.z} : rp();
-        if (lo2.x > hi2.x) std::swap(lo2.x, hi2.x);
-        if (lo2.y > hi2.y) std::swap(lo2.y, hi2.y);
-        if (lo2.z > hi2.z) std::swap(lo2.z, hi2.z);
-        v.push_back({aabb3{lo, hi}, aabb3{lo2, hi2}});
+        const point3 c{small(), small(), small()};
+        const aabb3 a = near ? box(c, point3{c.x + 1, c.y + 1, c.z + 1}) : box(rp(), rp());
+        // touching faces when near
+        const aabb3 b = near ? box(point3{a.max.x, a.min.y, a.min.z}, point3{a.max.x + 1, a.max.y, a.max.z}) : box(rp(), rp());
+        v.push_back({a, b});
     }
     return v;
 }

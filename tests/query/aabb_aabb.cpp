@@ -28,9 +28,7 @@ aabb3 box_from(support::rng& r, support::transform& tr, bool nice) {
         hi[i] = lo[i] + (nice ? r.integer(0, 6) * 0.5 : r.uniform(0, 1));
     }
     aabb3 b{{tr.apply(lo[0], 0), tr.apply(lo[1], 1), tr.apply(lo[2], 2)}, {tr.apply(hi[0], 0), tr.apply(hi[1], 1), tr.apply(hi[2], 2)}};
-    if (b.min.x > b.max.x) std::swap(b.min.x, b.max.x);
-    if (b.min.y > b.max.y) std::swap(b.min.y, b.max.y);
-    if (b.min.z > b.max.z) std::swap(b.min.z, b.max.z);
+    b = support::ordered(b);
     return b;
 }
 std::pair<aabb3, aabb3> near_case(support::rng& r) {

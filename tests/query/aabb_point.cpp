@@ -28,9 +28,7 @@ std::pair<aabb3, point3> near_case(support::rng& r) {
     }
     support::transform tr = support::random_transform(r, true);
     aabb3 b{{tr.apply(lo[0], 0), tr.apply(lo[1], 1), tr.apply(lo[2], 2)}, {tr.apply(hi[0], 0), tr.apply(hi[1], 1), tr.apply(hi[2], 2)}};
-    if (b.min.x > b.max.x) std::swap(b.min.x, b.max.x);
-    if (b.min.y > b.max.y) std::swap(b.min.y, b.max.y);
-    if (b.min.z > b.max.z) std::swap(b.min.z, b.max.z);
+    b = support::ordered(b);
     return {b, point3{tr.apply(p[0], 0), tr.apply(p[1], 1), tr.apply(p[2], 2)}};
 }
 std::pair<aabb3, point3> random_case(support::rng& r) {

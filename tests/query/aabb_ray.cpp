@@ -46,9 +46,7 @@ std::pair<aabb3, ray3> near_case(support::rng& r) {
     support::transform tr = support::random_transform(r, true);
     const aabb3 b{{tr.apply(lo[0], 0), tr.apply(lo[1], 1), tr.apply(lo[2], 2)}, {tr.apply(hi[0], 0), tr.apply(hi[1], 1), tr.apply(hi[2], 2)}};
     aabb3 fixed = b; // nudges may invert a flat box: keep min <= max
-    if (fixed.min.x > fixed.max.x) std::swap(fixed.min.x, fixed.max.x);
-    if (fixed.min.y > fixed.max.y) std::swap(fixed.min.y, fixed.max.y);
-    if (fixed.min.z > fixed.max.z) std::swap(fixed.min.z, fixed.max.z);
+    fixed = support::ordered(fixed);
     return {fixed, ray3{{tr.apply(O[0], 0), tr.apply(O[1], 1), tr.apply(O[2], 2)}, {tr.dir(D[0]), tr.dir(D[1]), tr.dir(D[2])}}};
 }
 std::pair<aabb3, ray3> random_case(support::rng& r) {
