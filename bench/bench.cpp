@@ -272,6 +272,53 @@ void register_all() {
             tiers("sphere_sphere", dist, cs, truth, [](auto tier, const ss& c) { return intersects<decltype(tier)>(c.a, c.b); });
         }
         {
+            // point x sphere: random points and balls; near: points on the sphere (3-4-5 and
+            // 1-2-2 triples scaled), nudged by up to 2 ulps.
+            struct ps { point3 p; sphere3 s; };
+            std::vector<ps> cs;
+            while (cs.size() < set_size) {
+                if (!near) cs.push_back({rp(), sphere3{rp(), uni(0, 1)}});
+                else {
+                    const point3 c{small(), small(), small()};
+                    const bool t = irand(0, 1) == 1;
+                    const double k = irand(1, 4);
+                    cs.push_back({np(c.x + k * (t ? 1 : 0), c.y + k * (t ? 2 : 3), c.z + k * (t ? 2 : 4)), sphere3{c, k * (t ? 3 : 5)}});
+                }
+            }
+            auto truth = [](const ps& c) {
+                double p[3], cc[3];
+                arr(c.p, p); arr(c.s.center, cc);
+                return oracle::point_in_ball(p, cc, c.s.radius);
+            };
+            tiers("point_sphere", dist, cs, truth, [](auto tier, const ps& c) { return intersects<decltype(tier)>(c.p, c.s); });
+        }
+        {
+            struct bp { aabb3 b; point3 p; };
+            std::vector<bp> cs;
+            while (cs.size() < set_size) {
+                const aabb3 b = box(rp(), rp());
+                cs.push_back({b, near ? point3{b.max.x, b.min.y, (b.min.z + b.max.z) / 2} : rp()}); // on an edge when near
+            }
+            auto truth = [](const bp& c) {
+                double p[3], mn[3], mx[3];
+                arr(c.p, p); arr(c.b.min, mn); arr(c.b.max, mx);
+                return oracle::point_in_box(p, mn, mx);
+            };
+            tiers("aabb_point", dist, cs, truth, [](auto tier, const bp& c) { return intersects<decltype(tier)>(c.b, c.p); });
+        }
+        {
+            // segment x triangle: the ray sets, with the segment ending at origin + 1.5 direction
+            struct st { segment3 s; triangle3 t; };
+            std::vector<st> cs;
+            for (const auto& c : ray_triangle_set(near)) cs.push_back({segment3{c.r.origin, c.r.at(near ? 1.0 : 1.5)}, c.t});
+            auto truth = [](const st& c) {
+                double p[3], q[3], a[3], b[3], cc[3];
+                arr(c.s.a, p); arr(c.s.b, q); arr(c.t.a, a); arr(c.t.b, b); arr(c.t.c, cc);
+                return oracle::segment_triangle(p, q, a, b, cc);
+            };
+            tiers("segment_triangle", dist, cs, truth, [](auto tier, const st& c) { return intersects<decltype(tier)>(c.s, c.t); });
+        }
+        {
             const auto cs = aabb_aabb_set(near);
             auto truth = [](const bb& c) {
                 double a0[3], a1[3], b0[3], b1[3];
