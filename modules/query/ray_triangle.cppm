@@ -264,30 +264,108 @@ template <class K>
     return ray_triangle_hit{t, r.at(t), cross(e1, e2), 1.0 - u - v, u, v};
 }
 
-// Exact hit values (correctly rounded) for a hit with n.d != 0. A coplanar or degenerate
-// configuration has no unique hit parameter; it reports the origin's t = 0 when the origin is
-// on the triangle and otherwise the first point, computed by the 2D edge crossing.
+// First contact of a linear object lying in the triangle's plane (n.d == 0), or of any linear
+// object with a degenerate (collinear) triangle: the smallest t >= 0 over the origin (t = 0 when
+// it lies on the triangle) and the edges' crossings, all compared exactly as rationals num/den.
+struct contact {
+    arith::dyadic num, den; // t = num / den, den > 0
+    bool found = false;
+};
+using dv3 = arith::v3<arith::dyadic>;
+[[nodiscard]] constexpr arith::dyadic pick_d(const dv3& v, int axis) { return axis == 0 ? v.x : (axis == 1 ? v.y : v.z); }
+[[nodiscard]] constexpr arith::dyadic cross2_d(const dv3& a, const dv3& b, int axis) { // along `axis` dropped
+    const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+    return pick_d(a, i) * pick_d(b, j) - pick_d(a, j) * pick_d(b, i);
+}
+[[nodiscard]] constexpr dv3 scaled(const dv3& v, const arith::dyadic& k) { return {v.x * k, v.y * k, v.z * k}; }
+constexpr void keep_first(contact& best, arith::dyadic num, arith::dyadic den) {
+    if (arith::sign_of(den) < 0) { num = -num; den = -den; }
+    if (!best.found || arith::sign_of(num * best.den - best.num * den) < 0) best = {num, den, true};
+}
+// Contact of o + t d (t >= 0) with the edge [P, Q], in the projection dropping `axis`, which
+// must be injective on a plane holding the ray and the edge.
+constexpr void edge_contact(contact& best, const dv3& O, const dv3& D, const dv3& P, const dv3& Q, int axis) {
+    using arith::sign_of;
+    const int sp = sign_of(cross2_d(D, P - O, axis)), sq = sign_of(cross2_d(D, Q - O, axis));
+    if (sp != 0 && sp == sq) return;
+    if (sp == 0 && sq == 0) { // on the ray's line: the nearer end point, or the origin itself
+        const auto tp = arith::dot(P - O, D), tq = arith::dot(Q - O, D), dd = arith::dot(D, D);
+        const int a = sign_of(tp), b = sign_of(tq);
+        if (a < 0 && b < 0) return;
+        if (a < 0 || b < 0) { keep_first(best, arith::dyadic{}, dd); return; }
+        keep_first(best, sign_of(tp - tq) <= 0 ? tp : tq, dd);
+        return;
+    }
+    const auto num = cross2_d(P - O, Q - P, axis), den = cross2_d(D, Q - P, axis);
+    if (sign_of(num) * sign_of(den) < 0) return; // crossing at t < 0
+    keep_first(best, num, den);
+}
+
+// Exact hit values, correctly rounded: t, the point, the normal (b - a) x (c - a) and the
+// barycentrics (zero for a degenerate triangle, which has none). Requires an intersection.
 [[nodiscard]] constexpr ray_triangle_hit linear_triangle_values(const linear3& s, const triangle3& tri) {
     using arith::dyadic;
-    auto D3 = [](point3 p) { return arith::v3<dyadic>{arith::to_dyadic(p.x), arith::to_dyadic(p.y), arith::to_dyadic(p.z)}; };
+    using arith::sign_of;
+    auto D3 = [](point3 p) { return dv3{arith::to_dyadic(p.x), arith::to_dyadic(p.y), arith::to_dyadic(p.z)}; };
     const auto O = D3(s.o), A = D3(tri.a), B = D3(tri.b), C = D3(tri.c);
     const auto Dv = s.kind == extent::segment ? D3(s.q) - O
-                                               : arith::v3<dyadic>{arith::to_dyadic(s.d.x), arith::to_dyadic(s.d.y), arith::to_dyadic(s.d.z)};
+                                               : dv3{arith::to_dyadic(s.d.x), arith::to_dyadic(s.d.y), arith::to_dyadic(s.d.z)};
     const auto n = arith::cross(B - A, C - A);
     const dyadic nd = arith::dot(n, Dv);
     const vec3 normal{arith::to_double(n.x), arith::to_double(n.y), arith::to_double(n.z)};
-    if (arith::sign_of(nd) == 0) {
-        return ray_triangle_hit{0.0, s.o, normal, 0.0, 0.0, 0.0};
+    contact first;
+    int axis = -1; // projection for barycentrics: n_axis != 0
+    for (int k = 0; k < 3 && axis < 0; ++k)
+        if (sign_of(pick_d(n, k)) != 0) axis = k;
+    if (sign_of(nd) != 0) {
+        first = {arith::dot(n, A - O), nd, true}; // t = n.(a - o) / n.d
+        if (sign_of(first.den) < 0) { first.num = -first.num; first.den = -first.den; }
+    } else if (s.is_point()) {
+        first = {dyadic{}, arith::to_dyadic(1.0), true};
+    } else if (axis >= 0) {
+        // Coplanar with a proper triangle: t = 0 if the origin is on it, else the first edge crossing.
+        const int orient = sign_of(pick_d(n, axis));
+        const bool inside = sign_of(cross2_d(B - A, O - A, axis)) != -orient && sign_of(cross2_d(C - B, O - B, axis)) != -orient &&
+                            sign_of(cross2_d(A - C, O - C, axis)) != -orient;
+        if (inside) first = {dyadic{}, arith::to_dyadic(1.0), true};
+        else {
+            edge_contact(first, O, Dv, A, B, axis);
+            edge_contact(first, O, Dv, B, C, axis);
+            edge_contact(first, O, Dv, C, A, axis);
+        }
+    } else {
+        // Degenerate triangle: its edges, each in a plane it shares with the ray.
+        const dv3 edges[3][2] = {{A, B}, {B, C}, {C, A}};
+        for (const auto& e : edges) {
+            if (sign_of(arith::det3(Dv, e[0] - O, e[1] - O)) != 0) continue; // not coplanar
+            const auto m = arith::cross(Dv, e[1] - e[0]);
+            int k = -1;
+            for (int i = 0; i < 3 && k < 0; ++i)
+                if (sign_of(pick_d(m, i)) != 0) k = i;
+            if (k >= 0) { edge_contact(first, O, Dv, e[0], e[1], k); continue; }
+            const auto off = arith::cross(Dv, e[0] - O); // parallel: on the ray's line?
+            if (sign_of(off.x) != 0 || sign_of(off.y) != 0 || sign_of(off.z) != 0) continue;
+            for (int i = 0; i < 3; ++i) // collinear: any projection keeps the 1D order
+                if (sign_of(pick_d(Dv, (i + 1) % 3)) != 0 || sign_of(pick_d(Dv, (i + 2) % 3)) != 0) {
+                    edge_contact(first, O, Dv, e[0], e[1], i);
+                    break;
+                }
+        }
     }
-    const dyadic num = arith::dot(n, A - O);
-    const double t = arith::quotient(num, nd);
-    const dyadic wa = arith::det3(Dv, B - O, C - O);
-    const dyadic wb = arith::det3(Dv, C - O, A - O);
-    const dyadic wc = arith::det3(Dv, A - O, B - O);
-    // point_i = o_i + (num / nd) d_i = (o_i nd + num d_i) / nd
-    const point3 p{arith::quotient(O.x * nd + num * Dv.x, nd), arith::quotient(O.y * nd + num * Dv.y, nd),
-                   arith::quotient(O.z * nd + num * Dv.z, nd)};
-    return ray_triangle_hit{t, p, normal, arith::quotient(wa, nd), arith::quotient(wb, nd), arith::quotient(wc, nd)};
+    if (!first.found) return ray_triangle_hit{0.0, s.o, normal, 0.0, 0.0, 0.0}; // not reached when intersecting
+    const dyadic& num = first.num;
+    const dyadic& den = first.den;
+    const double t = arith::quotient(num, den);
+    // point = o + (num / den) d = (o den + num d) / den
+    const dv3 Pn = scaled(O, den) + scaled(Dv, num);
+    const point3 p{arith::quotient(Pn.x, den), arith::quotient(Pn.y, den), arith::quotient(Pn.z, den)};
+    if (axis < 0) return ray_triangle_hit{t, p, normal, 0.0, 0.0, 0.0};
+    // Barycentrics: signed areas in the projection dropping `axis`, scaled by den^2.
+    const dyadic area = cross2_d(B - A, C - A, axis) * den * den;
+    const dv3 Ad = scaled(A, den), Bd = scaled(B, den), Cd = scaled(C, den);
+    return ray_triangle_hit{t, p, normal, arith::quotient(cross2_d(Bd - Pn, Cd - Pn, axis), area),
+                            arith::quotient(cross2_d(Pn - Ad, Cd - Ad, axis), area),
+                            arith::quotient(cross2_d(Bd - Ad, Pn - Ad, axis), area)};
 }
 
 } // namespace incidence::pair

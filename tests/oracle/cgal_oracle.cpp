@@ -108,11 +108,14 @@ bool is_rounded_ray_triangle_t(const double o[3], const double d[3], const doubl
                                const double c[3], double t) {
     const auto res = CGAL::intersection(K::Ray_3(P(o), V(d)), K::Triangle_3(P(a), P(b), P(c)));
     if (!res) return false;
-    const K::Point_3* p = boost::get<K::Point_3>(&*res);
-    if (!p) return true; // segment result (coplanar): no unique t to check
     const K::Vector_3 dv = V(d);
-    const FT tt = ((*p - P(o)) * dv) / (dv * dv);
-    return nearest(exact(tt), t);
+    auto param = [&](const K::Point_3& q) { return FT(((q - P(o)) * dv) / (dv * dv)); };
+    if (const K::Point_3* p = boost::get<K::Point_3>(&*res)) return nearest(exact(param(*p)), t);
+    // Coplanar: the intersection is a segment; the first contact is its nearer end point.
+    const K::Segment_3* sg = boost::get<K::Segment_3>(&*res);
+    if (!sg) return false;
+    const FT t0 = param(sg->source()), t1 = param(sg->target());
+    return nearest(exact(t0 < t1 ? t0 : t1), t);
 }
 bool is_rounded_point_box_sqdist(const double p[3], const double mn[3], const double mx[3], bool farthest, double x) {
     FT s = 0;

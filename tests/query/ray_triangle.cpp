@@ -90,6 +90,24 @@ TEST_CASE("ray_triangle: fixtures (closed triangle, edges and vertices count)", 
     CHECK_FALSE(intersects(ray3{{2.5, 0, 1}, {0, 0, -1}}, S));
     CHECK(intersects(ray3{{-1, 0, 0}, {1, 0, 0}}, S));       // collinear
     CHECK(intersects(ray3{{1, 1, 1}, {0, -1, -1}}, triangle3{{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}));
+    // coplanar hits report the first contact, not the origin
+    const auto cp = intersection(ray3{{-1, 0.25, 0}, {4, 0, 0}}, T);
+    REQUIRE(cp);
+    CHECK(cp->t == 0.25);
+    CHECK(cp->point == point3{0, 0.25, 0});
+    CHECK(cp->u == 0.75);
+    CHECK(cp->v == 0.0);
+    CHECK(cp->w == 0.25);
+    const auto inside = intersection(ray3{{0.25, 0.25, 0}, {1, 0, 0}}, T);
+    REQUIRE(inside);
+    CHECK(inside->t == 0.0);
+    const auto along = intersection(ray3{{3, 0, 0}, {-1, 0, 0}}, T); // along an edge, entering at a vertex
+    REQUIRE(along);
+    CHECK(along->t == 2.0);
+    const auto seg = intersection(ray3{{1.5, 1, 1}, {0, -1, -1}}, S); // degenerate triangle: its hull
+    REQUIRE(seg);
+    CHECK(seg->t == 1.0);
+    CHECK(seg->point == point3{1.5, 0, 0});
     // a zero direction is the origin point
     CHECK(intersects(ray3{{0.25, 0.25, 0}, {0, 0, 0}}, T));
     CHECK_FALSE(intersects(ray3{{0.25, 0.25, 1}, {0, 0, 0}}, T));
@@ -112,7 +130,7 @@ TEST_CASE("ray_triangle: exact hit values are correctly rounded", "[ray_triangle
         // barycentrics sum to 1 within rounding, and the point matches t
         CHECK(std::fabs(h->u + h->v + h->w - 1.0) <= 0x1p-50 * (std::fabs(h->u) + std::fabs(h->v) + std::fabs(h->w)) + 0x1p-1000);
     }
-    std::printf("[cases] ray_triangle exact t: %ld hits checked, %ld not correctly rounded\n", checked, bad);
+    std::printf("[cases] ray_triangle exact t: %ld hits checked (coplanar ones by their first contact), %ld not correctly rounded\n", checked, bad);
     CHECK(bad == 0);
 }
 
@@ -150,4 +168,38 @@ TEST_CASE("ray_triangle: approximate tier is watertight on shared edges", "[ray_
     std::printf("[cases] ray_triangle shared-edge rays: %ld; watertight misses both %ld; Moeller-Trumbore misses both %ld\n",
                 n, watertight_miss, mt_miss);
     CHECK(watertight_miss == 0);
+}
+
+TEST_CASE("ray_triangle: coplanar rays report their first contact, correctly rounded", "[ray_triangle][oracle]") {
+    // Exactly coplanar configurations (dyadic coordinates, exact power-of-two scaling, no
+    // nudges): CGAL's intersection is then a segment, and t must be its nearer end, rounded.
+    support::rng r(support::seed() + 11);
+    long hits = 0, bad = 0;
+    for (long i = 0; i < support::cases(20000); ++i) {
+        using support::small;
+        const double A[3] = {small(r), small(r), small(r)}, B[3] = {small(r), small(r), small(r)}, C[3] = {small(r), small(r), small(r)};
+        const double u = r.integer(-8, 8) * 0.25, v = r.integer(-8, 8) * 0.25, du = r.integer(-4, 4) * 0.5, dv = r.integer(-4, 4) * 0.5;
+        const int k = r.integer(-200, 200);
+        auto P = [&](double a, double b, double c) { return point3{std::ldexp(a, k), std::ldexp(b, k), std::ldexp(c, k)}; };
+        const triangle3 t{P(A[0], A[1], A[2]), P(B[0], B[1], B[2]), P(C[0], C[1], C[2])};
+        double O[3], D[3];
+        for (int j = 0; j < 3; ++j) {
+            O[j] = A[j] + u * (B[j] - A[j]) + v * (C[j] - A[j]);
+            D[j] = du * (B[j] - A[j]) + dv * (C[j] - A[j]);
+        }
+        const ray3 ray{P(O[0], O[1], O[2]), vec3{std::ldexp(D[0], k), std::ldexp(D[1], k), std::ldexp(D[2], k)}};
+        if (skip(ray, t)) continue;
+        const auto h = intersection(ray, t);
+        if (h.has_value() != truth(ray, t)) { ++bad; continue; }
+        if (!h) continue;
+        ++hits;
+        double o[3], d[3], a[3], b[3], c[3];
+        arr(ray.origin, o); arr(ray.direction, d); arr(t.a, a); arr(t.b, b); arr(t.c, c);
+        if (!oracle::is_rounded_ray_triangle_t(o, d, a, b, c, h->t) && ++bad <= 5)
+            std::printf("  coplanar t %a wrong: %s\n", h->t, describe(ray, t).c_str());
+        if (std::fabs(h->u + h->v + h->w - 1.0) > 0x1p-50) ++bad;
+    }
+    std::printf("[cases] ray_triangle coplanar first contact: %ld hits checked, %ld wrong\n", hits, bad);
+    CHECK(hits > 1000);
+    CHECK(bad == 0);
 }
