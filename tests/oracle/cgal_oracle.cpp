@@ -117,6 +117,18 @@ bool is_rounded_ray_triangle_t(const double o[3], const double d[3], const doubl
     const FT t0 = param(sg->source()), t1 = param(sg->target());
     return nearest(exact(t0 < t1 ? t0 : t1), t);
 }
+bool is_rounded_segment_triangle_t(const double p[3], const double q[3], const double a[3], const double b[3],
+                                   const double c[3], double t) {
+    const auto res = CGAL::intersection(K::Segment_3(P(p), P(q)), K::Triangle_3(P(a), P(b), P(c)));
+    if (!res) return false;
+    const K::Vector_3 dv = P(q) - P(p);
+    auto param = [&](const K::Point_3& x) { return FT(((x - P(p)) * dv) / (dv * dv)); };
+    if (const K::Point_3* x = boost::get<K::Point_3>(&*res)) return nearest(exact(param(*x)), t);
+    const K::Segment_3* sg = boost::get<K::Segment_3>(&*res);
+    if (!sg) return false;
+    const FT t0 = param(sg->source()), t1 = param(sg->target());
+    return nearest(exact(t0 < t1 ? t0 : t1), t);
+}
 bool is_rounded_point_box_sqdist(const double p[3], const double mn[3], const double mx[3], bool farthest, double x) {
     FT s = 0;
     for (int i = 0; i < 3; ++i) {

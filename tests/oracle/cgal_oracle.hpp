@@ -27,6 +27,9 @@ bool ray_ball(const double o[3], const double d[3], const double c[3], double r)
 // Is `x` the correctly rounded (nearest, ties to even) value of the exact quantity?
 bool is_rounded_ray_triangle_t(const double o[3], const double d[3], const double a[3], const double b[3],
                                const double c[3], double t);
+// Same for a segment p -> q: t = (x - p).(q - p) / |q - p|^2 of the first contact.
+bool is_rounded_segment_triangle_t(const double p[3], const double q[3], const double a[3], const double b[3],
+                                   const double c[3], double t);
 bool is_rounded_point_box_sqdist(const double p[3], const double mn[3], const double mx[3], bool farthest, double x);
 bool is_rounded_ray_box_t(const double o[3], const double d[3], const double mn[3], const double mx[3], double t_enter,
                           double t_exit);

@@ -77,3 +77,22 @@ TEST_CASE("segment_triangle: oracle, random", "[segment_triangle][oracle]") {
 TEST_CASE("segment_triangle: oracle, near-degenerate", "[segment_triangle][oracle]") {
     support::run_oracle("segment_triangle near-degenerate", support::cases(100000), approx_bound, near_case, truth, skip, describe);
 }
+
+TEST_CASE("segment_triangle: exact first contact t is correctly rounded", "[segment_triangle][oracle]") {
+    support::rng r(support::seed() + 12);
+    long checked = 0, bad = 0;
+    for (long i = 0; i < support::cases(40000); ++i) {
+        auto [s, t] = (i % 2) ? near_case(r) : random_case(r);
+        if (skip(s, t)) continue;
+        const auto h = intersection(s, t);
+        if (!h) continue;
+        double p[3], q[3], a[3], b[3], c[3];
+        arr(s.a, p); arr(s.b, q); arr(t.a, a); arr(t.b, b); arr(t.c, c);
+        ++checked;
+        if (!oracle::is_rounded_segment_triangle_t(p, q, a, b, c, h->t) && ++bad <= 5)
+            std::printf("  t %a not correctly rounded: %s\n", h->t, describe(s, t).c_str());
+        if (!(h->t >= 0.0 && h->t <= 1.0)) ++bad;
+    }
+    std::printf("[cases] segment_triangle exact t: %ld hits checked, %ld wrong\n", checked, bad);
+    CHECK(bad == 0);
+}
