@@ -32,7 +32,7 @@ setup() {
     if [ ${#from_backports[@]} -gt 0 ] && ! grep -rqs "bookworm-backports" /etc/apt/sources.list /etc/apt/sources.list.d/; then
         echo "deb http://deb.debian.org/debian bookworm-backports main" | as_root tee /etc/apt/sources.list.d/bookworm-backports.list >/dev/null
     fi
-    as_root apt-get update -qq
+    as_root apt-get update -qq || echo "setup: apt-get update reported errors (a third-party source?); continuing"
     export DEBIAN_FRONTEND=noninteractive
     if [ ${#missing[@]} -gt 0 ]; then as_root apt-get install -y -qq "${missing[@]}" >/dev/null; fi
     if [ ${#from_backports[@]} -gt 0 ]; then as_root apt-get install -y -qq -t bookworm-backports "${from_backports[@]}" >/dev/null; fi
