@@ -200,6 +200,6 @@ TEST_CASE("ray_triangle: coplanar rays report their first contact, correctly rou
         if (std::fabs(h->u + h->v + h->w - 1.0) > 0x1p-50) ++bad;
     }
     std::printf("[cases] ray_triangle coplanar first contact: %ld hits checked, %ld wrong\n", hits, bad);
-    CHECK(hits > 1000);
+    CHECK(hits > support::cases(20000) / 20); // the generator must actually produce coplanar hits
     CHECK(bad == 0);
 }
