@@ -8,21 +8,10 @@
 #include <cstdlib>
 #include <cstring>
 import incidence;
+#include "contracts.hpp"
 
 using namespace incidence;
 
-namespace {
-template <class A, class B>
-void contracts(const A& x, const B& y, bool truth) {
-    const bool e = intersects<exact>(x, y);
-    if (e != truth) std::abort();
-    if (intersects<exact>(y, x) != e) std::abort();
-    if (truth && !intersects<conservative>(x, y)) std::abort();
-    if (!truth && intersects<aggressive>(x, y)) std::abort();
-    const certainty c = classify(x, y);
-    if (c != certainty::uncertain && (c == certainty::yes) != truth) std::abort();
-}
-} // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     double v[15] = {};

@@ -174,8 +174,14 @@ bool is_rounded_ray_ball_t(const double o[3], const double d[3], const double c[
     auto f = [&](const Q& t) { return Q(a * t * t + 2 * b * t + cc); }; // a value, not a gmpxx expression
     auto le = [&](const Q& y) { return a * y + b >= 0 || f(y) <= 0; }; // t1 <= y
     auto lt = [&](const Q& y) { return a * y + b > 0 || f(y) < 0; };   // t1 < y
-    const Q mp = (Q(x) + Q(std::nextafter(x, INFINITY))) / 2;
-    const Q mm = (Q(x) + Q(std::nextafter(x, -INFINITY))) / 2;
+    // Around the top of the range the midpoint above DBL_MAX is DBL_MAX + 2^970; beyond it t1
+    // rounds to infinity.
+    const Q top = Q(0x1.fffffffffffffp1023) + Q(0x1p970);
+    if (std::isinf(x)) return x > 0 && !lt(top);
+    if (std::isnan(x)) return false;
+    const double up = std::nextafter(x, INFINITY), down = std::nextafter(x, -INFINITY);
+    const Q mp = std::isinf(up) ? top : Q((Q(x) + Q(up)) / 2);
+    const Q mm = std::isinf(down) ? Q(-top) : Q((Q(x) + Q(down)) / 2);
     std::uint64_t bits;
     std::memcpy(&bits, &x, 8);
     const bool even = (bits & 1u) == 0;

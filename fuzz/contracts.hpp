@@ -1,0 +1,16 @@
+// The tier contracts every differential harness enforces; any breach aborts. Include after
+// `import incidence;`.
+#pragma once
+#include <cstdlib>
+
+template <class A, class B>
+void contracts(const A& x, const B& y, bool truth) {
+    using namespace incidence;
+    const bool e = intersects<exact>(x, y);
+    if (e != truth) std::abort();
+    if (intersects<exact>(y, x) != e) std::abort();
+    if (truth && !intersects<conservative>(x, y)) std::abort();
+    if (!truth && intersects<aggressive>(x, y)) std::abort();
+    const certainty c = classify(x, y);
+    if (c != certainty::uncertain && (c == certainty::yes) != truth) std::abort();
+}

@@ -1,0 +1,69 @@
+// The sphere and box pairs: point_sphere, sphere_sphere (intersects, contains), aabb_point,
+// aabb_aabb (intersects, contains, covers), aabb_ray and ray_sphere, differential against CGAL
+// Epeck on raw bit patterns. Exact answers must match; conservative/aggressive/classify keep
+// their contracts; both argument orders agree; exact t values of ray hits are correctly
+// rounded. Every call must survive NaN, infinities and subnormals. Any finding aborts.
+#include "../tests/oracle/cgal_oracle.hpp"
+#include "replay.hpp"
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+import incidence;
+#include "contracts.hpp"
+
+using namespace incidence;
+
+namespace {
+void arr(point3 p, double* o) { o[0] = p.x; o[1] = p.y; o[2] = p.z; }
+aabb3 ordered(point3 a, point3 b) {
+    return {{std::fmin(a.x, b.x), std::fmin(a.y, b.y), std::fmin(a.z, b.z)}, {std::fmax(a.x, b.x), std::fmax(a.y, b.y), std::fmax(a.z, b.z)}};
+}
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    double v[16] = {};
+    std::memcpy(v, data, size < sizeof v ? size : sizeof v);
+    const point3 p{v[0], v[1], v[2]}, q{v[3], v[4], v[5]}, c{v[6], v[7], v[8]}, e{v[9], v[10], v[11]};
+    const double r1 = v[12], r2 = v[13];
+    const ray3 ray{p, vec3{v[3], v[4], v[5]}};
+    const sphere3 s1{c, r1}, s2{e, r2};
+    const aabb3 b1{c, e}, b2{p, q}; // unchecked: may be inverted or NaN
+    // Every tier and every find must finish on any bits.
+    (void)intersects<approximate>(ray, s1);
+    (void)intersects<approximate>(b1, ray);
+    (void)method::aabb_ray_woo(b1, ray);
+    (void)method::ray_sphere_algebraic(ray, s1);
+    (void)intersection(ray, s1);
+    (void)intersection(b1, ray);
+    (void)intersection<approximate>(b1, ray);
+    (void)covers(b1, b2, b1);
+    (void)squared_distance(b1, p);
+    (void)max_squared_distance<conservative>(b1, p);
+    (void)contains<aggressive>(s1, s2);
+    bool finite = true;
+    for (double x : v) finite = finite && std::isfinite(x);
+    if (!finite) return 0;
+    double P[3], Q[3], C[3], E[3];
+    arr(p, P); arr(q, Q); arr(c, C); arr(e, E);
+    // balls need r >= 0 (a checked make() refuses negative radii)
+    const sphere3 a{c, std::fabs(r1)}, b{e, std::fabs(r2)};
+    contracts(p, a, oracle::point_in_ball(P, C, a.radius));
+    contracts(a, b, oracle::ball_ball(C, a.radius, E, b.radius));
+    if (contains(a, b) != oracle::ball_contains_ball(C, a.radius, E, b.radius)) std::abort();
+    const aabb3 box = ordered(c, e), other = ordered(p, q);
+    double mn[3], mx[3], omn[3], omx[3];
+    arr(box.min, mn); arr(box.max, mx); arr(other.min, omn); arr(other.max, omx);
+    contracts(box, p, oracle::point_in_box(P, mn, mx));
+    contracts(box, other, oracle::box_box(mn, mx, omn, omx));
+    if (contains(box, other) != oracle::box_contains_box(mn, mx, omn, omx)) std::abort();
+    if (!oracle::is_rounded_point_box_sqdist(P, mn, mx, false, squared_distance(box, p)) && std::isfinite(squared_distance(box, p)))
+        std::abort();
+    if (!(ray.direction == vec3{0, 0, 0})) {
+        contracts(box, ray, oracle::ray_box(P, Q, mn, mx));
+        contracts(ray, a, oracle::ray_ball(P, Q, C, a.radius));
+        if (const auto h = intersection(box, ray); h && !oracle::is_rounded_ray_box_t(P, Q, mn, mx, h->t_enter, h->t_exit))
+            std::abort();
+        if (const auto h = intersection(ray, a); h && !oracle::is_rounded_ray_ball_t(P, Q, C, a.radius, h->t)) std::abort();
+    }
+    return 0;
+}
