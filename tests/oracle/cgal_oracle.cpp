@@ -104,30 +104,28 @@ bool ray_ball(const double o[3], const double d[3], const double c[3], double r)
     return CGAL::squared_distance(K::Ray_3(P(o), V(d)), P(c)) <= FT(r) * FT(r);
 }
 
-bool is_rounded_ray_triangle_t(const double o[3], const double d[3], const double a[3], const double b[3],
-                               const double c[3], double t) {
-    const auto res = CGAL::intersection(K::Ray_3(P(o), V(d)), K::Triangle_3(P(a), P(b), P(c)));
+namespace {
+// t of the first contact along from + t dv, for an intersection that is a point or (coplanar)
+// a segment, whose nearer end point is the first contact.
+template <class Result>
+bool first_contact_rounded(const Result& res, const K::Point_3& from, const K::Vector_3& dv, double t) {
     if (!res) return false;
-    const K::Vector_3 dv = V(d);
-    auto param = [&](const K::Point_3& q) { return FT(((q - P(o)) * dv) / (dv * dv)); };
-    if (const K::Point_3* p = boost::get<K::Point_3>(&*res)) return nearest(exact(param(*p)), t);
-    // Coplanar: the intersection is a segment; the first contact is its nearer end point.
-    const K::Segment_3* sg = boost::get<K::Segment_3>(&*res);
-    if (!sg) return false;
-    const FT t0 = param(sg->source()), t1 = param(sg->target());
-    return nearest(exact(t0 < t1 ? t0 : t1), t);
-}
-bool is_rounded_segment_triangle_t(const double p[3], const double q[3], const double a[3], const double b[3],
-                                   const double c[3], double t) {
-    const auto res = CGAL::intersection(K::Segment_3(P(p), P(q)), K::Triangle_3(P(a), P(b), P(c)));
-    if (!res) return false;
-    const K::Vector_3 dv = P(q) - P(p);
-    auto param = [&](const K::Point_3& x) { return FT(((x - P(p)) * dv) / (dv * dv)); };
+    auto param = [&](const K::Point_3& x) { return FT(((x - from) * dv) / (dv * dv)); };
     if (const K::Point_3* x = boost::get<K::Point_3>(&*res)) return nearest(exact(param(*x)), t);
     const K::Segment_3* sg = boost::get<K::Segment_3>(&*res);
     if (!sg) return false;
     const FT t0 = param(sg->source()), t1 = param(sg->target());
     return nearest(exact(t0 < t1 ? t0 : t1), t);
+}
+} // namespace
+bool is_rounded_ray_triangle_t(const double o[3], const double d[3], const double a[3], const double b[3],
+                               const double c[3], double t) {
+    return first_contact_rounded(CGAL::intersection(K::Ray_3(P(o), V(d)), K::Triangle_3(P(a), P(b), P(c))), P(o), V(d), t);
+}
+bool is_rounded_segment_triangle_t(const double p[3], const double q[3], const double a[3], const double b[3],
+                                   const double c[3], double t) {
+    return first_contact_rounded(CGAL::intersection(K::Segment_3(P(p), P(q)), K::Triangle_3(P(a), P(b), P(c))), P(p),
+                                 P(q) - P(p), t);
 }
 bool is_rounded_point_box_sqdist(const double p[3], const double mn[3], const double mx[3], bool farthest, double x) {
     FT s = 0;

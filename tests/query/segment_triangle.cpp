@@ -79,20 +79,14 @@ TEST_CASE("segment_triangle: oracle, near-degenerate", "[segment_triangle][oracl
 }
 
 TEST_CASE("segment_triangle: exact first contact t is correctly rounded", "[segment_triangle][oracle]") {
-    support::rng r(support::seed() + 12);
-    long checked = 0, bad = 0;
-    for (long i = 0; i < support::cases(40000); ++i) {
-        auto [s, t] = (i % 2) ? near_case(r) : random_case(r);
-        if (skip(s, t)) continue;
-        const auto h = intersection(s, t);
-        if (!h) continue;
-        double p[3], q[3], a[3], b[3], c[3];
-        arr(s.a, p); arr(s.b, q); arr(t.a, a); arr(t.b, b); arr(t.c, c);
-        ++checked;
-        if (!oracle::is_rounded_segment_triangle_t(p, q, a, b, c, h->t) && ++bad <= 5)
-            std::printf("  t %a not correctly rounded: %s\n", h->t, describe(s, t).c_str());
-        if (!(h->t >= 0.0 && h->t <= 1.0)) ++bad;
-    }
-    std::printf("[cases] segment_triangle exact t: %ld hits checked, %ld wrong\n", checked, bad);
-    CHECK(bad == 0);
+    support::run_values("segment_triangle exact t", support::cases(40000), 12, near_case, random_case,
+                        [](const segment3& s, const triangle3& t) -> std::optional<bool> {
+                            if (skip(s, t)) return std::nullopt;
+                            const auto h = intersection(s, t);
+                            if (!h) return std::nullopt;
+                            double p[3], q[3], a[3], b[3], c[3];
+                            arr(s.a, p); arr(s.b, q); arr(t.a, a); arr(t.b, b); arr(t.c, c);
+                            return oracle::is_rounded_segment_triangle_t(p, q, a, b, c, h->t) && h->t >= 0.0 && h->t <= 1.0;
+                        },
+                        describe);
 }

@@ -1,6 +1,7 @@
 // The tier-contract check shared by every oracle test. Include after testing.hpp.
 #pragma once
 #include <functional>
+#include <optional>
 #include <utility>
 
 namespace support {
@@ -77,6 +78,24 @@ tally run_oracle(const char* name, long n, double bound, Gen gen, Truth truth, S
     CHECK(t.classify_wrong == 0);
     CHECK(t.approx_outside_bound == 0);
     return t;
+}
+
+// Checks the values of exact hits: n cases alternating the near-degenerate and the random
+// generator; check(a, b) returns std::nullopt when there is no hit, else whether its values are
+// right (correctly rounded against the oracle).
+template <class Near, class Random, class Check, class Describe>
+void run_values(const char* name, long n, std::uint64_t seed_offset, Near near, Random random, Check check, Describe describe) {
+    rng r(seed() + seed_offset);
+    long checked = 0, bad = 0;
+    for (long i = 0; i < n; ++i) {
+        auto [a, b] = (i % 2) ? near(r) : random(r);
+        const std::optional<bool> ok = check(a, b);
+        if (!ok) continue;
+        ++checked;
+        if (!*ok && ++bad <= 5) std::printf("  wrong hit values: %s\n", describe(a, b).c_str());
+    }
+    std::printf("[cases] %s: %ld hits checked, %ld wrong\n", name, checked, bad);
+    CHECK(bad == 0);
 }
 
 } // namespace support
