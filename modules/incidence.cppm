@@ -5,3 +5,4 @@ export import incidence.arith;
 export import incidence.predicates;
 export import incidence.shapes;
 export import incidence.query;
+export import incidence.catalog;

@@ -18,6 +18,7 @@ export import :ray_sphere;
 export import :aabb_ray;
 export import :ray_triangle;
 export import :segment_triangle;
+export import :triangle_triangle;
 import incidence.core;
 import incidence.arith;
 import incidence.shapes;
@@ -174,6 +175,9 @@ namespace method {
 }
 [[nodiscard]] constexpr std::optional<ray_sphere_hit> ray_sphere_algebraic(const ray3& r, const sphere3& s) {
     return pair::ray_sphere_algebraic(r, s);
+}
+[[nodiscard]] constexpr bool triangle_triangle_sat(const triangle3& p, const triangle3& q) {
+    return pair::triangle_triangle_sat(p, q);
 }
 } // namespace method
 

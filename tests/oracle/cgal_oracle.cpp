@@ -76,6 +76,10 @@ bool ray_triangle(const double o[3], const double d[3], const double a[3], const
 bool segment_triangle(const double p[3], const double q[3], const double a[3], const double b[3], const double c[3]) {
     return CGAL::do_intersect(K::Segment_3(P(p), P(q)), K::Triangle_3(P(a), P(b), P(c)));
 }
+bool triangle_triangle(const double a[3], const double b[3], const double c[3], const double d[3], const double e[3],
+                       const double f[3]) {
+    return CGAL::do_intersect(K::Triangle_3(P(a), P(b), P(c)), K::Triangle_3(P(d), P(e), P(f)));
+}
 bool ray_box(const double o[3], const double d[3], const double mn[3], const double mx[3]) {
     return CGAL::do_intersect(K::Ray_3(P(o), V(d)), K::Iso_cuboid_3(P(mn), P(mx)));
 }
@@ -193,6 +197,19 @@ bool ray_triangle_epick(const double o[3], const double d[3], const double a[3],
 }
 bool ray_box_epick(const double o[3], const double d[3], const double mn[3], const double mx[3]) {
     return CGAL::do_intersect(KI::Ray_3(P<KI>(o), V<KI>(d)), KI::Iso_cuboid_3(P<KI>(mn), P<KI>(mx)));
+}
+bool segment_triangle_epick(const double p[3], const double q[3], const double a[3], const double b[3], const double c[3]) {
+    return CGAL::do_intersect(KI::Segment_3(P<KI>(p), P<KI>(q)), KI::Triangle_3(P<KI>(a), P<KI>(b), P<KI>(c)));
+}
+bool triangle_triangle_epick(const double a[3], const double b[3], const double c[3], const double d[3], const double e[3],
+                             const double f[3]) {
+    return CGAL::do_intersect(KI::Triangle_3(P<KI>(a), P<KI>(b), P<KI>(c)), KI::Triangle_3(P<KI>(d), P<KI>(e), P<KI>(f)));
+}
+bool box_box_epick(const double amn[3], const double amx[3], const double bmn[3], const double bmx[3]) {
+    return CGAL::do_intersect(KI::Iso_cuboid_3(P<KI>(amn), P<KI>(amx)), KI::Iso_cuboid_3(P<KI>(bmn), P<KI>(bmx)));
+}
+bool point_in_box_epick(const double p[3], const double mn[3], const double mx[3]) {
+    return !KI::Iso_cuboid_3(P<KI>(mn), P<KI>(mx)).has_on_unbounded_side(P<KI>(p));
 }
 int orient3d_epick(const double a[3], const double b[3], const double c[3], const double d[3]) {
     return -sgn(CGAL::orientation(P<KI>(a), P<KI>(b), P<KI>(c), P<KI>(d)));

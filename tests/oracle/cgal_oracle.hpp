@@ -15,6 +15,8 @@ int insphere(const double a[3], const double b[3], const double c[3], const doub
 bool triangle_is_degenerate(const double a[3], const double b[3], const double c[3]);
 bool ray_triangle(const double o[3], const double d[3], const double a[3], const double b[3], const double c[3]);
 bool segment_triangle(const double p[3], const double q[3], const double a[3], const double b[3], const double c[3]);
+bool triangle_triangle(const double a[3], const double b[3], const double c[3], const double d[3], const double e[3],
+                       const double f[3]); // both non-degenerate (CGAL's precondition)
 bool ray_box(const double o[3], const double d[3], const double mn[3], const double mx[3]);
 bool box_box(const double amn[3], const double amx[3], const double bmn[3], const double bmx[3]);
 bool point_in_box(const double p[3], const double mn[3], const double mx[3]);
@@ -40,6 +42,11 @@ bool is_rounded_ray_ball_t(const double o[3], const double d[3], const double c[
 // Epick (filtered, inexact constructions) versions for the benchmarks.
 bool ray_triangle_epick(const double o[3], const double d[3], const double a[3], const double b[3], const double c[3]);
 bool ray_box_epick(const double o[3], const double d[3], const double mn[3], const double mx[3]);
+bool segment_triangle_epick(const double p[3], const double q[3], const double a[3], const double b[3], const double c[3]);
+bool triangle_triangle_epick(const double a[3], const double b[3], const double c[3], const double d[3], const double e[3],
+                             const double f[3]);
+bool box_box_epick(const double amn[3], const double amx[3], const double bmn[3], const double bmx[3]);
+bool point_in_box_epick(const double p[3], const double mn[3], const double mx[3]);
 int orient3d_epick(const double a[3], const double b[3], const double c[3], const double d[3]);
 
 } // namespace oracle

@@ -1,0 +1,81 @@
+// incidence.catalog: the list of query families the library has, read by tools that must cover
+// every family (the audit, the README table): a new pair is added here once, next to its file.
+// Each family names its canonical argument types, its file in modules/query/, and the textbook
+// algorithms kept beside the four tiers for comparison. `signs_in_double` evaluates a family's
+// exact-tier sign algorithm in plain double (what the tiers cost without the filter).
+module;
+#include <array>
+#include <cstddef>
+#include <tuple>
+export module incidence.catalog;
+import incidence.core;
+import incidence.arith;
+import incidence.shapes;
+import incidence.query;
+
+export namespace incidence::catalog {
+
+template <class A, class B>
+struct alternative {
+    const char* name;   // short identifier, e.g. "moller_trumbore"
+    const char* source; // paper or book
+    bool (*test)(const A&, const B&);
+};
+
+template <class A, class B, std::size_t N>
+struct family {
+    using first_type = A;
+    using second_type = B;
+    const char* name; // modules/query/<name>.cppm
+    const char* approximate_method; // what the approximate tier runs
+    std::array<alternative<A, B>, N> alternatives;
+};
+
+template <class A, class B>
+[[nodiscard]] constexpr bool signs_in_double(const A& a, const B& b) {
+    arith::approx_kernel k;
+    return pair::intersects(k, a, b);
+}
+
+inline constexpr std::tuple families{
+    family<point3, sphere3, 0>{"point_sphere", "signs in double", {}},
+    family<sphere3, sphere3, 0>{"sphere_sphere", "signs in double", {}},
+    family<aabb3, point3, 0>{"aabb_point", "signs in double", {}},
+    family<aabb3, aabb3, 0>{"aabb_aabb", "signs in double", {}},
+    family<ray3, sphere3, 2>{
+        "ray_sphere",
+        "geometric (Akenine-Moeller et al., Real-Time Rendering)",
+        {{{"geometric", "Akenine-Moeller et al., Real-Time Rendering, optimized geometric method",
+           [](const ray3& r, const sphere3& s) { return method::ray_sphere_geometric(r, s).has_value(); }},
+          {"algebraic", "quadratic formula on |o + t d - c|^2 = r^2",
+           [](const ray3& r, const sphere3& s) { return method::ray_sphere_algebraic(r, s).has_value(); }}}}},
+    family<aabb3, ray3, 2>{"aabb_ray",
+                           "slab method (Kay and Kajiya 1986)",
+                           {{{"slab", "Kay and Kajiya, SIGGRAPH 1986; Williams et al., JGT 10(1) 2005",
+                              [](const aabb3& b, const ray3& r) { return method::aabb_ray_slab(b, r).has_value(); }},
+                             {"woo", "Woo, Graphics Gems (1990), Fast ray-box intersection",
+                              [](const aabb3& b, const ray3& r) { return method::aabb_ray_woo(b, r); }}}}},
+    family<ray3, triangle3, 2>{
+        "ray_triangle",
+        "watertight (Woop, Benthin and Wald 2013)",
+        {{{"watertight", "Woop, Benthin and Wald, JCGT 2(1), 2013",
+           [](const ray3& r, const triangle3& t) { return method::ray_triangle_watertight(r, t).has_value(); }},
+          {"moller_trumbore", "Moeller and Trumbore, JGT 2(1), 1997",
+           [](const ray3& r, const triangle3& t) { return method::ray_triangle_moller_trumbore(r, t).has_value(); }}}}},
+    family<segment3, triangle3, 0>{"segment_triangle", "signs in double", {}},
+    family<triangle3, triangle3, 1>{
+        "triangle_triangle",
+        "signs in double",
+        {{{"sat", "separating axes, Akenine-Moeller et al., Real-Time Rendering 4th ed., 22.12",
+           [](const triangle3& p, const triangle3& q) { return method::triangle_triangle_sat(p, q); }}}}},
+};
+
+inline constexpr std::size_t family_count = std::tuple_size_v<decltype(families)>;
+
+// Calls f(family) for every family, in the order above.
+template <class F>
+constexpr void for_each_family(F&& f) {
+    std::apply([&](const auto&... fam) { (f(fam), ...); }, families);
+}
+
+} // namespace incidence::catalog
