@@ -1,0 +1,128 @@
+// Recomputes one point of the audit's stability curves independently of the audit's truth: the
+// same generated cases (tools/audit/generators.hpp, same seed streams), with the true answer
+// from CGAL Epeck instead of the exact tier. Prints one JSON object:
+//   {"family": ..., "level": L, "skipped": n, "methods": {"name": [cases, wrong, fp, fn], ...}}
+// Usage: audit_recompute SEED CASES FAMILY_INDEX LEVEL      or      audit_recompute --families
+#include "../../oracle/cgal_oracle.hpp"
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+import incidence;
+#include "../../../tools/audit/generators.hpp"
+#include "../../../tools/audit/methods.hpp"
+
+using namespace incidence;
+
+namespace {
+void arr(point3 p, double* o) { o[0] = p.x, o[1] = p.y, o[2] = p.z; }
+void arr(vec3 p, double* o) { o[0] = p.x, o[1] = p.y, o[2] = p.z; }
+
+// CGAL Epeck truth; std::nullopt outside CGAL's preconditions (degenerate triangles).
+int truth(const point3& p, const sphere3& s) {
+    double q[3], c[3];
+    arr(p, q), arr(s.center, c);
+    return oracle::point_in_ball(q, c, s.radius);
+}
+int truth(const sphere3& a, const sphere3& b) {
+    double c[3], d[3];
+    arr(a.center, c), arr(b.center, d);
+    return oracle::ball_ball(c, a.radius, d, b.radius);
+}
+int truth(const aabb3& b, const point3& p) {
+    double q[3], mn[3], mx[3];
+    arr(p, q), arr(b.min, mn), arr(b.max, mx);
+    return oracle::point_in_box(q, mn, mx);
+}
+int truth(const aabb3& a, const aabb3& b) {
+    double p[3], q[3], r[3], s[3];
+    arr(a.min, p), arr(a.max, q), arr(b.min, r), arr(b.max, s);
+    return oracle::box_box(p, q, r, s);
+}
+int truth(const ray3& r, const sphere3& s) {
+    double o[3], d[3], c[3];
+    arr(r.origin, o), arr(r.direction, d), arr(s.center, c);
+    return oracle::ray_ball(o, d, c, s.radius);
+}
+int truth(const aabb3& b, const ray3& r) {
+    double o[3], d[3], mn[3], mx[3];
+    arr(r.origin, o), arr(r.direction, d), arr(b.min, mn), arr(b.max, mx);
+    return oracle::ray_box(o, d, mn, mx);
+}
+bool degenerate(const triangle3& t) {
+    double a[3], b[3], c[3];
+    arr(t.a, a), arr(t.b, b), arr(t.c, c);
+    return oracle::triangle_is_degenerate(a, b, c);
+}
+int truth(const ray3& r, const triangle3& t) {
+    if (degenerate(t)) return -1;
+    double o[3], d[3], a[3], b[3], c[3];
+    arr(r.origin, o), arr(r.direction, d), arr(t.a, a), arr(t.b, b), arr(t.c, c);
+    return oracle::ray_triangle(o, d, a, b, c);
+}
+int truth(const segment3& s, const triangle3& t) {
+    if (degenerate(t) || s.a == s.b) return -1;
+    double p[3], q[3], a[3], b[3], c[3];
+    arr(s.a, p), arr(s.b, q), arr(t.a, a), arr(t.b, b), arr(t.c, c);
+    return oracle::segment_triangle(p, q, a, b, c);
+}
+int truth(const triangle3& t, const triangle3& u) {
+    if (degenerate(t) || degenerate(u)) return -1;
+    double a[3], b[3], c[3], d[3], e[3], f[3];
+    arr(t.a, a), arr(t.b, b), arr(t.c, c), arr(u.a, d), arr(u.b, e), arr(u.c, f);
+    return oracle::triangle_triangle(a, b, c, d, e, f);
+}
+
+template <class Family>
+void recompute(const Family& fam, std::uint64_t seed, long cases, unsigned index, int level) {
+    using A = typename Family::first_type;
+    using B = typename Family::second_type;
+    const auto ms = audit::methods_of(fam);
+    std::vector<long> n(ms.size()), w(ms.size()), fp(ms.size()), fn(ms.size());
+    long skipped = 0;
+    for (unsigned s = 0; s < audit::setting_count; ++s) {
+        audit::rng r(audit::stream(seed, index, level, s));
+        for (long i = 0; i < cases; ++i) {
+            const auto [a, b] = audit::make_case<A, B>(r, level, audit::settings[s]);
+            const int t = truth(a, b);
+            if (t < 0) { ++skipped; continue; }
+            for (std::size_t m = 0; m < ms.size(); ++m) {
+                if (ms[m].kind == "peer" && !audit::peer_accepts(a, b)) continue;
+                const bool ans = ms[m].test(a, b);
+                ++n[m];
+                if (ans != (t == 1)) ++w[m], ++(ans ? fp[m] : fn[m]);
+            }
+        }
+    }
+    std::printf("{\"family\": \"%s\", \"level\": %d, \"skipped\": %ld, \"methods\": {", fam.name, level, skipped);
+    for (std::size_t m = 0; m < ms.size(); ++m)
+        std::printf("%s\"%s\": [%ld, %ld, %ld, %ld]", m ? ", " : "", ms[m].name.c_str(), n[m], w[m], fp[m], fn[m]);
+    std::printf("}}\n");
+}
+} // namespace
+
+int main(int argc, char** argv) {
+    if (argc == 2 && std::string(argv[1]) == "--families") {
+        std::printf("[");
+        bool first = true;
+        catalog::for_each_family([&](const auto& f) { std::printf("%s\"%s\"", first ? "" : ", ", f.name), first = false; });
+        std::printf("]\n");
+        return 0;
+    }
+    if (argc != 5) {
+        std::fprintf(stderr, "usage: audit_recompute SEED CASES FAMILY_INDEX LEVEL | --families\n");
+        return 2;
+    }
+    const auto seed = std::strtoull(argv[1], nullptr, 10);
+    const long cases = std::strtol(argv[2], nullptr, 10);
+    const auto index = unsigned(std::strtoul(argv[3], nullptr, 10));
+    const int level = int(std::strtol(argv[4], nullptr, 10));
+    if (index >= catalog::family_count || level < 0 || level >= audit::level_count) {
+        std::fprintf(stderr, "audit_recompute: family index or level out of range\n");
+        return 2;
+    }
+    unsigned i = 0;
+    catalog::for_each_family([&](const auto& f) {
+        if (i++ == index) recompute(f, seed, cases, index, level);
+    });
+    return 0;
+}

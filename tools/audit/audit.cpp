@@ -1,0 +1,602 @@
+// incidence-audit: measures, for every query family of incidence::catalog, where each method
+// starts to fail (stability), how fast it is for how much accuracy (tradeoff), and what a given
+// mesh scene needs (scene); writes audit.json (schema: tools/audit/audit.schema.json) and a
+// self-contained HTML report (charts drawn by tools/audit/report.py with matplotlib).
+//
+//   incidence-audit all [--scene FILE]   stability + tradeoff (+ scene)
+//   incidence-audit stability | tradeoff | scene FILE
+//   options: --out DIR (default audit-report) --cases N --seed S --reps R --rays N --no-report
+#include "../../tests/oracle/cgal_oracle.hpp"
+#include <algorithm>
+#include <chrono>
+#include <cstdarg>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <numeric>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <unistd.h>
+#include <vector>
+import incidence;
+#include "generators.hpp"
+#include "json.hpp"
+#include "mesh_io.hpp"
+#include "methods.hpp"
+
+using namespace incidence;
+
+namespace {
+
+struct options {
+    std::string command = "all";
+    std::string scene;
+    std::string out = "audit-report";
+    long cases = 200;   // per level and setting
+    long tradeoff_cases = 6000;
+    std::uint64_t seed = 20261122;
+    int reps = 5;
+    int rays = 16;      // camera rays per side
+    long pairs = 400000; // cap on near (non-adjacent) triangle pairs
+    bool report = true;
+};
+
+// --- progress on stderr, only when it is a terminal --------------------------------------------
+bool tty = false;
+void progress(const char* fmt, ...) {
+    if (!tty) return;
+    char buf[256];
+    va_list ap;
+    va_start(ap, fmt);
+    std::vsnprintf(buf, sizeof buf, fmt, ap);
+    va_end(ap);
+    std::fprintf(stderr, "\r\033[K%s", buf);
+    std::fflush(stderr);
+}
+void progress_done() {
+    if (tty) std::fprintf(stderr, "\r\033[K");
+}
+
+double now_ns() {
+    return std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+}
+std::string shape_name(const point3*) { return "point3"; }
+std::string shape_name(const sphere3*) { return "sphere3"; }
+std::string shape_name(const aabb3*) { return "aabb3"; }
+std::string shape_name(const ray3*) { return "ray3"; }
+std::string shape_name(const segment3*) { return "segment3"; }
+std::string shape_name(const triangle3*) { return "triangle3"; }
+
+struct counts {
+    long cases = 0, wrong = 0, false_positive = 0, false_negative = 0;
+    void add(bool answer, bool truth) {
+        ++cases;
+        if (answer != truth) {
+            ++wrong;
+            if (answer) ++false_positive;
+            else ++false_negative;
+        }
+    }
+};
+// A one-sided tier's promise: conservative never answers no to a true yes, aggressive never yes to a no.
+long violations(const std::string& name, const counts& c) {
+    if (name == "conservative") return c.false_negative;
+    if (name == "aggressive") return c.false_positive;
+    if (name == "exact") return c.wrong;
+    return 0;
+}
+
+void write_methods(audit::json& j, const auto& ms) {
+    j.key("methods").array();
+    for (const auto& m : ms) j.object().kv("name", m.name).kv("kind", m.kind).kv("source", m.source).end_object();
+    j.end_array();
+}
+
+// --- stability -------------------------------------------------------------------------------
+long total_violations = 0;
+
+template <class Family>
+void stability_family(audit::json& j, const Family& fam, unsigned index, const options& o) {
+    using A = typename Family::first_type;
+    using B = typename Family::second_type;
+    const auto ms = audit::methods_of(fam);
+    std::vector<std::vector<counts>> by_level(ms.size(), std::vector<counts>(audit::level_count));
+    std::vector<std::vector<counts>> by_setting(ms.size(), std::vector<counts>(audit::setting_count));
+    std::vector<long> uncertain(audit::level_count, 0);
+    for (int level = 0; level < audit::level_count; ++level) {
+        progress("stability: %s, level %d of %d", fam.name, level + 1, audit::level_count);
+        for (unsigned s = 0; s < audit::setting_count; ++s) {
+            audit::rng r(audit::stream(o.seed, index, level, s));
+            for (long i = 0; i < o.cases; ++i) {
+                const auto [a, b] = audit::make_case<A, B>(r, level, audit::settings[s]);
+                const bool truth = ms[0].test(a, b);
+                if (classify(a, b) == certainty::uncertain) ++uncertain[std::size_t(level)];
+                for (std::size_t m = 0; m < ms.size(); ++m) {
+                    if (ms[m].kind == "peer" && !audit::peer_accepts(a, b)) continue;
+                    const bool ans = ms[m].test(a, b);
+                    by_level[m][std::size_t(level)].add(ans, truth);
+                    by_setting[m][s].add(ans, truth);
+                }
+            }
+        }
+    }
+    j.object().kv("name", fam.name).kv("cases_per_level", o.cases * long(audit::setting_count)).list("uncertain", uncertain);
+    j.key("methods").array();
+    for (std::size_t m = 0; m < ms.size(); ++m) {
+        long v = 0;
+        std::vector<long> n, w, fp, fn;
+        for (const counts& c : by_level[m]) {
+            n.push_back(c.cases), w.push_back(c.wrong), fp.push_back(c.false_positive), fn.push_back(c.false_negative);
+            v += violations(ms[m].name, c);
+        }
+        total_violations += v;
+        if (v) std::fprintf(stderr, "incidence-audit: %s %s broke its contract %ld times\n", fam.name, ms[m].name.c_str(), v);
+        j.object().kv("name", ms[m].name).kv("kind", ms[m].kind).kv("contract_violations", v);
+        j.list("cases", n).list("wrong", w).list("false_positive", fp).list("false_negative", fn);
+        j.key("by_setting").array();
+        for (const counts& c : by_setting[m])
+            j.object().kv("cases", c.cases).kv("wrong", c.wrong).kv("false_positive", c.false_positive)
+                .kv("false_negative", c.false_negative).end_object();
+        j.end_array().end_object();
+    }
+    j.end_array().end_object();
+}
+
+void stability(audit::json& j, const options& o) {
+    j.key("stability").object();
+    j.kv("cases_per_level_and_setting", o.cases).kv("seed", long(o.seed));
+    j.key("levels").array();
+    for (int l = 0; l < audit::level_count; ++l) {
+        j.object();
+        if (l < audit::separation_levels) j.kv("kind", "separation").kv("k", l);
+        else j.kv("kind", "ulp").kv("ulps", l - audit::separation_levels);
+        j.end_object();
+    }
+    j.end_array();
+    j.key("settings").array();
+    for (const auto& s : audit::settings)
+        j.object().kv("offset", s.offset * audit::base_size).kv("scale_exp", s.scale_exp).end_object();
+    j.end_array();
+    j.key("families").array();
+    unsigned index = 0;
+    catalog::for_each_family([&](const auto& fam) { stability_family(j, fam, index++, o); });
+    j.end_array().end_object();
+    progress_done();
+}
+
+// --- tradeoff --------------------------------------------------------------------------------
+// Median ns per call of each method over a set, the methods interleaved in every repetition.
+template <class M, class A, class B>
+std::vector<double> time_methods(const std::vector<M>& ms, const std::vector<A>& as, const std::vector<B>& bs,
+                                 const std::vector<char>& peer_ok, int reps) {
+    std::vector<std::vector<double>> t(ms.size());
+    volatile long sink = 0;
+    for (int rep = 0; rep < reps; ++rep)
+        for (std::size_t m = 0; m < ms.size(); ++m) {
+            const bool peer = ms[m].kind == "peer";
+            long n = 0, hits = 0;
+            const double t0 = now_ns();
+            for (std::size_t i = 0; i < as.size(); ++i) {
+                if (peer && !peer_ok[i]) continue;
+                hits += ms[m].test(as[i], bs[i]);
+                ++n;
+            }
+            const double t1 = now_ns();
+            sink = sink + hits;
+            t[m].push_back(n ? (t1 - t0) / double(n) : 0.0);
+        }
+    std::vector<double> med;
+    for (auto& v : t) med.push_back(median(v));
+    return med;
+}
+
+template <class Family>
+void tradeoff_family(audit::json& j, const Family& fam, unsigned index, const options& o) {
+    using A = typename Family::first_type;
+    using B = typename Family::second_type;
+    const auto ms = audit::methods_of(fam);
+    // near-degenerate: separations 2^-30..2^-60 and 0..8-ulp moves; random: separation 2^0..2^-3.
+    std::vector<A> na, ra;
+    std::vector<B> nb, rb;
+    audit::rng r(audit::stream(o.seed, index, -1, 99));
+    for (long i = 0; i < o.tradeoff_cases; ++i) {
+        const auto& s = audit::settings[std::size_t(r.integer(0, audit::setting_count - 1))];
+        const int near_level = r.coin() ? r.integer(30, 60) : audit::separation_levels + r.integer(0, audit::ulp_levels - 1);
+        auto [a, b] = audit::make_case<A, B>(r, near_level, s);
+        na.push_back(a), nb.push_back(b);
+        auto [c, d] = audit::make_case<A, B>(r, r.integer(0, 3), s);
+        ra.push_back(c), rb.push_back(d);
+    }
+    auto truth_and_ok = [&](const std::vector<A>& as, const std::vector<B>& bs, std::vector<char>& truth, std::vector<char>& ok) {
+        for (std::size_t i = 0; i < as.size(); ++i) {
+            truth.push_back(ms[0].test(as[i], bs[i]));
+            ok.push_back(audit::peer_accepts(as[i], bs[i]));
+        }
+    };
+    std::vector<char> nt, nok, rt, rok;
+    truth_and_ok(na, nb, nt, nok);
+    truth_and_ok(ra, rb, rt, rok);
+    progress("tradeoff: %s, timing %zu methods", fam.name, ms.size());
+    const auto tn = time_methods(ms, na, nb, nok, o.reps);
+    const auto tr = time_methods(ms, ra, rb, rok, o.reps);
+    std::vector<double> err_near(ms.size()), err_random(ms.size());
+    std::vector<long> wrong_near(ms.size());
+    for (std::size_t m = 0; m < ms.size(); ++m) {
+        counts cn, cr;
+        for (std::size_t i = 0; i < na.size(); ++i) {
+            if (ms[m].kind == "peer" && !nok[i]) continue;
+            cn.add(ms[m].test(na[i], nb[i]), nt[i]);
+        }
+        for (std::size_t i = 0; i < ra.size(); ++i) {
+            if (ms[m].kind == "peer" && !rok[i]) continue;
+            cr.add(ms[m].test(ra[i], rb[i]), rt[i]);
+        }
+        wrong_near[m] = cn.wrong;
+        err_near[m] = cn.cases ? double(cn.wrong) / double(cn.cases) : 0.0;
+        err_random[m] = cr.cases ? double(cr.wrong) / double(cr.cases) : 0.0;
+    }
+    j.object().kv("name", fam.name).kv("near_cases", na.size()).kv("random_cases", ra.size());
+    j.key("methods").array();
+    for (std::size_t m = 0; m < ms.size(); ++m) {
+        bool pareto = true; // no other method is at least as fast and as accurate, and better in one
+        for (std::size_t q = 0; q < ms.size(); ++q)
+            if (q != m && tn[q] <= tn[m] && err_near[q] <= err_near[m] && (tn[q] < tn[m] || err_near[q] < err_near[m]))
+                pareto = false;
+        j.object().kv("name", ms[m].name).kv("kind", ms[m].kind).kv("source", ms[m].source);
+        j.kv("ns_near", tn[m]).kv("ns_random", tr[m]).kv("wrong_near", wrong_near[m]);
+        j.kv("error_rate_near", err_near[m]).kv("error_rate_random", err_random[m]).kv("pareto", pareto).end_object();
+    }
+    j.end_array().end_object();
+}
+
+void tradeoff(audit::json& j, const options& o) {
+    j.key("tradeoff").object().kv("repetitions", o.reps).kv("cases", o.tradeoff_cases);
+    j.kv("timing", "median over the repetitions of the mean ns per call over the set; every method called "
+                   "through a function pointer; methods interleaved within each repetition");
+    j.key("families").array();
+    unsigned index = 0;
+    catalog::for_each_family([&](const auto& fam) { tradeoff_family(j, fam, index++, o); });
+    j.end_array().end_object();
+    progress_done();
+}
+
+// --- scene -----------------------------------------------------------------------------------
+struct workload_result {
+    std::string name, description;
+    long tests = 0;
+    struct row {
+        std::string name, kind;
+        double ms = 0;
+        counts c;
+        long holes = 0; // rays that hit no triangle around an edge or vertex while exact hits one
+        long uncertain = 0;
+    };
+    std::vector<row> rows;
+    long exact_holes = 0;
+    bool holes_apply = false;
+};
+
+// Runs every method of `fam` over the pairs; `groups` (optional) partitions the pairs into sets
+// whose union must be hit (a ray and the triangles around one edge or vertex).
+template <class Family, class A, class B>
+workload_result run_workload(const Family& fam, const char* name, const char* description, const std::vector<A>& as,
+                             const std::vector<B>& bs, const std::vector<std::size_t>& group_start) {
+    const auto ms = audit::methods_of(fam);
+    workload_result w;
+    w.name = name;
+    w.description = description;
+    w.tests = long(as.size());
+    w.holes_apply = !group_start.empty();
+    std::vector<char> truth(as.size()), ok(as.size());
+    for (std::size_t i = 0; i < as.size(); ++i) ok[i] = audit::peer_accepts(as[i], bs[i]);
+    for (std::size_t m = 0; m < ms.size(); ++m) {
+        progress("scene: %s, %s", name, ms[m].name.c_str());
+        workload_result::row row;
+        row.name = ms[m].name, row.kind = ms[m].kind;
+        std::vector<char> ans(as.size(), 0);
+        const bool peer = ms[m].kind == "peer";
+        const double t0 = now_ns();
+        for (std::size_t i = 0; i < as.size(); ++i)
+            if (!peer || ok[i]) ans[i] = ms[m].test(as[i], bs[i]);
+        row.ms = (now_ns() - t0) * 1e-6;
+        if (m == 0) truth = ans;
+        for (std::size_t i = 0; i < as.size(); ++i)
+            if (!peer || ok[i]) row.c.add(ans[i], truth[i]);
+        for (std::size_t g = 0; g < group_start.size(); ++g) {
+            const std::size_t lo = group_start[g], hi = g + 1 < group_start.size() ? group_start[g + 1] : as.size();
+            bool any_truth = false, any = false;
+            for (std::size_t i = lo; i < hi; ++i) any_truth |= truth[i] != 0, any |= ans[i] != 0;
+            if (any_truth && !any) ++row.holes;
+        }
+        w.rows.push_back(row);
+    }
+    long unc = 0;
+    for (std::size_t i = 0; i < as.size(); ++i) unc += classify(as[i], bs[i]) == certainty::uncertain;
+    w.rows[0].uncertain = unc;
+    return w;
+}
+
+// The catalog's family with canonical types (A, B).
+template <class A, class B, std::size_t I = 0>
+constexpr const auto& family_of() {
+    using F = std::tuple_element_t<I, std::decay_t<decltype(catalog::families)>>;
+    if constexpr (std::is_same_v<typename F::first_type, A> && std::is_same_v<typename F::second_type, B>)
+        return std::get<I>(catalog::families);
+    else
+        return family_of<A, B, I + 1>();
+}
+
+void scene(audit::json& j, const options& o) {
+    const audit::mesh mesh = audit::read_mesh(o.scene);
+    std::vector<triangle3> tris;
+    for (const auto& f : mesh.faces) tris.push_back({mesh.vertices[f[0]], mesh.vertices[f[1]], mesh.vertices[f[2]]});
+    point3 lo = mesh.vertices[0], hi = lo;
+    for (const auto& p : mesh.vertices) {
+        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+        hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+    }
+    const point3 centre{0.5 * (lo.x + hi.x), 0.5 * (lo.y + hi.y), 0.5 * (lo.z + hi.z)};
+    const vec3 diag = hi - lo;
+    const double size = std::sqrt(dot(diag, diag));
+    // A camera on a diagonal, 2 sizes away, looking at the centre; an image plane through the centre.
+    const vec3 view = vec3{0.6, 0.48, 0.64};
+    const point3 eye = centre + view * (2.0 * size);
+    vec3 right = cross(view, vec3{0, 1, 0});
+    right = right * (1.0 / std::sqrt(dot(right, right)));
+    vec3 up = cross(right, view);
+    up = up * (1.0 / std::sqrt(dot(up, up)));
+
+    const auto& rt = family_of<ray3, triangle3>();
+    const auto& tt = family_of<triangle3, triangle3>();
+    std::vector<workload_result> results;
+    {   // camera rays against every triangle
+        std::vector<ray3> rs;
+        std::vector<triangle3> ts;
+        const long n = long(o.rays) * o.rays * long(tris.size());
+        rs.reserve(std::size_t(n)), ts.reserve(std::size_t(n));
+        for (int y = 0; y < o.rays; ++y)
+            for (int x = 0; x < o.rays; ++x) {
+                const double u = ((x + 0.5) / o.rays - 0.5) * size * 0.8, v = ((y + 0.5) / o.rays - 0.5) * size * 0.8;
+                const point3 target = centre + right * u + up * v;
+                const ray3 ray{eye, target - eye};
+                for (const auto& t : tris) rs.push_back(ray), ts.push_back(t);
+            }
+        results.push_back(run_workload(rt, "camera_rays", "a grid of camera rays against every triangle", rs, ts, {}));
+    }
+    // Edge and vertex adjacency.
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> edges;
+    std::vector<std::vector<std::uint32_t>> around(mesh.vertices.size());
+    for (std::uint32_t f = 0; f < mesh.faces.size(); ++f)
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t a = mesh.faces[f][std::size_t(k)], b = mesh.faces[f][std::size_t((k + 1) % 3)];
+            edges[{std::min(a, b), std::max(a, b)}].push_back(f);
+            around[a].push_back(f);
+        }
+    {   // rays from the eye through every edge midpoint and every vertex, against the triangles there
+        std::vector<ray3> rs;
+        std::vector<triangle3> ts;
+        std::vector<std::size_t> groups;
+        for (const auto& [e, fs] : edges) {
+            const point3 a = mesh.vertices[e.first], b = mesh.vertices[e.second];
+            const point3 mid{0.5 * (a.x + b.x), 0.5 * (a.y + b.y), 0.5 * (a.z + b.z)};
+            groups.push_back(rs.size());
+            for (auto f : fs) rs.push_back(ray3{eye, mid - eye}), ts.push_back(tris[f]);
+        }
+        results.push_back(run_workload(rt, "edge_rays", "a ray from the eye through each edge's midpoint, against the "
+                                                        "triangles sharing that edge",
+                                       rs, ts, groups));
+        rs.clear(), ts.clear(), groups.clear();
+        for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+            if (around[v].empty()) continue;
+            groups.push_back(rs.size());
+            for (auto f : around[v]) rs.push_back(ray3{eye, mesh.vertices[v] - eye}), ts.push_back(tris[f]);
+        }
+        results.push_back(run_workload(rt, "vertex_rays", "a ray from the eye through each vertex, against the "
+                                                          "triangles around it",
+                                       rs, ts, groups));
+    }
+    {   // the mesh's own triangle pairs: adjacent ones touch exactly; near ones (two rings) mostly miss
+        std::vector<triangle3> as, bs, na, nb;
+        std::set<std::pair<std::uint32_t, std::uint32_t>> adjacent;
+        for (const auto& fs : around)
+            for (auto f : fs)
+                for (auto g : fs)
+                    if (f < g) adjacent.insert({f, g});
+        for (const auto& [f, g] : adjacent) as.push_back(tris[f]), bs.push_back(tris[g]);
+        results.push_back(run_workload(tt, "adjacent_pairs", "pairs of the mesh's triangles sharing a vertex or an edge "
+                                                             "(all touch exactly)",
+                                       as, bs, {}));
+        audit::rng r(o.seed);
+        const long want = o.pairs;
+        long tries = 0;
+        std::set<std::pair<std::uint32_t, std::uint32_t>> seen;
+        while (long(na.size()) < want && tries++ < want * 20) {
+            const auto f = std::uint32_t(r.integer(0, int(mesh.faces.size()) - 1));
+            const auto v = mesh.faces[f][std::size_t(r.integer(0, 2))];
+            const auto& ring = around[v];
+            const auto g0 = ring[std::size_t(r.integer(0, int(ring.size()) - 1))];
+            const auto w = mesh.faces[g0][std::size_t(r.integer(0, 2))];
+            const auto& ring2 = around[w];
+            const auto g = ring2[std::size_t(r.integer(0, int(ring2.size()) - 1))];
+            bool shares = false;
+            for (auto x : mesh.faces[f])
+                for (auto y : mesh.faces[g]) shares |= x == y;
+            if (shares || !seen.insert({std::min(f, g), std::max(f, g)}).second) continue;
+            na.push_back(tris[f]), nb.push_back(tris[g]);
+        }
+        results.push_back(run_workload(tt, "near_pairs", "pairs of the mesh's triangles two rings apart that share no "
+                                                         "vertex (near misses)",
+                                       na, nb, {}));
+    }
+    progress_done();
+
+    // Advice: the cheapest tier without a wrong answer on every workload, by total time.
+    struct tally { double ms = 0; long wrong = 0, tests = 0; };
+    std::map<std::string, tally> tiers;
+    for (const auto& w : results)
+        for (const auto& row : w.rows)
+            if (row.kind == "tier") {
+                auto& t = tiers[row.name];
+                t.ms += row.ms, t.wrong += row.c.wrong, t.tests += row.c.cases;
+            }
+    std::string best;
+    for (const auto& [name, t] : tiers)
+        if (t.wrong == 0 && (best.empty() || t.ms < tiers[best].ms)) best = name;
+    long uncertain = 0, tests = 0;
+    for (const auto& w : results) uncertain += w.rows[0].uncertain, tests += w.tests;
+
+    j.key("scene").object();
+    j.kv("file", o.scene).kv("vertices", mesh.vertices.size()).kv("triangles", tris.size()).kv("camera_rays", long(o.rays) * o.rays);
+    j.key("workloads").array();
+    for (const auto& w : results) {
+        j.object().kv("name", w.name).kv("description", w.description).kv("tests", w.tests).kv("holes_apply", w.holes_apply);
+        j.kv("uncertain", w.rows[0].uncertain);
+        j.key("methods").array();
+        for (const auto& row : w.rows)
+            j.object().kv("name", row.name).kv("kind", row.kind).kv("ms", row.ms).kv("wrong", row.c.wrong)
+                .kv("false_positive", row.c.false_positive).kv("false_negative", row.c.false_negative)
+                .kv("tests", row.c.cases).kv("holes", row.holes).end_object();
+        j.end_array().end_object();
+    }
+    j.end_array();
+    j.key("tiers").array();
+    for (const char* name : {"approximate", "aggressive", "conservative", "exact"}) {
+        const auto& t = tiers[name];
+        j.object().kv("name", name).kv("ms", t.ms).kv("wrong", t.wrong).kv("tests", t.tests).end_object();
+    }
+    j.end_array();
+    std::string text;
+    char buf[512];
+    const double exact_ms = tiers["exact"].ms;
+    if (best == "exact") {
+        std::snprintf(buf, sizeof buf, "Only the exact tier made no mistake on this scene's %ld tests (%.0f ms). The filter "
+                                       "could not decide %ld of them (%.2f%%): that is how close this scene comes to the "
+                                       "decision boundaries.", tests, exact_ms, uncertain, 100.0 * double(uncertain) / double(tests));
+    } else {
+        std::snprintf(buf, sizeof buf, "The %s tier made no mistake on this scene's %ld tests and took %.0f ms against %.0f ms for "
+                                       "exact (%.2fx). Margin: the filter could not certify %ld of the tests (%.3f%%); %s answered "
+                                       "every one of them right here, but a scene with more such contacts can differ.",
+                      best.c_str(), tests, tiers[best].ms, exact_ms, exact_ms / std::max(tiers[best].ms, 1e-9), uncertain,
+                      100.0 * double(uncertain) / double(tests), best.c_str());
+    }
+    text = buf;
+    for (const char* name : {"approximate", "aggressive", "conservative"}) {
+        const auto& t = tiers[name];
+        if (t.wrong == 0 || t.ms >= tiers[best].ms) continue;
+        std::snprintf(buf, sizeof buf, " The %s tier (%.0f ms) gave %ld wrong answers.", name, t.ms, t.wrong);
+        text += buf;
+    }
+    j.key("advice").object().kv("tier", best).kv("uncertain", uncertain).kv("tests", tests).kv("text", text);
+    j.kv("bounding_volume", "not measured: the library has no bounding-volume constructions yet").end_object();
+    j.end_object();
+    std::printf("scene %s: %zu triangles; advice: %s\n", o.scene.c_str(), tris.size(), text.c_str());
+}
+
+// --- main ------------------------------------------------------------------------------------
+[[noreturn]] void usage(const char* why) {
+    std::fprintf(stderr,
+                 "incidence-audit: %s\n"
+                 "usage: incidence-audit [all | stability | tradeoff | scene FILE] [--scene FILE] [--out DIR]\n"
+                 "       [--cases N] [--tradeoff-cases N] [--seed S] [--reps R] [--rays N] [--pairs N] [--no-report]\n",
+                 why);
+    std::exit(2);
+}
+long positive(const char* flag, const char* v) {
+    char* end = nullptr;
+    const long x = std::strtol(v, &end, 10);
+    if (!end || *end || x <= 0) usage((std::string(flag) + " needs a positive integer").c_str());
+    return x;
+}
+
+options parse(int argc, char** argv) {
+    options o;
+    int i = 1;
+    if (i < argc && argv[i][0] != '-') o.command = argv[i++];
+    if (o.command == "scene") {
+        if (i >= argc) usage("scene needs a mesh file (OFF, OBJ, PLY or STL)");
+        o.scene = argv[i++];
+    } else if (o.command != "all" && o.command != "stability" && o.command != "tradeoff") {
+        usage(("unknown command '" + o.command + "'").c_str());
+    }
+    for (; i < argc; ++i) {
+        const std::string a = argv[i];
+        auto value = [&]() -> const char* {
+            if (i + 1 >= argc) usage((a + " needs a value").c_str());
+            return argv[++i];
+        };
+        if (a == "--out") o.out = value();
+        else if (a == "--scene") o.scene = value();
+        else if (a == "--cases") o.cases = positive("--cases", value());
+        else if (a == "--tradeoff-cases") o.tradeoff_cases = positive("--tradeoff-cases", value());
+        else if (a == "--seed") o.seed = std::uint64_t(positive("--seed", value()));
+        else if (a == "--reps") o.reps = int(positive("--reps", value()));
+        else if (a == "--rays") o.rays = int(positive("--rays", value()));
+        else if (a == "--pairs") o.pairs = positive("--pairs", value());
+        else if (a == "--no-report") o.report = false;
+        else usage(("unknown option '" + a + "'").c_str());
+    }
+    return o;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    tty = isatty(2) != 0;
+    const options o = parse(argc, argv);
+    const double t0 = now_ns();
+    audit::json j;
+    j.object().kv("schema", "incidence-audit/1").kv("command", o.command);
+    std::string cmdline;
+    for (int i = 0; i < argc; ++i) cmdline += (i ? " " : "") + std::string(argv[i]);
+    j.kv("command_line", cmdline);
+    j.key("families").array();
+    catalog::for_each_family([&](const auto& fam) {
+        using F = std::decay_t<decltype(fam)>;
+        j.object().kv("name", fam.name).kv("first", shape_name(static_cast<const typename F::first_type*>(nullptr)));
+        j.kv("second", shape_name(static_cast<const typename F::second_type*>(nullptr))).kv("approximate_method", fam.approximate_method);
+        write_methods(j, audit::methods_of(fam));
+        j.end_object();
+    });
+    j.end_array();
+    try {
+        if (o.command == "all" || o.command == "stability") stability(j, o);
+        if (o.command == "all" || o.command == "tradeoff") tradeoff(j, o);
+        if (o.command == "scene" || (o.command == "all" && !o.scene.empty())) scene(j, o);
+    } catch (const std::exception& e) {
+        progress_done();
+        std::fprintf(stderr, "incidence-audit: %s\n", e.what());
+        return 1;
+    }
+    j.kv("seconds", (now_ns() - t0) * 1e-9).kv("contract_violations", total_violations).end_object();
+    std::filesystem::create_directories(o.out);
+    const std::string json_path = o.out + "/audit.json", html_path = o.out + "/report.html";
+    {
+        std::ofstream f(json_path);
+        f << j.text() << '\n';
+        if (!f) {
+            std::fprintf(stderr, "incidence-audit: cannot write %s\n", json_path.c_str());
+            return 1;
+        }
+    }
+    std::printf("audit data: %s\n", json_path.c_str());
+    if (o.report) {
+        const std::string cmd = "'" INCIDENCE_PYTHON "' '" INCIDENCE_AUDIT_REPORT_PY "' '" + json_path + "' '" + html_path + "'";
+        if (std::system(cmd.c_str()) != 0) {
+            std::fprintf(stderr, "incidence-audit: the report could not be drawn (%s)\n", cmd.c_str());
+            return 1;
+        }
+        std::printf("report: %s\n", std::filesystem::absolute(html_path).c_str());
+    }
+    if (total_violations) {
+        std::fprintf(stderr, "incidence-audit: %ld contract violations (see audit.json)\n", total_violations);
+        return 3;
+    }
+    return 0;
+}

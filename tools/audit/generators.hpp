@@ -1,0 +1,260 @@
+// Configurations on and near each family's decision boundary, for the audit's stability curves
+// and its independent recomputation test. Include after `import incidence;`.
+//
+// For every family (A, B) of incidence::catalog, `near_boundary<A, B>::touching(rng)` builds an
+// *exactly* touching pair from small integers and dyadic fractions (|x| <= 2^10), so every
+// coordinate is exact. The audit then moves it:
+//   setting: add an offset from the origin (exact: integers) and scale by 2^e (exact);
+//   level k: translate the second shape by 2^-k * 2^10 along a random unit vector, rounded
+//            (so the pair is about 2^-k of the object size from touching, on either side);
+//   ulp j:   move one coordinate of either shape by j ulps, up or down.
+// A family without a specialisation here does not compile: the audit covers every family.
+#pragma once
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <utility>
+
+namespace audit {
+
+using namespace incidence;
+
+struct rng {
+    std::mt19937_64 g;
+    explicit rng(std::uint64_t s) : g(s) {}
+    double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(g); }
+    int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(g); }
+    bool coin() { return integer(0, 1) == 1; }
+};
+
+// A stream per (seed, family, level, setting): the recomputation test regenerates any of them.
+inline std::uint64_t stream(std::uint64_t seed, unsigned family, int level, unsigned setting) {
+    std::uint64_t h = seed * 0x9E3779B97F4A7C15ull;
+    for (std::uint64_t v : {std::uint64_t(family), std::uint64_t(level + 1000), std::uint64_t(setting)}) {
+        h ^= v + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
+        h *= 0xBF58476D1CE4E5B9ull;
+    }
+    return h;
+}
+
+inline constexpr double base_size = 1024.0; // the objects' size, in the units before scaling
+
+// --- per-shape moves -------------------------------------------------------------------------
+inline point3 moved(point3 p, vec3 v) { return p + v; }
+inline sphere3 moved(sphere3 s, vec3 v) { return {s.center + v, s.radius}; }
+inline aabb3 moved(aabb3 b, vec3 v) { return {b.min + v, b.max + v}; }
+inline ray3 moved(ray3 r, vec3 v) { return {r.origin + v, r.direction}; }
+inline segment3 moved(segment3 s, vec3 v) { return {s.a + v, s.b + v}; }
+inline triangle3 moved(triangle3 t, vec3 v) { return {t.a + v, t.b + v, t.c + v}; }
+
+// Every shape is an aggregate of doubles: scaling and ulp moves act on its fields.
+template <class S>
+using fields = std::array<double, sizeof(S) / sizeof(double)>;
+
+template <class S>
+S scaled(const S& s, int e) {
+    auto f = std::bit_cast<fields<S>>(s);
+    for (double& x : f) x = std::ldexp(x, e);
+    return std::bit_cast<S>(f);
+}
+inline aabb3 tidy(aabb3 b) { // a nudge may swap a flat box's bounds
+    if (b.min.x > b.max.x) std::swap(b.min.x, b.max.x);
+    if (b.min.y > b.max.y) std::swap(b.min.y, b.max.y);
+    if (b.min.z > b.max.z) std::swap(b.min.z, b.max.z);
+    return b;
+}
+template <class S>
+S tidy(const S& s) { return s; }
+
+template <class S>
+S nudged(const S& s, int ulps, rng& r) {
+    auto f = std::bit_cast<fields<S>>(s);
+    double& x = f[static_cast<std::size_t>(r.integer(0, static_cast<int>(f.size()) - 1))];
+    const double to = r.coin() ? INFINITY : -INFINITY;
+    for (int i = 0; i < ulps; ++i) x = std::nextafter(x, to);
+    return tidy(std::bit_cast<S>(f));
+}
+
+inline vec3 random_unit(rng& r) {
+    for (;;) {
+        const vec3 v{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)};
+        const double l2 = dot(v, v);
+        if (l2 > 0.01 && l2 <= 1.0) return v * (1.0 / std::sqrt(l2));
+    }
+}
+inline point3 int_point(rng& r, int lim = 512) {
+    return {double(r.integer(-lim, lim)), double(r.integer(-lim, lim)), double(r.integer(-lim, lim))};
+}
+// a^2 + b^2 + c^2 = d^2, with random signs and order: an exact point on a sphere of radius d.
+inline std::pair<vec3, double> pythagorean(rng& r) {
+    static constexpr int q[][4] = {{1, 2, 2, 3}, {2, 3, 6, 7}, {1, 4, 8, 9}, {4, 4, 7, 9}, {2, 6, 9, 11},
+                                   {6, 6, 7, 11}, {3, 4, 12, 13}, {2, 10, 11, 15}, {1, 12, 12, 17}, {8, 9, 12, 17}};
+    const auto& e = q[r.integer(0, 9)];
+    double v[3] = {double(e[0]), double(e[1]), double(e[2])};
+    for (int i = 2; i > 0; --i) std::swap(v[i], v[r.integer(0, i)]);
+    for (double& x : v) x = r.coin() ? x : -x;
+    return {vec3{v[0], v[1], v[2]}, double(e[3])};
+}
+inline vec3 int_vec(rng& r, int lim) {
+    for (;;) {
+        const vec3 v{double(r.integer(-lim, lim)), double(r.integer(-lim, lim)), double(r.integer(-lim, lim))};
+        if (v.x != 0 || v.y != 0 || v.z != 0) return v;
+    }
+}
+inline triangle3 int_triangle(rng& r) {
+    for (;;) {
+        const point3 a = int_point(r, 400);
+        const triangle3 t{a, a + int_vec(r, 400), a + int_vec(r, 400)};
+        const vec3 n = cross(t.b - t.a, t.c - t.a);
+        if (dot(n, n) > 1e4) return t;
+    }
+}
+// A point of the closed triangle's boundary: a vertex, or an edge point at a quarter step.
+inline point3 boundary_point(const triangle3& t, rng& r) {
+    const point3 v[3] = {t.a, t.b, t.c};
+    const int i = r.integer(0, 2);
+    const point3 p = v[i], q = v[(i + 1) % 3];
+    const double s = r.integer(0, 4) * 0.25;
+    return p + (q - p) * s;
+}
+
+template <class A, class B>
+struct near_boundary; // specialised per family below
+
+template <>
+struct near_boundary<point3, sphere3> {
+    static std::pair<point3, sphere3> touching(rng& r) {
+        const point3 c = int_point(r);
+        const auto [u, d] = pythagorean(r);
+        const double m = r.integer(1, 30);
+        return {c + u * m, sphere3{c, d * m}};
+    }
+};
+template <>
+struct near_boundary<sphere3, sphere3> {
+    static std::pair<sphere3, sphere3> touching(rng& r) {
+        const point3 c = int_point(r);
+        const auto [u, d] = pythagorean(r);
+        const double m = r.integer(2, 30), r1 = r.integer(1, int(d * m) - 1);
+        return {sphere3{c, r1}, sphere3{c + u * m, d * m - r1}};
+    }
+};
+template <>
+struct near_boundary<aabb3, point3> {
+    static std::pair<aabb3, point3> touching(rng& r) {
+        const point3 lo = int_point(r);
+        const aabb3 b{lo, lo + vec3{double(r.integer(1, 400)), double(r.integer(1, 400)), double(r.integer(1, 400))}};
+        double p[3];
+        const double mn[3] = {b.min.x, b.min.y, b.min.z}, mx[3] = {b.max.x, b.max.y, b.max.z};
+        const int on = r.integer(0, 2); // at least this axis on a face; others on a face w.p. 1/3
+        for (int i = 0; i < 3; ++i) {
+            const int how = i == on ? r.integer(0, 1) : r.integer(0, 2);
+            p[i] = how == 0 ? mn[i] : (how == 1 ? mx[i] : mn[i] + std::floor((mx[i] - mn[i]) * r.uniform(0, 1)));
+        }
+        return {b, point3{p[0], p[1], p[2]}};
+    }
+};
+template <>
+struct near_boundary<aabb3, aabb3> {
+    static std::pair<aabb3, aabb3> touching(rng& r) {
+        const auto [a, p] = near_boundary<aabb3, point3>::touching(r);
+        // A second box with p as a corner, lying outside a on the touching axes.
+        const double mn[3] = {a.min.x, a.min.y, a.min.z}, mx[3] = {a.max.x, a.max.y, a.max.z}, q[3] = {p.x, p.y, p.z};
+        double lo[3], hi[3];
+        for (int i = 0; i < 3; ++i) {
+            const double e = r.integer(1, 300);
+            const bool up = q[i] == mx[i] ? true : (q[i] == mn[i] ? false : r.coin());
+            lo[i] = up ? q[i] : q[i] - e;
+            hi[i] = up ? q[i] + e : q[i];
+        }
+        return {a, aabb3{{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}}};
+    }
+};
+template <>
+struct near_boundary<ray3, sphere3> {
+    static std::pair<ray3, sphere3> touching(rng& r) {
+        const point3 c = int_point(r);
+        const auto [u, d] = pythagorean(r);
+        const double m = r.integer(1, 30);
+        const point3 p = c + u * m; // on the sphere
+        vec3 w = cross(u, int_vec(r, 8));
+        if (w.x == 0 && w.y == 0 && w.z == 0) w = cross(u, vec3{1, 0, 0}) + cross(u, vec3{0, 1, 0});
+        const double t = r.integer(1, 6);
+        return {ray3{p - w * t, w}, sphere3{c, d * m}}; // tangent at p
+    }
+};
+template <>
+struct near_boundary<aabb3, ray3> {
+    static std::pair<aabb3, ray3> touching(rng& r) {
+        for (;;) {
+            const auto [b, p] = near_boundary<aabb3, point3>::touching(r);
+            // Through a boundary point p from outside: the ray grazes an edge/corner or enters.
+            const point3 o = p + int_vec(r, 600);
+            if (o.x >= b.min.x && o.x <= b.max.x && o.y >= b.min.y && o.y <= b.max.y && o.z >= b.min.z && o.z <= b.max.z)
+                continue;
+            return {b, ray3{o, p - o}};
+        }
+    }
+};
+template <>
+struct near_boundary<ray3, triangle3> {
+    static std::pair<ray3, triangle3> touching(rng& r) {
+        const triangle3 t = int_triangle(r);
+        const point3 p = boundary_point(t, r), o = p + int_vec(r, 600);
+        return {ray3{o, p - o}, t};
+    }
+};
+template <>
+struct near_boundary<segment3, triangle3> {
+    static std::pair<segment3, triangle3> touching(rng& r) {
+        const triangle3 t = int_triangle(r);
+        const point3 p = boundary_point(t, r), o = p + int_vec(r, 600);
+        const double f = r.integer(1, 3) * 0.5 + 0.5; // ends on the edge, or passes through it
+        return {segment3{o, o + (p - o) * f}, t};
+    }
+};
+template <>
+struct near_boundary<triangle3, triangle3> {
+    static std::pair<triangle3, triangle3> touching(rng& r) {
+        const triangle3 t = int_triangle(r);
+        const point3 p = boundary_point(t, r);
+        for (;;) {
+            const triangle3 u{p, p + int_vec(r, 400), p + int_vec(r, 400)};
+            const vec3 n = cross(u.b - u.a, u.c - u.a);
+            if (dot(n, n) > 1e4) return r.coin() ? std::pair{t, u} : std::pair{u, t};
+        }
+    }
+};
+
+// The coordinate settings: offset from the origin (in object sizes) and scale 2^e.
+struct setting {
+    double offset; // added to every point, before scaling (exact: an integer)
+    int scale_exp;
+};
+inline constexpr setting settings[] = {{0, 0}, {0, -300}, {0, 300}, {1 << 20, 0}, {1 << 20, -300}, {1 << 20, 300}};
+inline constexpr unsigned setting_count = sizeof(settings) / sizeof(settings[0]);
+inline constexpr int separation_levels = 61; // k = 0..60
+inline constexpr int ulp_levels = 9;         // j = 0..8
+// level index: 0..60 separation 2^-k, 61..69 ulp perturbation j = index - 61
+inline constexpr int level_count = separation_levels + ulp_levels;
+
+// One case of family (A, B) at a level and setting.
+template <class A, class B>
+std::pair<A, B> make_case(rng& r, int level, const setting& s) {
+    auto [a, b] = near_boundary<A, B>::touching(r);
+    const vec3 off{s.offset * base_size, -s.offset * base_size, s.offset * base_size};
+    a = moved(a, off);
+    b = moved(b, off);
+    if (level < separation_levels) {
+        b = tidy(moved(b, random_unit(r) * std::ldexp(base_size, -level)));
+    } else {
+        const int j = level - separation_levels;
+        if (r.coin()) a = nudged(a, j, r);
+        else b = nudged(b, j, r);
+    }
+    return {scaled(a, s.scale_exp), scaled(b, s.scale_exp)};
+}
+
+} // namespace audit

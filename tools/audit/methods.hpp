@@ -1,0 +1,91 @@
+// The methods the audit compares for a family of incidence::catalog: the four tiers, the exact
+// tier's sign algorithm in plain double, the family's textbook alternatives, and CGAL Epick where
+// CGAL has the pair. Include after `import incidence;` and the CGAL oracle header.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace audit {
+
+using namespace incidence;
+
+template <class A, class B>
+struct method {
+    std::string name;
+    std::string kind; // tier | sign algorithm | alternative | peer
+    std::string source;
+    bool (*test)(const A&, const B&);
+};
+
+namespace peer {
+inline void arr(point3 p, double* o) { o[0] = p.x, o[1] = p.y, o[2] = p.z; }
+inline void arr(vec3 p, double* o) { o[0] = p.x, o[1] = p.y, o[2] = p.z; }
+inline bool epick(const ray3& r, const triangle3& t) {
+    double o[3], d[3], a[3], b[3], c[3];
+    arr(r.origin, o), arr(r.direction, d), arr(t.a, a), arr(t.b, b), arr(t.c, c);
+    return oracle::ray_triangle_epick(o, d, a, b, c);
+}
+inline bool epick(const segment3& s, const triangle3& t) {
+    double p[3], q[3], a[3], b[3], c[3];
+    arr(s.a, p), arr(s.b, q), arr(t.a, a), arr(t.b, b), arr(t.c, c);
+    return oracle::segment_triangle_epick(p, q, a, b, c);
+}
+inline bool epick(const triangle3& t, const triangle3& u) {
+    double a[3], b[3], c[3], d[3], e[3], f[3];
+    arr(t.a, a), arr(t.b, b), arr(t.c, c), arr(u.a, d), arr(u.b, e), arr(u.c, f);
+    return oracle::triangle_triangle_epick(a, b, c, d, e, f);
+}
+inline bool epick(const aabb3& b, const ray3& r) {
+    double o[3], d[3], mn[3], mx[3];
+    arr(r.origin, o), arr(r.direction, d), arr(b.min, mn), arr(b.max, mx);
+    return oracle::ray_box_epick(o, d, mn, mx);
+}
+inline bool epick(const aabb3& a, const aabb3& b) {
+    double amn[3], amx[3], bmn[3], bmx[3];
+    arr(a.min, amn), arr(a.max, amx), arr(b.min, bmn), arr(b.max, bmx);
+    return oracle::box_box_epick(amn, amx, bmn, bmx);
+}
+inline bool epick(const aabb3& b, const point3& p) {
+    double q[3], mn[3], mx[3];
+    arr(p, q), arr(b.min, mn), arr(b.max, mx);
+    return oracle::point_in_box_epick(q, mn, mx);
+}
+template <class A, class B>
+concept has_epick = requires(const A& a, const B& b) { epick(a, b); };
+// CGAL's triangle predicates require non-degenerate triangles.
+inline bool epick_accepts(const triangle3& t) {
+    double a[3], b[3], c[3];
+    arr(t.a, a), arr(t.b, b), arr(t.c, c);
+    return !oracle::triangle_is_degenerate(a, b, c);
+}
+template <class S>
+bool epick_accepts(const S&) { return true; }
+} // namespace peer
+
+template <class A, class B>
+[[nodiscard]] bool peer_accepts(const A& a, const B& b) { return peer::epick_accepts(a) && peer::epick_accepts(b); }
+
+// The methods of one family; the exact tier comes first (it is the reference).
+template <class Family>
+[[nodiscard]] auto methods_of(const Family& f) {
+    using A = typename Family::first_type;
+    using B = typename Family::second_type;
+    std::vector<method<A, B>> m;
+    m.push_back({"exact", "tier", "filter, then expansions, then exact dyadic integers",
+                 [](const A& a, const B& b) { return intersects<exact>(a, b); }});
+    m.push_back({"conservative", "tier", "filter; uncertain answers yes",
+                 [](const A& a, const B& b) { return intersects<conservative>(a, b); }});
+    m.push_back({"aggressive", "tier", "filter; uncertain answers no",
+                 [](const A& a, const B& b) { return intersects<aggressive>(a, b); }});
+    m.push_back({"approximate", "tier", f.approximate_method,
+                 [](const A& a, const B& b) { return intersects<approximate>(a, b); }});
+    m.push_back({"signs_in_double", "sign algorithm", "the exact tier's sign algorithm evaluated in plain double",
+                 [](const A& a, const B& b) { return catalog::signs_in_double(a, b); }});
+    for (const auto& alt : f.alternatives) m.push_back({alt.name, "alternative", alt.source, alt.test});
+    if constexpr (peer::has_epick<A, B>)
+        m.push_back({"cgal_epick", "peer", "CGAL 5.5 do_intersect, Exact_predicates_inexact_constructions_kernel",
+                     [](const A& a, const B& b) { return peer::epick(a, b); }});
+    return m;
+}
+
+} // namespace audit
