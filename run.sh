@@ -1,15 +1,21 @@
 #!/usr/bin/env bash
 # The two commands of the README:
-#   ./run.sh demo   build (release) and run the demo: the tiers on touching cases + a speed table
+#   ./run.sh audit  the robustness audit: stability and speed-accuracy for every query family,
+#                   and the scene audit of the Stanford bunny; writes audit-report/report.html
 #   ./run.sh test   the whole test suite: release build and tests (oracle, static, consumer,
-#                   benchmark smoke), the ASan+UBSan build and its tests, and the fuzzers
-# Both install what is missing first (Debian bookworm + bookworm-backports) and skip what is there.
+#                   benchmark smoke, audit output and report in Chromium), the ASan+UBSan build
+#                   and its tests, and the fuzzers
+# and ./run.sh demo: the tiers on touching cases + a speed table, in the terminal.
+# All install what is missing first (Debian bookworm + bookworm-backports) and skip what is there.
 set -euo pipefail
 cd "$(dirname "$0")"
 
 # Debian packages, and the backports suite for the two that need newer versions.
+# python3-matplotlib draws the audit report, python3-jsonschema and chromium test it, libcgal-demo
+# has the real meshes (data.tar.gz).
 packages=(clang-19 clang-tools-19 libclang-rt-19-dev libfuzzer-19-dev ninja-build libboost-dev libgmp-dev
-          libmpfr-dev libcgal-dev libbenchmark-dev)
+          libmpfr-dev libcgal-dev libcgal-demo libbenchmark-dev python3 python3-matplotlib python3-jsonschema
+          chromium)
 backports=(cmake catch2)
 
 as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
@@ -36,6 +42,16 @@ setup() {
     export DEBIAN_FRONTEND=noninteractive
     if [ ${#missing[@]} -gt 0 ]; then as_root apt-get install -y -qq "${missing[@]}" >/dev/null; fi
     if [ ${#from_backports[@]} -gt 0 ]; then as_root apt-get install -y -qq -t bookworm-backports "${from_backports[@]}" >/dev/null; fi
+}
+
+# Real meshes from Debian's libcgal-demo, unpacked into build/data/meshes (never committed).
+meshes=(bunny00 armadillo elephant fandisk ChineseDragon-10kv)
+data() {
+    local archive=/usr/share/doc/libcgal-dev/data.tar.gz missing=()
+    for m in "${meshes[@]}"; do [ -s "build/data/meshes/$m.off" ] || missing+=("data/meshes/$m.off"); done
+    [ ${#missing[@]} -eq 0 ] && return
+    mkdir -p build
+    tar -xzf "$archive" -C build "${missing[@]}"
 }
 
 build() { # preset
@@ -65,6 +81,14 @@ run_tests() { # preset [ctest args...]: prints every "[cases]" line and the summ
 }
 
 case "${1:-}" in
+audit)
+    setup
+    data
+    cmake --preset release -Wno-dev >/dev/null
+    cmake --build --preset release --target incidence_audit
+    ./build/release/tools/audit/incidence-audit all --scene build/data/meshes/bunny00.off --out audit-report
+    echo "open $(pwd)/audit-report/report.html in a browser"
+    ;;
 demo)
     setup
     build release
@@ -72,6 +96,7 @@ demo)
     ;;
 test)
     setup
+    data
     start=$(date +%s)
     echo "== release build: unit, oracle, static, consumer-from-install, benchmark smoke, corpus replay"
     build release
@@ -86,7 +111,7 @@ test)
     echo "$total_passed passed, $total_failed failed"
     ;;
 *)
-    echo "usage: $0 demo | test" >&2
+    echo "usage: $0 audit | test | demo" >&2
     exit 2
     ;;
 esac

@@ -1,4 +1,5 @@
-// ray3 x triangle3 (and segment3 x triangle3 on the same bytes): differential against CGAL
+// ray3 x triangle3 (and segment3 x triangle3 and triangle3 x triangle3 on the same bytes: the
+// second triangle is the ray's two points and doubles 15..17): differential against CGAL
 // Epeck for the exact tier; conservative never misses, aggressive never lies, classify is never
 // wrong; both argument orders agree; every tier and intersection() survive raw bit patterns
 // (NaN, infinities, subnormals, zero directions, degenerate triangles). Any finding aborts.
@@ -14,11 +15,12 @@ using namespace incidence;
 
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    double v[15] = {};
+    double v[18] = {};
     std::memcpy(v, data, size < sizeof v ? size : sizeof v);
     const ray3 r{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
     const segment3 s{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
     const triangle3 t{{v[6], v[7], v[8]}, {v[9], v[10], v[11]}, {v[12], v[13], v[14]}};
+    const triangle3 u{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}, {v[15], v[16], v[17]}};
     // Every tier and every find must finish on any bits.
     (void)intersects<approximate>(r, t);
     (void)intersects<conservative>(r, t);
@@ -27,16 +29,23 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const auto h = intersection(r, t);
     (void)intersection<approximate>(r, t);
     (void)intersection(s, t);
+    (void)intersects<approximate>(u, t);
+    (void)intersects<conservative>(u, t);
+    (void)intersects<aggressive>(t, u);
+    (void)method::triangle_triangle_sat(u, t);
     bool finite = true;
     for (double x : v) finite = finite && std::isfinite(x);
     if (!finite) {
         if (intersects<exact>(r, t) || h) std::abort(); // the exact tier says no for NaN/inf input
+        if (intersects<exact>(u, t)) std::abort();
         return 0;
     }
     if (oracle::triangle_is_degenerate(v + 6, v + 9, v + 12)) {
         (void)intersects<exact>(r, t);
         return 0; // CGAL's do_intersect requires a non-degenerate triangle
     }
+    if (!oracle::triangle_is_degenerate(v, v + 3, v + 15)) contracts(u, t, oracle::triangle_triangle(v, v + 3, v + 15, v + 6, v + 9, v + 12));
+    else (void)intersects<exact>(u, t);
     if (!(v[3] == 0 && v[4] == 0 && v[5] == 0)) contracts(r, t, oracle::ray_triangle(v, v + 3, v + 6, v + 9, v + 12));
     if (!(v[0] == v[3] && v[1] == v[4] && v[2] == v[5])) contracts(s, t, oracle::segment_triangle(v, v + 3, v + 6, v + 9, v + 12));
     return 0;

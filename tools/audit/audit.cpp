@@ -35,11 +35,11 @@ struct options {
     std::string command = "all";
     std::string scene;
     std::string out = "audit-report";
-    long cases = 200;   // per level and setting
+    long cases = 500;    // per level and setting
     long tradeoff_cases = 6000;
     std::uint64_t seed = 20261122;
-    int reps = 5;
-    int rays = 16;      // camera rays per side
+    int reps = 7;
+    int rays = 24;       // camera rays per side
     long pairs = 400000; // cap on near (non-adjacent) triangle pairs
     bool report = true;
 };

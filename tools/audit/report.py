@@ -7,6 +7,7 @@ import base64
 import html
 import io
 import json
+import math
 import sys
 
 import matplotlib
@@ -44,6 +45,13 @@ def esc(x):
     return html.escape(str(x))
 
 
+def offset_text(x):
+    if x == 0:
+        return "0"
+    e = math.log2(abs(x))
+    return f"2<sup>{int(e)}</sup>" if e == int(e) else f"{x:g}"
+
+
 def pct(num, den):
     return 100.0 * num / den if den else 0.0
 
@@ -68,7 +76,7 @@ def stability_section(d):
              f"(k = 0..60, left), or moves one coordinate by 0..8 ulps (right). Every point is "
              f"{st['cases_per_level_and_setting']} cases in each of {len(settings)} coordinate settings "
              f"(offsets from the origin and scales 2<sup>e</sup>: "
-             + ", ".join(f"offset {s['offset']:g}, 2<sup>{s['scale_exp']}</sup>" for s in settings)
+             + ", ".join(f"offset {offset_text(s['offset'])}, scale 2<sup>{s['scale_exp']}</sup>" for s in settings)
              + "). Wrong means different from the exact tier. Conservative may only err towards yes and "
              "aggressive only towards no (dashed): those are their contracts, and a broken contract is "
              "counted separately.</p>"]
@@ -102,9 +110,24 @@ def stability_section(d):
         for m in fam["methods"]:
             rows.append([esc(m["name"])] + [f"{s['wrong']:,} / {s['cases']:,}" for s in m["by_setting"]])
         parts.append("<details><summary>wrong answers by coordinate setting</summary>" + table(
-            ["method"] + [f"offset {s['offset']:g}, 2^{s['scale_exp']}" for s in settings], rows, "small") + "</details>")
-    parts.insert(1, "<h3>All families</h3>" + table(
-        ["family", "method", "kind", "wrong", "cases", "false yes", "false no", "contract violations"], summary, "small"))
+            ["method"] + [f"offset {offset_text(s['offset'])}, scale 2<sup>{s['scale_exp']}</sup>" for s in settings], rows,
+            "small") + "</details>")
+    common = ["exact", "conservative", "aggressive", "approximate", "signs_in_double", "cgal_epick"]
+    head_rows = []
+    for fam in st["families"]:
+        by = {m["name"]: m for m in fam["methods"]}
+
+        def cell(m):
+            w, n = sum(m["wrong"]), sum(m["cases"])
+            cls = "bad" if m["contract_violations"] else ("ok" if w == 0 else "")
+            return f'<span class="{cls}">{pct(w, n):.2f}%</span>'
+        alts = ", ".join(f"{esc(m['name'])} {cell(m)}" for m in fam["methods"] if m["kind"] == "alternative")
+        head_rows.append([esc(fam["name"])] + [cell(by[c]) if c in by else "&ndash;" for c in common] + [alts or "&ndash;"])
+    parts.insert(1, "<h3>Wrong answers over all levels and settings</h3>" + table(
+        ["family"] + common + ["alternatives"], head_rows) +
+        "<details><summary>counts per method (false yes, false no, contract violations)</summary>" + table(
+        ["family", "method", "kind", "wrong", "cases", "false yes", "false no", "contract violations"], summary, "small") +
+        "</details>")
     return "\n".join(parts)
 
 
@@ -134,6 +157,7 @@ def tradeoff_section(d):
         ax.plot([m["ns_near"] for m in front], [100 * m["error_rate_near"] for m in front], color="#888", lw=1, zorder=2)
         ax.set_xscale("log")
         ax.set_yscale("symlog", linthresh=0.1)
+        ax.set_ylim(0, 200)
         ax.set_title(fam["name"], fontsize=10)
         ax.set_xlabel("ns per test (near-degenerate)", fontsize=8)
         ax.set_ylabel("wrong, %", fontsize=8)
