@@ -6,3 +6,4 @@ export import incidence.predicates;
 export import incidence.shapes;
 export import incidence.query;
 export import incidence.catalog;
+export import incidence.bound;

@@ -13,6 +13,8 @@ enum class errc : unsigned char {
     inverted_box,        // an AABB has min > max on some axis
     degenerate_triangle, // the three vertices are collinear (exactly)
     degenerate_segment,  // both end points coincide
+    empty_input,         // a construction was given no points
+    out_of_range,        // a derived value (a sum, a radius) overflows binary64
 };
 
 struct error {
@@ -26,6 +28,8 @@ struct error {
         case errc::inverted_box: return "the box has min > max on some axis";
         case errc::degenerate_triangle: return "the triangle's vertices are collinear (zero area)";
         case errc::degenerate_segment: return "the segment's end points coincide";
+        case errc::empty_input: return "no input points";
+        case errc::out_of_range: return "a derived value (a coordinate sum or a radius) overflows binary64";
         }
         return "unknown error";
     }

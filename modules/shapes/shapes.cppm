@@ -7,3 +7,4 @@ export import :plane3;
 export import :sphere3;
 export import :aabb3;
 export import :triangle3;
+export import :kdop;

@@ -2,6 +2,12 @@
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Cartesian.h>
+#include <CGAL/Min_sphere_annulus_d_traits_3.h>
+#include <CGAL/Min_sphere_d.h>
+#include <CGAL/Min_sphere_of_spheres_d.h>
+#include <CGAL/Min_sphere_of_spheres_d_traits_3.h>
+#include <vector>
 #include <CGAL/intersections.h>
 #include <CGAL/squared_distance_3.h>
 #include <cmath>
@@ -192,6 +198,29 @@ bool is_rounded_ray_ball_t(const double o[3], const double d[3], const double c[
     return upper_ok && lower_ok;
 }
 
+bool is_rounded_min_sphere_sqradius(const double* xyz, unsigned long n, double x) {
+    using KQ = CGAL::Cartesian<Q>;
+    std::vector<KQ::Point_3> pts;
+    for (unsigned long i = 0; i < n; ++i) pts.emplace_back(Q(xyz[3 * i]), Q(xyz[3 * i + 1]), Q(xyz[3 * i + 2]));
+    CGAL::Min_sphere_d<CGAL::Min_sphere_annulus_d_traits_3<KQ>> ms(pts.begin(), pts.end());
+    return nearest(Q(ms.squared_radius()), x);
+}
+bool all_in_ball(const double* xyz, unsigned long n, const double c[3], double r) {
+    const Q cx(c[0]), cy(c[1]), cz(c[2]), rr = Q(r) * Q(r);
+    for (unsigned long i = 0; i < n; ++i) {
+        const Q dx = Q(xyz[3 * i]) - cx, dy = Q(xyz[3 * i + 1]) - cy, dz = Q(xyz[3 * i + 2]) - cz;
+        if (dx * dx + dy * dy + dz * dz > rr) return false;
+    }
+    return true;
+}
+double min_sphere_of_spheres_epick(const double* xyz, unsigned long n) {
+    using Traits = CGAL::Min_sphere_of_spheres_d_traits_3<KI, double>;
+    std::vector<Traits::Sphere> s;
+    s.reserve(n);
+    for (unsigned long i = 0; i < n; ++i) s.emplace_back(KI::Point_3(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]), 0.0);
+    CGAL::Min_sphere_of_spheres_d<Traits> ms(s.begin(), s.end());
+    return CGAL::to_double(ms.radius());
+}
 bool ray_triangle_epick(const double o[3], const double d[3], const double a[3], const double b[3], const double c[3]) {
     return CGAL::do_intersect(KI::Ray_3(P<KI>(o), V<KI>(d)), KI::Triangle_3(P<KI>(a), P<KI>(b), P<KI>(c)));
 }

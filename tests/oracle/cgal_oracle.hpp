@@ -39,6 +39,14 @@ bool is_rounded_ray_box_t(const double o[3], const double d[3], const double mn[
 // of the quadratic at the midpoints around x (an algebraic check independent of the library).
 bool is_rounded_ray_ball_t(const double o[3], const double d[3], const double c[3], double r, double x);
 
+// The exact minimum enclosing sphere's squared radius (CGAL Min_sphere_d over exact rationals):
+// is x its nearest double? xyz holds n points as x0 y0 z0 x1 ...
+bool is_rounded_min_sphere_sqradius(const double* xyz, unsigned long n, double x);
+// Is every point inside the closed ball (c, r)? Exact.
+bool all_in_ball(const double* xyz, unsigned long n, const double c[3], double r);
+// CGAL Min_sphere_of_spheres_d with Epick (double) for timing: returns the radius.
+double min_sphere_of_spheres_epick(const double* xyz, unsigned long n);
+
 // Epick (filtered, inexact constructions) versions for the benchmarks.
 bool ray_triangle_epick(const double o[3], const double d[3], const double a[3], const double b[3], const double c[3]);
 bool ray_box_epick(const double o[3], const double d[3], const double mn[3], const double mx[3]);
