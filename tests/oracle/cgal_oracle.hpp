@@ -47,6 +47,14 @@ bool all_in_ball(const double* xyz, unsigned long n, const double c[3], double r
 // CGAL Min_sphere_of_spheres_d with Epick (double) for timing: returns the radius.
 double min_sphere_of_spheres_epick(const double* xyz, unsigned long n);
 
+// Bounding-volume references (cgal_hull.cpp): the convex hull's volume and area (CGAL
+// convex_hull_3, Epick; 0 when flat), the hull's build time, and the volume and area of
+// { x : lo_i <= d_i . x <= hi_i } (CGAL halfspace_intersection_3; `inside` strictly inside).
+void hull_volume_area(const double* xyz, unsigned long n, double& volume, double& area);
+double hull_time_ms(const double* xyz, unsigned long n, unsigned long& vertices);
+void halfspaces_volume_area(const double* dirs, const double* lo, const double* hi, unsigned long m, const double inside[3],
+                            double& volume, double& area);
+
 // Epick (filtered, inexact constructions) versions for the benchmarks.
 bool ray_triangle_epick(const double o[3], const double d[3], const double a[3], const double b[3], const double c[3]);
 bool ray_box_epick(const double o[3], const double d[3], const double mn[3], const double mx[3]);

@@ -22,6 +22,7 @@
 #include <unistd.h>
 #include <vector>
 import incidence;
+#include "bounding.hpp"
 #include "generators.hpp"
 #include "json.hpp"
 #include "mesh_io.hpp"
@@ -493,10 +494,22 @@ void scene(audit::json& j, const options& o) {
         std::snprintf(buf, sizeof buf, " The %s tier (%.0f ms) gave %ld wrong answers.", name, t.ms, t.wrong);
         text += buf;
     }
+    progress("scene: bounding volumes");
+    const auto bv = audit::measure_bounding_volumes(std::span<const point3>(mesh.vertices), o.reps);
+    progress_done();
     j.key("advice").object().kv("tier", best).kv("uncertain", uncertain).kv("tests", tests).kv("text", text);
-    j.kv("bounding_volume", "not measured: the library has no bounding-volume constructions yet").end_object();
+    j.kv("bounding_volume", bv.advice).end_object();
+    j.key("bounding_volumes").object().kv("hull_volume", bv.hull_volume).kv("hull_area", bv.hull_area);
+    j.kv("hull_vertices", long(bv.hull_vertices)).kv("tightness_rule", bv.tightness_rule).key("rows").array();
+    for (const auto& r : bv.rows) {
+        j.object().kv("kind", r.kind).kv("source", r.source).kv("ours", r.ours).kv("build_ms", r.build_ms);
+        j.kv("volume_ratio", r.volume_ratio).kv("area_ratio", r.area_ratio).kv("test_ns", r.test_ns).kv("contains_all", r.contains_all).end_object();
+        if (r.ours && !r.contains_all) ++total_violations;
+    }
+    j.end_array().end_object();
     j.end_object();
-    std::printf("scene %s: %zu triangles; advice: %s\n", o.scene.c_str(), tris.size(), text.c_str());
+    std::printf("scene %s: %zu triangles; advice: %s\nbounding volume: %s\n", o.scene.c_str(), tris.size(), text.c_str(),
+                bv.advice.c_str());
 }
 
 // --- main ------------------------------------------------------------------------------------

@@ -178,7 +178,7 @@ def scene_section(d):
              f"<p><b>{esc(sc['file'])}</b>: {sc['vertices']:,} vertices, {sc['triangles']:,} triangles, "
              f"{sc['camera_rays']:,} camera rays.</p>",
              f'<div class="advice"><b>Advice: the {esc(adv["tier"])} tier.</b> {esc(adv["text"])}<br>'
-             f'Bounding volumes: {esc(adv["bounding_volume"])}.</div>']
+             f'<b>Bounding volume:</b> {esc(adv["bounding_volume"])}</div>']
     ws = sc["workloads"]
     fig, axes = plt.subplots(1, len(ws), figsize=(3.2 * len(ws), 3.4), squeeze=False)
     for k, w in enumerate(ws):
@@ -206,6 +206,32 @@ def scene_section(d):
                      f"{w['uncertain']:,} of them undecided by the filter.</p>" + table(
                          ["method", "kind", "ms", "tests", "wrong", "false yes", "false no",
                           "holes (rays hitting none of the triangles there)"], rows, "small"))
+    bv = sc["bounding_volumes"]
+    ours = [r for r in bv["rows"] if r["ours"]]
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 3.6))
+    for i, r in enumerate(ours):
+        c = EXTRA[i % len(EXTRA)] if "sphere" in r["kind"] else STYLE["conservative"][0]
+        a1.scatter([r["test_ns"]], [r["volume_ratio"]], color=c, s=30)
+        a1.annotate(r["kind"], (r["test_ns"], r["volume_ratio"]), fontsize=7, xytext=(3, 2), textcoords="offset points")
+        a2.scatter([max(r["build_ms"], 1e-4)], [r["volume_ratio"]], color=c, s=30)
+        a2.annotate(r["kind"], (max(r["build_ms"], 1e-4), r["volume_ratio"]), fontsize=7, xytext=(3, 2), textcoords="offset points")
+    for r in bv["rows"]:
+        if not r["ours"]:
+            a2.scatter([max(r["build_ms"], 1e-4)], [r["volume_ratio"]], color="#2ca02c", marker="s", s=30)
+            a2.annotate(r["kind"], (max(r["build_ms"], 1e-4), r["volume_ratio"]), fontsize=7, xytext=(3, 2),
+                        textcoords="offset points", color="#2ca02c")
+    a1.set_xlabel("ns per overlap test"), a1.set_ylabel("volume / convex hull volume"), a1.set_title("tightness against test cost")
+    a2.set_xscale("log"), a2.set_xlabel("build ms"), a2.set_title("tightness against build time")
+    for a in (a1, a2):
+        a.set_yscale("log"), a.grid(alpha=0.3)
+    fig.tight_layout()
+    rows = [[esc(r["kind"]), esc(r["source"]), f"{r['build_ms']:.3f}", f"{r['volume_ratio']:.3f}", f"{r['area_ratio']:.3f}",
+             f"{r['test_ns']:.1f}" if r["ours"] else "&ndash;",
+             ("yes" if r["contains_all"] else '<b class="bad">NO</b>') if r["ours"] else "&ndash;"] for r in bv["rows"]]
+    parts.append(f"<h3>Bounding volumes</h3><p>Relative to the convex hull ({bv['hull_vertices']:,} vertices). Every "
+                 "volume of ours is checked exactly to contain every vertex.</p>" + img(png(fig), "bounding volumes") +
+                 table(["volume", "construction", "build ms", "volume / hull", "area / hull", "ns per test",
+                        "contains every vertex"], rows, "small"))
     return "\n".join(parts)
 
 

@@ -221,6 +221,28 @@ best = sc["advice"]["tier"]
 ok = [t for t in sc["tiers"] if t["wrong"] == 0]
 check(best == min(ok, key=lambda t: t["ms"])["name"], "advice = cheapest tier without a mistake")
 
+bv = sc["bounding_volumes"]
+kinds = [r["kind"] for r in bv["rows"] if r["ours"]]
+for k in ["aabb", "6-dop", "14-dop", "18-dop", "26-dop", "sphere (aabb)", "sphere (aabb, farthest)", "sphere (Ritter)",
+          "sphere (Welzl, exact)"]:
+    check(k in kinds, f"bounding volume {k} measured")
+for r in bv["rows"]:
+    if r["ours"]:
+        check(r["contains_all"], f"{r['kind']} contains every vertex")
+        check(r["volume_ratio"] >= 1.0 - 1e-9, f"{r['kind']} is not smaller than the convex hull")
+rows = {r["kind"]: r for r in bv["rows"]}
+check(abs(rows["aabb"]["volume_ratio"] - rows["6-dop"]["volume_ratio"]) <= 1e-9 * rows["aabb"]["volume_ratio"],
+      "the 6-DOP is the AABB")
+check(abs(rows["sphere (Welzl, exact)"]["volume_ratio"] - rows["CGAL min sphere"]["volume_ratio"]) <= 1e-9 *
+      rows["CGAL min sphere"]["volume_ratio"], "Welzl's sphere = CGAL's minimum sphere")
+check(rows["sphere (Welzl, exact)"]["volume_ratio"] <= rows["sphere (Ritter)"]["volume_ratio"], "Welzl <= Ritter")
+# the octahedron's vertices are its hull: volume of the subdivided octahedron checked independently here
+vol = 0.0
+for a, b, c in faces:
+    p, q, r = verts[a], verts[b], verts[c]
+    vol += (p[0] * (q[1] * r[2] - q[2] * r[1]) - p[1] * (q[0] * r[2] - q[2] * r[0]) + p[2] * (q[0] * r[1] - q[1] * r[0])) / 6
+check(math.isclose(abs(vol), bv["hull_volume"], rel_tol=1e-9), f"hull volume {bv['hull_volume']} vs {abs(vol)}")
+
 # 3. recompute a sample with CGAL Epeck as the truth
 sample_levels = [0, 25, 45, 60, 61, 62, 69]
 st = {f["name"]: f for f in d["stability"]["families"]}
@@ -241,7 +263,7 @@ print(f"[cases] audit recomputed against CGAL Epeck: {points} method x level poi
 with open(os.path.join(out, "report.html")) as f:
     page = f.read()
 n_img = page.count('src="data:image/png;base64,')
-check(n_img == len(families) + 2, f"report images: {n_img}")
+check(n_img == len(families) + 3, f"report images: {n_img}")
 check("http://" not in page and "https://" not in page, "report needs no network")
 
 print(f"[cases] audit output: {len(failures)} failures")
