@@ -3,17 +3,21 @@
 // current ball" decision is exact: the ball of a support set (1 to 4 affinely independent
 // points on its boundary, centre in their affine hull) is computed in exact rationals, and a
 // rigorous double filter (rounded centre, a proven bound on its distance to the exact centre,
-// proven bounds on the radius) settles all but the nearly cospherical points. The returned
+// proven bounds on the radius) settles all but the nearly cospherical points. Exact values are
+// integers: all coordinates are scaled by one power of two, so a centre is N / D and a squared
+// radius R / D^2 with integer N, D, R, and no rational normalisation (gcd) is ever needed. The returned
 // centre is the exact centre rounded to nearest; the radius is then rounded outward against
 // exact tests, so every input point is provably inside. `squared_radius` is the exact minimum
 // squared radius, correctly rounded.
 // Source: Welzl, "Smallest enclosing disks (balls and ellipsoids)", LNCS 555 (1991); move-to-
 // front and the support-set ball as in Gaertner, "Fast and robust smallest enclosing balls",
-// ESA 1999, sections 2-3. Exact rationals: Boost.Multiprecision cpp_rational (heap-allocating:
-// a construction, not a scalar query).
+// ESA 1999, sections 2-3. Exact integers: Boost.Multiprecision cpp_int (heap-allocating: a
+// construction, not a scalar query).
 module;
+#include <algorithm>
 #include <array>
 #include <bit>
+#include <cmath>
 #include <boost/multiprecision/cpp_int.hpp>
 #include <cstdint>
 #include <random>
@@ -34,78 +38,130 @@ struct min_sphere {
 };
 
 namespace welzl_detail {
-using Q = boost::multiprecision::cpp_rational;
-struct qv {
-    Q x, y, z;
+// Exact integers: every input coordinate times 2^shift is an integer (one shift for the set), so
+// centres are N / D with integer N, D and squared radii R / D^2: no rational normalisation.
+using I = boost::multiprecision::cpp_int;
+struct iv {
+    I x, y, z;
 };
-inline qv q(point3 p) { return {Q(p.x), Q(p.y), Q(p.z)}; }
-inline qv operator-(const qv& a, const qv& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-inline qv operator+(const qv& a, const qv& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-inline qv operator*(const qv& a, const Q& s) { return {a.x * s, a.y * s, a.z * s}; }
-inline Q dot(const qv& a, const qv& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-inline qv cross(const qv& a, const qv& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+inline iv operator-(const iv& a, const iv& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline iv operator+(const iv& a, const iv& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+inline iv operator*(const iv& a, const I& s) { return {a.x * s, a.y * s, a.z * s}; }
+inline I dot(const iv& a, const iv& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline iv cross(const iv& a, const iv& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 
-// The nearest double to an exact rational (ties to even), by exact midpoint comparisons.
-inline double nearest(const Q& x) {
-    double r = x.convert_to<double>();
-    for (int i = 0; i < 8 && is_finite(r); ++i) {
+// x = m * 2^e with an integer m (|m| < 2^53), for finite x.
+inline I mantissa(double x, int& e) {
+    if (x == 0.0) {
+        e = 0;
+        return I(0);
+    }
+    int ex = 0;
+    const double f = std::frexp(x, &ex);
+    e = ex - 53;
+    return I(static_cast<long long>(std::ldexp(f, 53)));
+}
+inline I shifted(I v, int k) { return k >= 0 ? I(v << k) : I(v >> -k); } // exact when the low bits are zero
+inline I to_int(double x, int shift) {
+    int e = 0;
+    const I m = mantissa(x, e);
+    return shifted(m, e + shift);
+}
+inline iv to_iv(point3 p, int shift) { return {to_int(p.x, shift), to_int(p.y, shift), to_int(p.z, shift)}; }
+
+// n / (d 2^s) in double, relative error below 2^-51 unless it over- or underflows (d > 0).
+inline double ratio(const I& n, const I& d, int s) {
+    if (n == 0) return 0.0;
+    const I an = n < 0 ? I(-n) : n;
+    const int bn = int(boost::multiprecision::msb(an)), bd = int(boost::multiprecision::msb(d));
+    const int kn = bn > 62 ? bn - 62 : 0, kd = bd > 62 ? bd - 62 : 0;
+    const double q = I(an >> kn).convert_to<double>() / I(d >> kd).convert_to<double>();
+    const double r = std::ldexp(q, kn - kd - s);
+    return n < 0 ? -r : r;
+}
+// sign(n / (d 2^s) - x) for a double x (d > 0), exactly.
+inline int compare(const I& n, const I& d, int s, double x) {
+    int e = 0;
+    const I m = mantissa(x, e); // x = m 2^e: compare n vs m d 2^(e + s)
+    const int k = e + s;
+    const I lhs = k >= 0 ? n : I(n << -k), rhs = k >= 0 ? I((m * d) << k) : I(m * d);
+    return lhs < rhs ? -1 : (lhs > rhs ? 1 : 0);
+}
+// The midpoint of two adjacent finite doubles, as m 2^e.
+inline I midpoint(double a, double b, int& e) {
+    int ea = 0, eb = 0;
+    I ma = mantissa(a, ea), mb = mantissa(b, eb);
+    if (a == 0.0) ea = eb;
+    if (b == 0.0) eb = ea;
+    const int lo = ea < eb ? ea : eb;
+    e = lo - 1; // (a + b) / 2 = (ma 2^(ea - lo) + mb 2^(eb - lo)) 2^(lo - 1)
+    return I(ma << (ea - lo)) + I(mb << (eb - lo));
+}
+inline int compare_mid(const I& n, const I& d, int s, double a, double b) {
+    int e = 0;
+    const I m = midpoint(a, b, e);
+    const int k = e + s;
+    const I lhs = k >= 0 ? n : I(n << -k), rhs = k >= 0 ? I((m * d) << k) : I(m * d);
+    return lhs < rhs ? -1 : (lhs > rhs ? 1 : 0);
+}
+// n / (d 2^s) rounded to nearest, ties to even (d > 0).
+inline double nearest(const I& n, const I& d, int s) {
+    double r = ratio(n, d, s);
+    if (!is_finite(r)) return r;
+    for (int i = 0; i < 8; ++i) {
         const double up = arith::next_up(r), dn = arith::next_down(r);
-        if (is_finite(up) && x > (Q(r) + Q(up)) / 2) { r = up; continue; }
-        if (is_finite(dn) && x < (Q(r) + Q(dn)) / 2) { r = dn; continue; }
-        if (is_finite(up) && x == (Q(r) + Q(up)) / 2 && (std::bit_cast<std::uint64_t>(r) & 1u)) r = up;
-        if (is_finite(dn) && x == (Q(r) + Q(dn)) / 2 && (std::bit_cast<std::uint64_t>(r) & 1u)) r = dn;
+        const int cu = is_finite(up) ? compare_mid(n, d, s, r, up) : -1;
+        const int cd = is_finite(dn) ? compare_mid(n, d, s, dn, r) : 1;
+        if (cu > 0) { r = up; continue; }
+        if (cd < 0) { r = dn; continue; }
+        if ((cu == 0 || cd == 0) && (std::bit_cast<std::uint64_t>(r) & 1u)) r = cu == 0 ? up : dn;
         break;
     }
     return r;
 }
 
 struct ball {
-    qv c;     // exact centre
-    Q r2;     // exact squared radius
-    // Filter data, all proven: |c - cd| <= delta, r_lo <= sqrt(r2) <= r_hi.
+    iv N;     // centre = N / (D 2^shift)
+    I D;      // > 0
+    I R;      // squared radius = R / (D 2^shift)^2
+    // Filter data, all proven: |c - cd| <= delta, r_lo <= radius <= r_hi.
     point3 cd{};
     double delta = 0, r_lo = 0, r_hi = 0;
     bool filter = false;
 };
 
 // The smallest ball with the support points on its boundary (affinely independent, 1..4).
-inline ball through(const std::array<point3, 4>& s, int n) {
+inline ball through(const std::array<point3, 4>& s, int n, int shift) {
     ball b;
-    const qv a = q(s[0]);
+    const iv A = to_iv(s[0], shift);
     if (n == 1) {
-        b.c = a;
+        b.N = A, b.D = 1;
     } else if (n == 2) {
-        b.c = (a + q(s[1])) * Q(1, 2);
+        b.N = A + to_iv(s[1], shift), b.D = 2;
     } else if (n == 3) {
-        const qv u = q(s[1]) - a, v = q(s[2]) - a, w = cross(u, v);
-        const Q den = 2 * dot(w, w);
-        b.c = a + (cross(v, w) * dot(u, u) + cross(w, u) * dot(v, v)) * (1 / den);
+        const iv u = to_iv(s[1], shift) - A, v = to_iv(s[2], shift) - A, w = cross(u, v);
+        b.D = 2 * dot(w, w);
+        b.N = A * b.D + cross(v, w) * dot(u, u) + cross(w, u) * dot(v, v);
     } else {
-        const qv u = q(s[1]) - a, v = q(s[2]) - a, w = q(s[3]) - a;
-        const Q den = 2 * dot(u, cross(v, w));
-        b.c = a + (cross(v, w) * dot(u, u) + cross(w, u) * dot(v, v) + cross(u, v) * dot(w, w)) * (1 / den);
+        const iv u = to_iv(s[1], shift) - A, v = to_iv(s[2], shift) - A, w = to_iv(s[3], shift) - A;
+        b.D = 2 * dot(u, cross(v, w));
+        b.N = A * b.D + cross(v, w) * dot(u, u) + cross(w, u) * dot(v, v) + cross(u, v) * dot(w, w);
+        if (b.D < 0) b.D = -b.D, b.N = {-b.N.x, -b.N.y, -b.N.z};
     }
-    const qv d = a - b.c;
-    b.r2 = dot(d, d);
-    // Filter data, each bound checked exactly.
-    b.cd = {nearest(b.c.x), nearest(b.c.y), nearest(b.c.z)};
-    if (!is_finite(b.cd)) return b;
-    const qv e = q(b.cd) - b.c;
-    const Q e2 = dot(e, e);
-    double delta = arith::sqrt(e2.convert_to<double>()) * (1 + 0x1p-40) + 0x1p-1060;
-    while (is_finite(delta) && Q(delta) * Q(delta) < e2) delta *= 2;
-    const double r = arith::sqrt(nearest(b.r2));
-    if (!is_finite(r) || !is_finite(delta)) return b; // squares beyond binary64: exact tests only
-    double lo = r * (1 - 0x1p-40), hi = r * (1 + 0x1p-40) + 0x1p-1060;
-    while (lo > 0 && Q(lo) * Q(lo) > b.r2) lo *= 0.5;
-    while (is_finite(hi) && Q(hi) * Q(hi) < b.r2) hi *= 2;
-    if (!is_finite(delta) || !is_finite(hi) || !is_finite(r)) return b;
-    b.delta = delta, b.r_lo = lo, b.r_hi = hi, b.filter = true;
+    const iv e = A * b.D - b.N;
+    b.R = dot(e, e);
+    b.cd = {nearest(b.N.x, b.D, shift), nearest(b.N.y, b.D, shift), nearest(b.N.z, b.D, shift)};
+    const double m = std::max({std::abs(b.cd.x), std::abs(b.cd.y), std::abs(b.cd.z)});
+    const double r = std::sqrt(ratio(b.R, b.D * b.D, 2 * shift));
+    if (!is_finite(m) || !is_finite(r) || m > 0x1p900 || (r != 0 && (r < 0x1p-900 || r > 0x1p900))) return b;
+    b.delta = m * 0x1p-48 + 0x1p-1000;
+    b.r_lo = r * (1 - 0x1p-44), b.r_hi = r * (1 + 0x1p-44) + 0x1p-1000;
+    b.filter = true;
     return b;
 }
 
 // Is p strictly outside the exact ball?
-inline bool outside(const ball& b, point3 p) {
+inline bool outside(const ball& b, point3 p, int shift) {
     if (b.filter) {
         const double d = length(p - b.cd); // within 3 ulps of |p - cd| (no over/underflow of squares)
         if (is_finite(d) && d > 0x1p-900 && d < 0x1p900) {
@@ -113,12 +169,13 @@ inline bool outside(const ball& b, point3 p) {
             if (d * (1 - 0x1p-45) - b.delta > b.r_hi) return true;
         }
     }
-    const qv e = q(p) - b.c;
-    return dot(e, e) > b.r2;
+    const iv e = to_iv(p, shift) * b.D - b.N;
+    return dot(e, e) > b.R;
 }
 
 struct solver {
     std::span<const point3> pts;
+    int shift = 0;
     std::vector<std::uint32_t> next, prev; // the move-to-front list over point indices
     std::uint32_t head = 0;
     static constexpr std::uint32_t none = ~std::uint32_t{0};
@@ -140,9 +197,9 @@ struct solver {
         if (n == 4) return;
         for (std::uint32_t i = head; i != end && i != none;) {
             const std::uint32_t nx = next[i];
-            if (!have || outside(current, pts[i])) {
+            if (!have || outside(current, pts[i], shift)) {
                 support[static_cast<unsigned>(n)] = pts[i], support_index[static_cast<unsigned>(n)] = i, ++n;
-                current = through(support, n);
+                current = through(support, n, shift);
                 have = true;
                 best_support.assign(support_index.begin(), support_index.begin() + n);
                 mtf(i);
@@ -163,6 +220,15 @@ struct solver {
     const auto n = static_cast<std::uint32_t>(points.size());
     welzl_detail::solver s;
     s.pts = points;
+    int emin = 1 << 20;
+    for (const point3& p : points)
+        for (double x : {p.x, p.y, p.z})
+            if (x != 0.0) {
+                int e = 0;
+                (void)welzl_detail::mantissa(x, e);
+                emin = e < emin ? e : emin;
+            }
+    s.shift = emin == (1 << 20) ? 0 : -emin; // every coordinate times 2^shift is an integer
     s.next.resize(n), s.prev.resize(n);
     std::vector<std::uint32_t> order(n);
     for (std::uint32_t i = 0; i < n; ++i) order[i] = i;
@@ -178,12 +244,12 @@ struct solver {
     // The support of the final ball: the points exactly on its boundary among the last support.
     std::vector<std::uint32_t> support;
     for (std::uint32_t i : s.best_support) {
-        const auto e = welzl_detail::q(points[i]) - b.c;
-        if (welzl_detail::dot(e, e) == b.r2) support.push_back(i);
+        const auto e = welzl_detail::to_iv(points[i], s.shift) * b.D - b.N;
+        if (welzl_detail::dot(e, e) == b.R) support.push_back(i);
     }
-    const point3 c = b.filter ? b.cd : point3{welzl_detail::nearest(b.c.x), welzl_detail::nearest(b.c.y), welzl_detail::nearest(b.c.z)};
+    const point3 c = b.cd;
     if (!is_finite(c)) return error{errc::out_of_range};
-    const double r2 = welzl_detail::nearest(b.r2);
+    const double r2 = welzl_detail::nearest(b.R, b.D * b.D, 2 * s.shift);
     const auto r = enclosing_radius(c, points);
     if (!r) return r.error();
     return min_sphere{sphere3{c, r.value()}, r2, support};
