@@ -9,3 +9,4 @@ export import :kdop_of;
 export import :sphere_from_aabb;
 export import :sphere_ritter;
 export import :sphere_welzl;
+export import :convex_hull;

@@ -8,6 +8,7 @@
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/convex_hull_3.h>
+#include <iterator>
 #include <CGAL/Convex_hull_3/dual/halfspace_intersection_3.h>
 #include <algorithm>
 #include <array>
@@ -32,6 +33,21 @@ void hull_volume_area(const double* xyz, unsigned long n, double& volume, double
     CGAL::convex_hull_3(pts.begin(), pts.end(), m);
     volume = area = 0;
     if (m.number_of_faces() > 0 && CGAL::is_closed(m)) measure(m, volume, area);
+}
+
+std::vector<double> hull_vertices_exact(const double* xyz, unsigned long n) {
+    using KE = CGAL::Exact_predicates_exact_constructions_kernel;
+    std::vector<KE::Point_3> pts;
+    for (unsigned long i = 0; i < n; ++i) pts.emplace_back(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+    std::vector<KE::Point_3> ext;
+    CGAL::extreme_points_3(pts, std::back_inserter(ext));
+    std::vector<std::array<double, 3>> v;
+    for (const auto& p : ext) v.push_back({CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    std::vector<double> out;
+    for (const auto& p : v) out.insert(out.end(), p.begin(), p.end());
+    return out;
 }
 
 double hull_time_ms(const double* xyz, unsigned long n, unsigned long& vertices) {

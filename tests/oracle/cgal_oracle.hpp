@@ -3,6 +3,7 @@
 // exact kernel Epeck (exact rationals), or with Epick where the name says so (for timing).
 // Balls, not spheres: CGAL's Sphere_3 is a surface, so ball tests use exact squared distances.
 #pragma once
+#include <vector>
 
 namespace oracle {
 
@@ -51,6 +52,8 @@ double min_sphere_of_spheres_epick(const double* xyz, unsigned long n);
 // convex_hull_3, Epick; 0 when flat), the hull's build time, and the volume and area of
 // { x : lo_i <= d_i . x <= hi_i } (CGAL halfspace_intersection_3; `inside` strictly inside).
 void hull_volume_area(const double* xyz, unsigned long n, double& volume, double& area);
+// The extreme points of the set (CGAL convex_hull_3 with Epeck), sorted, as x y z triples.
+std::vector<double> hull_vertices_exact(const double* xyz, unsigned long n);
 double hull_time_ms(const double* xyz, unsigned long n, unsigned long& vertices);
 void halfspaces_volume_area(const double* dirs, const double* lo, const double* hi, unsigned long m, const double inside[3],
                             double& volume, double& area);
