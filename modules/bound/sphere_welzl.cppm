@@ -152,7 +152,14 @@ inline ball through(const std::array<point3, 4>& s, int n, int shift) {
     b.R = dot(e, e);
     b.cd = {nearest(b.N.x, b.D, shift), nearest(b.N.y, b.D, shift), nearest(b.N.z, b.D, shift)};
     const double m = std::max({std::abs(b.cd.x), std::abs(b.cd.y), std::abs(b.cd.z)});
-    const double r = std::sqrt(ratio(b.R, b.D * b.D, 2 * shift));
+    // radius = sqrt(R) / (D 2^shift), computed as sqrt(R / (D^2 2^(2 shift + 2k))) 2^k with k chosen
+    // so the ratio is near 1: its square never over- or underflows (r^2 is out of range long before r).
+    double r = 0.0;
+    if (b.R != 0) {
+        const int t = int(boost::multiprecision::msb(b.R)) - 2 * int(boost::multiprecision::msb(b.D)) - 2 * shift;
+        const int k = t >= 0 ? t / 2 : -((-t + 1) / 2);
+        r = std::ldexp(std::sqrt(ratio(b.R, b.D * b.D, 2 * shift + 2 * k)), k);
+    }
     if (!is_finite(m) || !is_finite(r) || m > 0x1p900 || (r != 0 && (r < 0x1p-900 || r > 0x1p900))) return b;
     b.delta = m * 0x1p-48 + 0x1p-1000;
     b.r_lo = r * (1 - 0x1p-44), b.r_hi = r * (1 + 0x1p-44) + 0x1p-1000;

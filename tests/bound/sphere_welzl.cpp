@@ -75,3 +75,17 @@ TEST_CASE("sphere_welzl: bad input", "[bound][sphere_welzl]") {
     const point3 nan_pt[] = {{0, 0, 0}, {__builtin_nan(""), 0, 0}};
     CHECK(bound::sphere_welzl(std::span<const point3>(nan_pt)).error().code == errc::not_finite);
 }
+
+TEST_CASE("sphere_welzl: fuzzer regression, nearly collinear points at 2^-871", "[bound][sphere_welzl]") {
+    const point3 pts[] = {{-0x1.0000000000000p-879, -0x1.9898989898989p-871, -0x1.9898989898989p-871},
+                          {-0x1.989767f898989p-871, -0x1.9898989898989p-871, -0x1.9898989898989p-871},
+                          {-0x1.9898989898989p-871, -0x1.9898989898989p-871, -0x1.9898989898989p-871},
+                          {-0x1.9898989898989p-871, -0x1.9898989898989p-871, -0x1.9898989898989p-871},
+                          {-0x1.9898989898989p-871, 0x1.9898989898989p-1015, 0.0}};
+    std::vector<double> xyz;
+    for (const auto& p : pts) xyz.insert(xyz.end(), {p.x, p.y, p.z});
+    const auto w = bound::sphere_welzl(std::span<const point3>(pts));
+    REQUIRE(w);
+    CHECK(oracle::is_rounded_min_sphere_sqradius(xyz.data(), 5, w.value().squared_radius));
+    CHECK(support::all_inside(std::span<const point3>(pts), w.value().sphere));
+}

@@ -54,6 +54,14 @@ double min_sphere_of_spheres_epick(const double* xyz, unsigned long n);
 void hull_volume_area(const double* xyz, unsigned long n, double& volume, double& area);
 // The extreme points of the set (CGAL convex_hull_3 with Epeck), sorted, as x y z triples.
 std::vector<double> hull_vertices_exact(const double* xyz, unsigned long n);
+// qhull's default hull (qhull_peer.cpp): time, vertex count, and whether it failed (for
+// example "QH6154 initial simplex is flat" on coplanar input).
+struct qhull_result {
+    double ms = 0;
+    unsigned long vertices = 0;
+    bool error = false;
+};
+qhull_result qhull_hull(const double* xyz, unsigned long n);
 double hull_time_ms(const double* xyz, unsigned long n, unsigned long& vertices);
 void halfspaces_volume_area(const double* dirs, const double* lo, const double* hi, unsigned long m, const double inside[3],
                             double& volume, double& area);

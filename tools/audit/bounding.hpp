@@ -24,6 +24,8 @@ struct bv_row {
     double build_ms = 0, volume = 0, area = 0, volume_ratio = 0, area_ratio = 0, test_ns = 0;
     bool contains_all = false;
     bool ours = true;
+    unsigned long vertices = 0; // hull rows: vertex count
+    bool failed = false;        // a peer reported an error
 };
 struct bv_report {
     std::vector<bv_row> rows;
@@ -157,16 +159,49 @@ inline bv_report measure_bounding_volumes(std::span<const point3> pts, int reps)
         finish(r);
         bv_row h{"CGAL convex hull", "CGAL convex_hull_3, Epick"};
         h.ours = false;
-        h.build_ms = rep.hull_ms, h.volume = rep.hull_volume, h.area = rep.hull_area;
+        h.build_ms = rep.hull_ms, h.volume = rep.hull_volume, h.area = rep.hull_area, h.vertices = rep.hull_vertices;
         finish(h);
+        bv_row q{"qhull", "qhull 2020.2 (libqhull_r), default options"};
+        q.ours = false;
+        std::vector<double> t;
+        for (int i = 0; i < reps; ++i) {
+            const auto res = oracle::qhull_hull(xyz.data(), pts.size());
+            t.push_back(res.ms), q.vertices = res.vertices, q.failed = res.error;
+        }
+        std::sort(t.begin(), t.end());
+        q.build_ms = t[t.size() / 2];
+        q.volume = rep.hull_volume, q.area = rep.hull_area;
+        finish(q);
+    }
+    {
+        bv_row r{"convex hull", "convex_hull: Quickhull with exact orient3d"};
+        bound::hull h;
+        r.build_ms = median_ms(reps, [&] { h = bound::convex_hull(pts).value(); sink = double(h.vertices.size()); });
+        r.vertices = h.vertices.size();
+        double v = 0, a = 0;
+        for (const auto& t : h.triangles) {
+            const point3 p = h.vertices[t[0]], q = h.vertices[t[1]], w = h.vertices[t[2]];
+            const vec3 u = p - point3{0, 0, 0}, e1 = q - p, e2 = w - p;
+            v += dot(u, cross(q - point3{0, 0, 0}, w - point3{0, 0, 0})) / 6.0;
+            a += 0.5 * std::sqrt(squared_length(cross(e1, e2)));
+        }
+        r.volume = std::abs(v), r.area = a;
+        r.contains_all = true;
+        for (const auto& t : h.triangles) // every point on the inner side of every face (a sample of points)
+            for (std::size_t i = 0; i < pts.size(); i += std::max<std::size_t>(1, pts.size() / 200))
+                r.contains_all = r.contains_all && orient3d(h.vertices[t[0]], h.vertices[t[1]], h.vertices[t[2]], pts[i]) != sign::negative;
+        r.test_ns = 0;
+        finish(r);
     }
     // Advice: among our volumes within the stated factor of the tightest, the cheapest test.
     double best = 1e300;
     for (const auto& r : rep.rows)
-        if (r.ours && r.volume_ratio > 0) best = std::min(best, r.volume_ratio);
+        if (r.ours && r.test_ns > 0 && r.volume_ratio > 0) best = std::min(best, r.volume_ratio);
     const bv_row* pick = nullptr;
     for (const auto& r : rep.rows)
-        if (r.ours && r.volume_ratio > 0 && r.volume_ratio <= best * rep.tightness_rule && (!pick || r.test_ns < pick->test_ns)) pick = &r;
+        if (r.ours && r.test_ns > 0 && r.volume_ratio > 0 && r.volume_ratio <= best * rep.tightness_rule &&
+            (!pick || r.test_ns < pick->test_ns))
+            pick = &r;
     char buf[400];
     if (pick) {
         std::snprintf(buf, sizeof buf, "%s: %.2fx the convex hull's volume (the tightest kind here is %.2fx), %.1f ns per overlap "
