@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <random>
 #include <string>
+#include "../../tools/audit/rng.hpp"
 
 namespace support {
 
@@ -29,14 +30,7 @@ inline long cases(long n) {
     return m < 100 ? 100 : m;
 }
 
-struct rng {
-    std::mt19937_64 g;
-    explicit rng(std::uint64_t s) : g(s) {}
-    double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(g); }
-    int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(g); }
-    bool coin() { return integer(0, 1) == 1; }
-    std::uint64_t bits() { return g(); }
-};
+using rng = audit::rng; // seeded, shared with the audit
 
 inline double nudge(double x, int ulps) {
     for (; ulps > 0; --ulps) x = std::nextafter(x, INFINITY);

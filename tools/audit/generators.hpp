@@ -16,18 +16,11 @@
 #include <cstdint>
 #include <random>
 #include <utility>
+#include "rng.hpp"
 
 namespace audit {
 
 using namespace incidence;
-
-struct rng {
-    std::mt19937_64 g;
-    explicit rng(std::uint64_t s) : g(s) {}
-    double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(g); }
-    int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(g); }
-    bool coin() { return integer(0, 1) == 1; }
-};
 
 // A stream per (seed, family, level, setting): the recomputation test regenerates any of them.
 inline std::uint64_t stream(std::uint64_t seed, unsigned family, int level, unsigned setting) {
