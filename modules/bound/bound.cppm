@@ -10,3 +10,6 @@ export import :sphere_from_aabb;
 export import :sphere_ritter;
 export import :sphere_welzl;
 export import :convex_hull;
+export import :obb_fit;
+export import :obb_covariance;
+export import :obb_min_volume;

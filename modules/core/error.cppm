@@ -15,6 +15,7 @@ enum class errc : unsigned char {
     degenerate_segment,  // both end points coincide
     empty_input,         // a construction was given no points
     out_of_range,        // a derived value (a sum, a radius) overflows binary64
+    not_orthonormal,     // OBB axes far from unit length or from perpendicular
 };
 
 struct error {
@@ -30,6 +31,7 @@ struct error {
         case errc::degenerate_segment: return "the segment's end points coincide";
         case errc::empty_input: return "no input points";
         case errc::out_of_range: return "a derived value (a coordinate sum or a radius) overflows binary64";
+        case errc::not_orthonormal: return "the box axes are far from orthonormal (unit length and perpendicular within 1e-6)";
         }
         return "unknown error";
     }

@@ -8,3 +8,4 @@ export import :sphere3;
 export import :aabb3;
 export import :triangle3;
 export import :kdop;
+export import :obb3;

@@ -7,6 +7,7 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Optimal_bounding_box/oriented_bounding_box.h>
 #include <CGAL/convex_hull_3.h>
 #include <iterator>
 #include <CGAL/Convex_hull_3/dual/halfspace_intersection_3.h>
@@ -48,6 +49,17 @@ std::vector<double> hull_vertices_exact(const double* xyz, unsigned long n) {
     std::vector<double> out;
     for (const auto& p : v) out.insert(out.end(), p.begin(), p.end());
     return out;
+}
+
+double obb_volume_cgal(const double* xyz, unsigned long n, double& ms) {
+    std::vector<KI::Point_3> pts;
+    for (unsigned long i = 0; i < n; ++i) pts.emplace_back(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+    std::array<KI::Point_3, 8> box;
+    const auto t0 = std::chrono::steady_clock::now();
+    CGAL::oriented_bounding_box(pts, box, CGAL::parameters::random_seed(1));
+    ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    const auto a = box[1] - box[0], b = box[3] - box[0], c = box[5] - box[0];
+    return std::abs(CGAL::to_double(a * CGAL::cross_product(b, c)));
 }
 
 double hull_time_ms(const double* xyz, unsigned long n, unsigned long& vertices) {

@@ -205,6 +205,27 @@ bool is_rounded_min_sphere_sqradius(const double* xyz, unsigned long n, double x
     CGAL::Min_sphere_d<CGAL::Min_sphere_annulus_d_traits_3<KQ>> ms(pts.begin(), pts.end());
     return nearest(Q(ms.squared_radius()), x);
 }
+bool all_in_box(const double* xyz, unsigned long n, const double c[3], const double axes[9], const double h[3]) {
+    // s = M^-1 (p - c) by Cramer's rule in exact rationals, M's columns the axes.
+    const Q a[3][3] = {{Q(axes[0]), Q(axes[3]), Q(axes[6])}, {Q(axes[1]), Q(axes[4]), Q(axes[7])}, {Q(axes[2]), Q(axes[5]), Q(axes[8])}};
+    auto det = [](const Q m[3][3]) -> Q { // a Q, not a gmpxx expression over temporaries
+        return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+               m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    };
+    const Q D = det(a);
+    if (D == 0) return false;
+    for (unsigned long i = 0; i < n; ++i) {
+        const Q d[3] = {Q(xyz[3 * i]) - Q(c[0]), Q(xyz[3 * i + 1]) - Q(c[1]), Q(xyz[3 * i + 2]) - Q(c[2])};
+        for (int k = 0; k < 3; ++k) {
+            Q m[3][3];
+            for (int r = 0; r < 3; ++r)
+                for (int col = 0; col < 3; ++col) m[r][col] = col == k ? d[r] : a[r][col];
+            const Q s = det(m) / D;
+            if (qabs(s) > Q(h[k])) return false;
+        }
+    }
+    return true;
+}
 bool all_in_ball(const double* xyz, unsigned long n, const double c[3], double r) {
     const Q cx(c[0]), cy(c[1]), cz(c[2]), rr = Q(r) * Q(r);
     for (unsigned long i = 0; i < n; ++i) {

@@ -43,6 +43,8 @@ bool is_rounded_ray_ball_t(const double o[3], const double d[3], const double c[
 // The exact minimum enclosing sphere's squared radius (CGAL Min_sphere_d over exact rationals):
 // is x its nearest double? xyz holds n points as x0 y0 z0 x1 ...
 bool is_rounded_min_sphere_sqradius(const double* xyz, unsigned long n, double x);
+// Is every point in the closed box { c + sum si ai : |si| <= hi } (axes = a0 a1 a2, 9 values)? Exact.
+bool all_in_box(const double* xyz, unsigned long n, const double c[3], const double axes[9], const double h[3]);
 // Is every point inside the closed ball (c, r)? Exact.
 bool all_in_ball(const double* xyz, unsigned long n, const double c[3], double r);
 // CGAL Min_sphere_of_spheres_d with Epick (double) for timing: returns the radius.
@@ -62,6 +64,8 @@ struct qhull_result {
     bool error = false;
 };
 qhull_result qhull_hull(const double* xyz, unsigned long n);
+// CGAL oriented_bounding_box (Epick, Eigen): the box's volume, and the time it took.
+double obb_volume_cgal(const double* xyz, unsigned long n, double& ms);
 double hull_time_ms(const double* xyz, unsigned long n, unsigned long& vertices);
 void halfspaces_volume_area(const double* dirs, const double* lo, const double* hi, unsigned long m, const double inside[3],
                             double& volume, double& area);

@@ -76,6 +76,25 @@ bool slabs_overlap(const kdop<K>& a, const kdop<K>& b) {
         if (a.max[std::size_t(i)] < b.min[std::size_t(i)] || b.max[std::size_t(i)] < a.min[std::size_t(i)]) return false;
     return true;
 }
+// The classic OBB overlap test in double: 15 separating axes (Gottschalk, Lin, Manocha 1996).
+inline bool obb_overlap(const obb3& a, const obb3& b) {
+    const vec3 t = b.center - a.center;
+    std::array<vec3, 15> axes;
+    std::size_t n = 0;
+    for (const vec3& x : a.axes) axes[n++] = x;
+    for (const vec3& x : b.axes) axes[n++] = x;
+    for (const vec3& x : a.axes)
+        for (const vec3& y : b.axes) axes[n++] = cross(x, y);
+    for (const vec3& l : axes) {
+        double ra = 0, rb = 0;
+        for (int i = 0; i < 3; ++i) {
+            ra += a.half_extents[std::size_t(i)] * std::abs(dot(a.axes[std::size_t(i)], l));
+            rb += b.half_extents[std::size_t(i)] * std::abs(dot(b.axes[std::size_t(i)], l));
+        }
+        if (std::abs(dot(t, l)) > ra + rb) return false;
+    }
+    return true;
+}
 template <int K>
 kdop<K> moved(kdop<K> k, vec3 v) {
     const auto d = kdop<K>::directions();
@@ -150,6 +169,33 @@ inline bv_report measure_bounding_volumes(std::span<const point3> pts, int reps)
     sphere_row("sphere (Ritter)", "sphere_ritter: Ritter 1990", [&] { return bound::sphere_ritter(pts).value(); });
     sphere_row("sphere (Welzl, exact)", "sphere_welzl: exact minimum sphere, Welzl 1991",
                [&] { return bound::sphere_welzl(pts).value().sphere; });
+    auto obb_row = [&](const char* kind, const char* source, auto build) {
+        bv_row r{kind, source};
+        obb3 b{};
+        r.build_ms = median_ms(reps, [&] { b = build(); sink = b.half_extents[0]; });
+        r.volume = bound::volume(b);
+        const double e0 = 2 * b.half_extents[0], e1 = 2 * b.half_extents[1], e2 = 2 * b.half_extents[2];
+        r.area = 2 * (e0 * e1 + e1 * e2 + e2 * e0);
+        r.contains_all = std::all_of(pts.begin(), pts.end(), [&](point3 p) { return bound::contains(b, p); });
+        r.test_ns = test_ns(b, size, [](obb3 a, vec3 v) { return obb3{a.center + v, a.axes, a.half_extents}; },
+                            [](const obb3& a, const obb3& c) { return obb_overlap(a, c); }, reps);
+        finish(r);
+    };
+    obb_row("OBB (covariance)", "obb_covariance: Gottschalk 1996", [&] { return bound::obb_covariance(pts).value(); });
+    obb_row("OBB (min volume)", "obb_min_volume: sampled starts + Powell (Eberly)", [&] { return bound::obb_min_volume(pts).value(); });
+    {
+        bv_row r{"CGAL OBB", "CGAL oriented_bounding_box, Epick"};
+        r.ours = false;
+        std::vector<double> t;
+        for (int i = 0; i < reps; ++i) {
+            double ms = 0;
+            r.volume = oracle::obb_volume_cgal(xyz.data(), pts.size(), ms);
+            t.push_back(ms);
+        }
+        std::sort(t.begin(), t.end());
+        r.build_ms = t[t.size() / 2];
+        finish(r);
+    }
     {
         bv_row r{"CGAL min sphere", "CGAL Min_sphere_of_spheres_d, Epick (double)"};
         r.ours = false;
