@@ -1,7 +1,8 @@
 // Bounding volumes on raw bit patterns (up to 8 points): every construction finishes with a
 // value or a clear error; for finite input every returned volume contains every point (exact
 // rational check), sphere_welzl's squared radius is CGAL Min_sphere_d's exact minimum, correctly
-// rounded, and convex_hull's vertices are CGAL's extreme points (Epeck). Any finding aborts.
+// rounded, convex_hull's vertices are CGAL's extreme points (Epeck), and both OBBs contain every
+// point (exact rationals). Any finding aborts.
 #include "../tests/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <cmath>
@@ -35,8 +36,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const auto f = bound::sphere_from_aabb_farthest(s);
     const auto k = bound::kdop_of<26>(s);
     const auto h = bound::convex_hull(s);
+    const auto oc = bound::obb_covariance(s);
+    const auto om = bound::obb_min_volume(s);
     if (n == 0 || !finite) {
-        if (w || r || a || f || k || h) std::abort(); // empty or non-finite input must be an error
+        if (w || r || a || f || k || h || oc || om) std::abort(); // empty or non-finite input must be an error
         return 0;
     }
     std::vector<double> xyz;
@@ -58,6 +61,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         } else if (sp->error().code != errc::out_of_range) std::abort();
     }
     if (!h) std::abort();
+    for (const auto* ob : {&oc, &om}) {
+        if (!*ob) {
+            if (ob->error().code != errc::out_of_range) std::abort();
+            continue;
+        }
+        const obb3& b = ob->value();
+        const double c[3] = {b.center.x, b.center.y, b.center.z};
+        const double ax[9] = {b.axes[0].x, b.axes[0].y, b.axes[0].z, b.axes[1].x, b.axes[1].y, b.axes[1].z, b.axes[2].x, b.axes[2].y, b.axes[2].z};
+        if (!oracle::all_in_box(xyz.data(), n, c, ax, b.half_extents.data())) std::abort();
+    }
     std::vector<std::array<double, 3>> hv;
     for (const auto& p : h.value().vertices) hv.push_back({p.x, p.y, p.z});
     std::sort(hv.begin(), hv.end());
