@@ -41,3 +41,22 @@ TEST_CASE("aabb_of: boxes, and bad input", "[bound][aabb_of]") {
     constexpr point3 cp[] = {{1, 2, 3}, {-1, 5, 0}};
     static_assert(bound::aabb_of(std::span<const point3>(cp)).value().max == point3{1, 5, 3});
 }
+
+TEST_CASE("every construction: a million copies of one point", "[bound]") {
+    const std::vector<point3> same(1000000, point3{0.1, -0.2, 0.3});
+    const std::span<const point3> s(same);
+    CHECK(bound::aabb_of(s).value().min == same[0]);
+    CHECK(bound::aabb_of(s).value().max == same[0]);
+    const auto k = bound::kdop_of<26>(s).value();
+    CHECK(bound::contains(k, same[0]));
+    CHECK(bound::sphere_from_aabb(s).value().radius == 0.0);
+    CHECK(bound::sphere_from_aabb_farthest(s).value().radius == 0.0);
+    CHECK(bound::sphere_ritter(s).value().radius == 0.0);
+    const auto h = bound::convex_hull(s).value();
+    CHECK(h.dimension == 0);
+    CHECK(h.vertices.size() == 1);
+    const auto o = bound::obb_min_volume(s).value();
+    CHECK(bound::contains(o, same[0]));
+    CHECK(bound::volume(o) < 1e-30);
+    std::printf("[cases] 1e6 copies of one point: every construction gives the point (or a box of volume %g around it)\n", bound::volume(o));
+}
