@@ -211,8 +211,9 @@ def scene_section(d):
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 3.6))
     for i, r in enumerate(ours):
         c = EXTRA[i % len(EXTRA)] if "sphere" in r["kind"] else STYLE["conservative"][0]
-        a1.scatter([r["test_ns"]], [r["volume_ratio"]], color=c, s=30)
-        a1.annotate(r["kind"], (r["test_ns"], r["volume_ratio"]), fontsize=7, xytext=(3, 2), textcoords="offset points")
+        if r["test_ns"] > 0:  # the hull has no overlap test of its own here
+            a1.scatter([r["test_ns"]], [r["volume_ratio"]], color=c, s=30)
+            a1.annotate(r["kind"], (r["test_ns"], r["volume_ratio"]), fontsize=7, xytext=(3, 2), textcoords="offset points")
         a2.scatter([max(r["build_ms"], 1e-4)], [r["volume_ratio"]], color=c, s=30)
         a2.annotate(r["kind"], (max(r["build_ms"], 1e-4), r["volume_ratio"]), fontsize=7, xytext=(3, 2), textcoords="offset points")
     for r in bv["rows"]:
@@ -225,8 +226,9 @@ def scene_section(d):
     for a in (a1, a2):
         a.set_yscale("log"), a.grid(alpha=0.3)
     fig.tight_layout()
-    rows = [[esc(r["kind"]), esc(r["source"]), f"{r['build_ms']:.3f}", f"{r['volume_ratio']:.3f}", f"{r['area_ratio']:.3f}",
-             f"{r['test_ns']:.1f}" if r["ours"] else "&ndash;",
+    rows = [[esc(r["kind"]), esc(r["source"]), f"{r['build_ms']:.3f}", f"{r['volume_ratio']:.3f}",
+             f"{r['area_ratio']:.3f}" if r["area_ratio"] > 0 else "&ndash;",
+             f"{r['test_ns']:.1f}" if r["test_ns"] > 0 else "&ndash;",
              ("yes" if r["contains_all"] else '<b class="bad">NO</b>') if r["ours"] else "&ndash;"] for r in bv["rows"]]
     parts.append(f"<h3>Bounding volumes</h3><p>Relative to the convex hull ({bv['hull_vertices']:,} vertices). Every "
                  "volume of ours is checked exactly to contain every vertex.</p>" + img(png(fig), "bounding volumes") +
