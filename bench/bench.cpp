@@ -319,6 +319,33 @@ void register_all() {
             tiers("segment_triangle", dist, cs, truth, [](auto tier, const st& c) { return intersects<decltype(tier)>(c.s, c.t); });
         }
         {
+            // triangle x triangle: the second triangle has the segment above as an edge (so on the
+            // near set it ends on the first triangle's edge or vertex); CGAL needs both non-degenerate.
+            struct tt { triangle3 p, q; };
+            std::vector<tt> cs;
+            for (const auto& c : ray_triangle_set(near)) {
+                const triangle3 q{c.r.origin, c.r.at(near ? 1.0 : 1.5), c.r.origin + vec3{0.5, -0.25, 0.125}};
+                double a[3], b[3], cc[3];
+                arr(q.a, a); arr(q.b, b); arr(q.c, cc);
+                if (!oracle::triangle_is_degenerate(a, b, cc)) cs.push_back({c.t, q});
+            }
+            auto truth = [](const tt& c) {
+                double a[3], b[3], cc[3], d[3], e[3], f[3];
+                arr(c.p.a, a); arr(c.p.b, b); arr(c.p.c, cc); arr(c.q.a, d); arr(c.q.b, e); arr(c.q.c, f);
+                return oracle::triangle_triangle(a, b, cc, d, e, f);
+            };
+            tiers("triangle_triangle", dist, cs, truth, [](auto tier, const tt& c) { return intersects<decltype(tier)>(c.p, c.q); });
+            std::vector<bool> t;
+            for (const auto& c : cs) t.push_back(truth(c));
+            reg("sat/intersects/triangle_triangle/" + dist, cs, t, check::approximate,
+                [](const tt& c) { return method::triangle_triangle_sat(c.p, c.q); });
+            reg("cgal_epick/intersects/triangle_triangle/" + dist, cs, t, check::approximate, [](const tt& c) {
+                double a[3], b[3], cc[3], d[3], e[3], f[3];
+                arr(c.p.a, a); arr(c.p.b, b); arr(c.p.c, cc); arr(c.q.a, d); arr(c.q.b, e); arr(c.q.c, f);
+                return oracle::triangle_triangle_epick(a, b, cc, d, e, f);
+            });
+        }
+        {
             const auto cs = aabb_aabb_set(near);
             auto truth = [](const bb& c) {
                 double a0[3], a1[3], b0[3], b1[3];

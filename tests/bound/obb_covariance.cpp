@@ -12,37 +12,5 @@ import incidence;
 using namespace incidence;
 
 TEST_CASE("obb_covariance: every generated and real set", "[bound][obb_covariance]") {
-    support::rng r(support::seed());
-    auto sets = support::point_sets(r, support::cases(1000));
-    auto meshes = support::real_meshes();
-    if (support::meshes_required()) REQUIRE(meshes.size() == 5);
-    for (auto& m : meshes) sets.push_back(std::move(m));
-    for (const auto& s : sets) {
-        INFO(s.name);
-        const std::span<const point3> pts(s.points);
-        const auto b = bound::obb_covariance(pts);
-        if (!b) { // only overflow may refuse: coordinates near 1e300 whose box extents overflow
-            CHECK(b.error().code == errc::out_of_range);
-            std::printf("[cases] obb_covariance %s: %s\n", s.name.c_str(), b.error().message());
-            continue;
-        }
-        const obb3 box = b.value();
-        CHECK(obb3::make(box.center, box.axes, box.half_extents));
-        CHECK(support::all_inside(pts, box));
-        bool all = true;
-        for (const point3& p : s.points) all = all && bound::contains(box, p);
-        CHECK(all);
-        std::vector<double> xyz;
-        for (const auto& p : s.points) xyz.insert(xyz.end(), {p.x, p.y, p.z});
-        double hv = 0, ha = 0, ms = 0;
-        oracle::hull_volume_area(xyz.data(), s.points.size(), hv, ha);
-        if (hv > 0 && s.points.size() > 1000) {
-            const double cgal = oracle::obb_volume_cgal(xyz.data(), s.points.size(), ms);
-            std::printf("[cases] obb_covariance %s: volume / hull %.4f, / CGAL oriented_bounding_box %.4f\n", s.name.c_str(),
-                        bound::volume(box) / hv, bound::volume(box) / cgal);
-        }
-    }
-    CHECK(bound::obb_covariance(std::span<const point3>()).error().code == errc::empty_input);
-    const point3 nan_pt[] = {{0, 0, 0}, {__builtin_nan(""), 0, 0}};
-    CHECK(bound::obb_covariance(std::span<const point3>(nan_pt)).error().code == errc::not_finite);
+    support::check_obb_construction("obb_covariance", [](std::span<const point3> pts) { return bound::obb_covariance(pts); });
 }

@@ -1,0 +1,52 @@
+// incidence.catalog: every family names an existing modules/query/<name>.cppm with a test file
+// tests/query/<name>.cpp, names are unique, and the canonical pair has a kernel body; each
+// family's textbook alternatives and signs_in_double agree with the exact tier on clear-cut
+// cases (far apart / deep inside), where no floating-point method may err.
+#include <catch2/catch_test_macros.hpp>
+#include <filesystem>
+#include <set>
+#include <string>
+import incidence;
+#include "../support/testing.hpp"
+#include "../../tools/audit/generators.hpp"
+
+using namespace incidence;
+
+TEST_CASE("catalog: one family per query file, each with a test file", "[catalog]") {
+    const std::filesystem::path root(INCIDENCE_SOURCE_DIR);
+    std::set<std::string> names;
+    catalog::for_each_family([&](const auto& f) {
+        INFO(f.name);
+        CHECK(names.insert(f.name).second);
+        CHECK(std::filesystem::exists(root / "modules/query" / (std::string(f.name) + ".cppm")));
+        CHECK(std::filesystem::exists(root / "tests/query" / (std::string(f.name) + ".cpp")));
+        using F = std::decay_t<decltype(f)>;
+        STATIC_REQUIRE(canonical_pair<typename F::first_type, typename F::second_type>);
+    });
+    CHECK(names.size() == catalog::family_count);
+    std::printf("[cases] catalog: %zu families\n", names.size());
+}
+
+TEST_CASE("catalog: alternatives agree with the exact tier away from the boundary", "[catalog]") {
+    long checked = 0, wrong = 0;
+    unsigned index = 0;
+    catalog::for_each_family([&](const auto& f) {
+        using F = std::decay_t<decltype(f)>;
+        using A = typename F::first_type;
+        using B = typename F::second_type;
+        audit::rng r(audit::stream(support::seed(), index++, 0, 0));
+        for (long i = 0; i < support::cases(2000); ++i) {
+            // separation level 0: moved by the objects' size from touching, at scale 1, no offset
+            const auto [a, b] = audit::make_case<A, B>(r, 0, audit::settings[0]);
+            const bool e = intersects(a, b);
+            if (classify(a, b) == certainty::uncertain) continue; // only clear-cut cases
+            ++checked;
+            if (catalog::signs_in_double(a, b) != e) ++wrong;
+            for (const auto& alt : f.alternatives)
+                if (alt.test(a, b) != e) ++wrong, std::printf("  %s %s disagrees\n", f.name, alt.name);
+        }
+    });
+    std::printf("[cases] catalog alternatives: %ld clear-cut cases, %ld disagreements\n", checked, wrong);
+    CHECK(checked > 1000);
+    CHECK(wrong == 0);
+}
