@@ -1,7 +1,7 @@
 // Bounding volumes on raw bit patterns (up to 8 points): every construction finishes with a
 // value or a clear error; for finite input every returned volume contains every point (exact
 // rational check), sphere_welzl's squared radius is CGAL Min_sphere_d's exact minimum, correctly
-// rounded, convex_hull's vertices are CGAL's extreme points (Epeck), and both OBBs contain every
+// rounded, and equal to plain move-to-front's; convex_hull's vertices are CGAL's extreme points (Epeck), and all three OBBs contain every
 // point (exact rationals). Any finding aborts.
 #include "../tests/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
@@ -38,8 +38,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const auto h = bound::convex_hull(s);
     const auto oc = bound::obb_covariance(s);
     const auto om = bound::obb_min_volume(s);
+    const auto oe = bound::obb_edge_flush(s);
     if (n == 0 || !finite) {
-        if (w || r || a || f || k || h || oc || om) std::abort(); // empty or non-finite input must be an error
+        if (w || r || a || f || k || h || oc || om || oe) std::abort(); // empty or non-finite input must be an error
         return 0;
     }
     std::vector<double> xyz;
@@ -54,6 +55,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const double c[3] = {w.value().sphere.center.x, w.value().sphere.center.y, w.value().sphere.center.z};
         if (!oracle::all_in_ball(xyz.data(), m, c, w.value().sphere.radius)) std::abort();
         if (!oracle::is_rounded_min_sphere_sqradius(xyz.data(), m, w.value().squared_radius)) std::abort();
+        // plain move-to-front (the fallback for many cospherical points) gives the same exact answer
+        const auto mtf = bound::welzl_detail::solve(narrow ? s : s.first(m), 7, 1);
+        if (!mtf || mtf.value().squared_radius != w.value().squared_radius || !(mtf.value().sphere.center == w.value().sphere.center)) std::abort();
     } else if (w.error().code != errc::out_of_range) std::abort();
     for (const auto* sp : {&r, &a, &f}) {
         if (*sp) {
@@ -61,7 +65,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         } else if (sp->error().code != errc::out_of_range) std::abort();
     }
     if (!h) std::abort();
-    for (const auto* ob : {&oc, &om}) {
+    for (const auto* ob : {&oc, &om, &oe}) {
         if (!*ob) {
             if (ob->error().code != errc::out_of_range) std::abort();
             continue;

@@ -13,3 +13,4 @@ export import :convex_hull;
 export import :obb_fit;
 export import :obb_covariance;
 export import :obb_min_volume;
+export import :obb_edge_flush;

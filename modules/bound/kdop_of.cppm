@@ -6,6 +6,7 @@
 module;
 #include <array>
 #include <span>
+#include <vector>
 export module incidence.bound:kdop_of;
 import incidence.core;
 import incidence.arith;
@@ -15,14 +16,14 @@ import :outward;
 export namespace incidence::bound {
 
 namespace detail {
-// dot(d, p) rounded, and a bound on its rounding error (two additions: <= 2u(1+u) sum |terms|).
-struct rounded_dot {
-    double v, err;
-};
-[[nodiscard]] constexpr rounded_dot dot_of(direction3 d, point3 p) {
-    const double x = d.x * p.x, y = d.y * p.y, z = d.z * p.z; // exact: d in {-1, 0, 1}
-    const double ax = x < 0 ? -x : x, ay = y < 0 ? -y : y, az = z < 0 ? -z : z;
-    return {(x + y) + z, (ax + ay + az) * 0x1.8p-52};
+// dot(d, p) rounded; two additions err by at most 2u(1+u) sum |terms| (u = 2^-53), and adding or
+// subtracting the bound itself rounds by about u sum more: 2^-50 (|x|+|y|+|z|) covers both, for
+// every direction (d in {-1, 0, 1}^3). Sums of subnormals are exact.
+[[nodiscard]] constexpr double dot_of(direction3 d, point3 p) {
+    return (d.x * p.x + d.y * p.y) + d.z * p.z; // the products are exact
+}
+[[nodiscard]] constexpr double dot_error(point3 p) {
+    return ((p.x < 0 ? -p.x : p.x) + (p.y < 0 ? -p.y : p.y) + (p.z < 0 ? -p.z : p.z)) * 0x1p-50;
 }
 [[nodiscard]] constexpr arith::dyadic exact_dot(direction3 d, point3 p) {
     return arith::to_dyadic(d.x * p.x) + arith::to_dyadic(d.y * p.y) + arith::to_dyadic(d.z * p.z);
@@ -35,28 +36,50 @@ template <int K>
     for (const point3& p : points)
         if (!is_finite(p)) return error{errc::not_finite};
     kdop<K> out{};
-    const auto dirs = kdop<K>::directions();
-    for (unsigned i = 0; i < dirs.size(); ++i) {
-        const direction3 d = dirs[i];
-        double min_upper = __builtin_huge_val(), max_lower = -__builtin_huge_val();
-        for (const point3& p : points) {
-            const auto r = detail::dot_of(d, p);
-            if (r.v + r.err < min_upper) min_upper = r.v + r.err;
-            if (r.v - r.err > max_lower) max_lower = r.v - r.err;
+    constexpr auto dirs = kdop<K>::directions();
+    constexpr unsigned m = K / 2;
+    // Pass 1, every direction per point (each point read once): the smallest upper bound of a
+    // minimum and the largest lower bound of a maximum.
+    std::array<double, m> min_upper, max_lower;
+    min_upper.fill(__builtin_huge_val()), max_lower.fill(-__builtin_huge_val());
+    for (const point3& p : points) {
+        const double err = detail::dot_error(p);
+#pragma clang loop unroll(full)
+        for (unsigned i = 0; i < m; ++i) {
+            const double v = detail::dot_of(dirs[i], p);
+            min_upper[i] = v + err < min_upper[i] ? v + err : min_upper[i];
+            max_lower[i] = v - err > max_lower[i] ? v - err : max_lower[i];
         }
-        // Exact extremes among the points whose rounded interval reaches past the other bound.
-        bool have_lo = false, have_hi = false;
-        arith::dyadic lo, hi;
-        for (const point3& p : points) {
-            const auto r = detail::dot_of(d, p);
-            const bool lo_candidate = !(r.v - r.err > min_upper), hi_candidate = !(r.v + r.err < max_lower);
+    }
+    // Pass 2: the points whose rounded interval reaches past the other bound (usually one per
+    // side), then their exact sums.
+    std::vector<std::size_t> candidates;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        const point3 p = points[k];
+        bool any = false;
+        const double err = detail::dot_error(p);
+#pragma clang loop unroll(full)
+        for (unsigned i = 0; i < m; ++i) {
+            const double v = detail::dot_of(dirs[i], p);
+            any |= !(v - err > min_upper[i]) || !(v + err < max_lower[i]);
+        }
+        if (any) candidates.push_back(k);
+    }
+    std::array<bool, m> have_lo{}, have_hi{};
+    std::array<arith::dyadic, m> lo, hi;
+    for (const std::size_t k : candidates)
+        for (unsigned i = 0; i < m; ++i) {
+            const point3 p = points[k];
+            const double v = detail::dot_of(dirs[i], p), err = detail::dot_error(p);
+            const bool lo_candidate = !(v - err > min_upper[i]), hi_candidate = !(v + err < max_lower[i]);
             if (!lo_candidate && !hi_candidate) continue;
-            const arith::dyadic x = detail::exact_dot(d, p);
-            if (lo_candidate && (!have_lo || arith::sign_of(x - lo) < 0)) lo = x, have_lo = true;
-            if (hi_candidate && (!have_hi || arith::sign_of(x - hi) > 0)) hi = x, have_hi = true;
+            const arith::dyadic x = detail::exact_dot(dirs[i], p);
+            if (lo_candidate && (!have_lo[i] || arith::sign_of(x - lo[i]) < 0)) lo[i] = x, have_lo[i] = true;
+            if (hi_candidate && (!have_hi[i] || arith::sign_of(x - hi[i]) > 0)) hi[i] = x, have_hi[i] = true;
         }
-        out.min[i] = round_down(lo);
-        out.max[i] = round_up(hi);
+    for (unsigned i = 0; i < m; ++i) {
+        out.min[i] = round_down(lo[i]);
+        out.max[i] = round_up(hi[i]);
         if (!is_finite(out.min[i]) || !is_finite(out.max[i])) return error{errc::out_of_range};
     }
     return out;

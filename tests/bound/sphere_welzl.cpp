@@ -1,7 +1,7 @@
 // sphere_welzl: the exact minimum sphere. Its squared radius is the correctly rounded value of
 // CGAL Min_sphere_d's exact rational squared radius; every point is inside the returned sphere
-// (CGAL exact rationals); the support points lie exactly on the minimum sphere; the result does
-// not depend on the shuffle; random sets of 4..60 points plus the degenerate and real sets.
+// (CGAL exact rationals); the support points lie exactly on the minimum sphere; pivoting and
+// plain move-to-front (another shuffle) agree exactly; random sets of 4..60 points plus the degenerate and real sets.
 #include <catch2/catch_test_macros.hpp>
 #include <span>
 #include "../oracle/cgal_oracle.hpp"
@@ -30,11 +30,13 @@ void check_set(const std::string& name, std::span<const point3> pts, bool with_c
         }
     }
     if (!reshuffle) return;
-    // The same exact answer for another shuffle.
-    const auto w2 = bound::sphere_welzl(pts, 12345);
+    // The same exact answer from the other algorithm: move-to-front over every point (the fallback
+    // for sets with many exactly cospherical points), with another shuffle.
+    const auto w2 = bound::welzl_detail::solve(pts, 12345, 1);
     REQUIRE(w2);
     CHECK(w2.value().squared_radius == w.value().squared_radius);
     CHECK(w2.value().sphere.center == w.value().sphere.center);
+    CHECK(support::all_inside(pts, w2.value().sphere));
 }
 } // namespace
 

@@ -183,6 +183,9 @@ inline bv_report measure_bounding_volumes(std::span<const point3> pts, int reps)
     };
     obb_row("OBB (covariance)", "obb_covariance: Gottschalk 1996", [&] { return bound::obb_covariance(pts).value(); });
     obb_row("OBB (min volume)", "obb_min_volume: sampled starts + Powell (Eberly)", [&] { return bound::obb_min_volume(pts).value(); });
+    if (rep.hull_vertices <= bound::max_hull_vertices) // the global search costs hull edges x hull vertices
+        obb_row("OBB (edge-flush)", "obb_edge_flush: O'Rourke 1985 candidate set, searched",
+                [&] { return bound::obb_edge_flush(pts).value(); });
     {
         bv_row r{"CGAL OBB", "CGAL oriented_bounding_box, Epick"};
         r.ours = false;
