@@ -346,6 +346,45 @@ void register_all() {
             });
         }
         {
+            // box x triangle: near cases touch the unit box at its corner, along a face, or with
+            // the triangle's plane through the corner; random cases are random boxes and triangles
+            struct bt { aabb3 b; triangle3 t; };
+            std::vector<bt> cs;
+            while (cs.size() < set_size) {
+                const point3 c{small(), small(), small()};
+                const aabb3 b = near ? box(c, point3{c.x + 1, c.y + 1, c.z + 1}) : box(rp(), rp());
+                const point3 m = b.max;
+                triangle3 t{rp(), rp(), rp()};
+                if (near) {
+                    const int kind = int(cs.size() % 3);
+                    const vec3 u{1 + 0.25 * double(cs.size() % 4), 0.5, 2}, w{0.5, 1.5, 1 + 0.125 * double(cs.size() % 5)};
+                    if (kind == 0) t = {m, m + u, m + w};                                      // the corner
+                    else if (kind == 1) t = {m + vec3{0.5, -0.5, 0}, m + vec3{-0.5, 0.5, 0}, m + u}; // across the top corner
+                    else t = {m + vec3{2, -1, -1}, m + vec3{-1, 2, -1}, m + vec3{-1, -1, 2}}; // plane x+y+z through the corner
+                }
+                double a[3], bb3[3], cc[3];
+                arr(t.a, a); arr(t.b, bb3); arr(t.c, cc);
+                if (!oracle::triangle_is_degenerate(a, bb3, cc)) cs.push_back({b, t});
+            }
+            auto truth = [](const bt& c) {
+                double mn[3], mx[3], a[3], b[3], cc[3];
+                arr(c.b.min, mn); arr(c.b.max, mx); arr(c.t.a, a); arr(c.t.b, b); arr(c.t.c, cc);
+                return oracle::box_triangle(mn, mx, a, b, cc);
+            };
+            tiers("aabb_triangle", dist, cs, truth, [](auto tier, const bt& c) { return intersects<decltype(tier)>(c.b, c.t); });
+            std::vector<bool> t;
+            for (const auto& c : cs) t.push_back(truth(c));
+            reg("sign_algorithm_double/intersects/aabb_triangle/" + dist, cs, t, check::approximate, [](const bt& c) {
+                arith::approx_kernel k;
+                return pair::intersects(k, c.b, c.t);
+            });
+            reg("cgal_epick/intersects/aabb_triangle/" + dist, cs, t, check::approximate, [](const bt& c) {
+                double mn[3], mx[3], a[3], b[3], cc[3];
+                arr(c.b.min, mn); arr(c.b.max, mx); arr(c.t.a, a); arr(c.t.b, b); arr(c.t.c, cc);
+                return oracle::box_triangle_epick(mn, mx, a, b, cc);
+            });
+        }
+        {
             const auto cs = aabb_aabb_set(near);
             auto truth = [](const bb& c) {
                 double a0[3], a1[3], b0[3], b1[3];

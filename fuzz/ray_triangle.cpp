@@ -1,5 +1,6 @@
-// ray3 x triangle3 (and segment3 x triangle3 and triangle3 x triangle3 on the same bytes: the
-// second triangle is the ray's two points and doubles 15..17): differential against CGAL
+// ray3 x triangle3 (and segment3 x triangle3, triangle3 x triangle3 and aabb3 x triangle3 on the
+// same bytes: the second triangle is the ray's two points and doubles 15..17, the box's corners
+// are doubles 0..5): differential against CGAL
 // Epeck for the exact tier; conservative never misses, aggressive never lies, classify is never
 // wrong; both argument orders agree; every tier and intersection() survive raw bit patterns
 // (NaN, infinities, subnormals, zero directions, degenerate triangles). Any finding aborts.
@@ -33,12 +34,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     (void)intersects<conservative>(u, t);
     (void)intersects<aggressive>(t, u);
     (void)method::triangle_triangle_sat(u, t);
+    const aabb3 box{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+    (void)intersects<approximate>(box, t);
+    (void)intersects<conservative>(t, box);
+    (void)intersects<aggressive>(box, t);
+    const bool box_hit = intersects<exact>(box, t);
     bool finite = true; // the ray, segment and t: doubles 0..14
     for (int i = 0; i < 15; ++i) finite = finite && std::isfinite(v[i]);
     const bool u_all_finite = finite && std::isfinite(v[15]) && std::isfinite(v[16]) && std::isfinite(v[17]);
     if (!u_all_finite && intersects<exact>(u, t)) std::abort(); // the exact tier says no for NaN/inf input
     if (!finite) {
-        if (intersects<exact>(r, t) || h) std::abort();
+        if (intersects<exact>(r, t) || h || box_hit) std::abort();
         return 0;
     }
     if (oracle::triangle_is_degenerate(v + 6, v + 9, v + 12)) {
@@ -50,6 +56,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (!oracle::triangle_is_degenerate(v, v + 3, v + 15)) contracts(u, t, oracle::triangle_triangle(v, v + 3, v + 15, v + 6, v + 9, v + 12));
         else (void)intersects<exact>(u, t);
     }
+    if (v[0] <= v[3] && v[1] <= v[4] && v[2] <= v[5]) contracts(box, t, oracle::box_triangle(v, v + 3, v + 6, v + 9, v + 12));
+    else if (box_hit) std::abort(); // an inverted box is empty
     if (!(v[3] == 0 && v[4] == 0 && v[5] == 0)) contracts(r, t, oracle::ray_triangle(v, v + 3, v + 6, v + 9, v + 12));
     if (!(v[0] == v[3] && v[1] == v[4] && v[2] == v[5])) contracts(s, t, oracle::segment_triangle(v, v + 3, v + 6, v + 9, v + 12));
     return 0;

@@ -87,6 +87,34 @@ struct lift_expansion {
         return expansion<1>(shift == 0 ? x : scale_by_power_of_two(x, shift));
     }
 };
+// Plain double evaluation that also reports whether every operation was exact (its rounding
+// error, by two_sum/two_diff/two_product, is zero, with no overflow and no underflow). When it
+// was, the double result is the exact value: this settles exactly touching inputs (a shared
+// vertex, small integers) whose zero the filter cannot prove, before any expansion.
+struct exact_double {
+    double v;
+    bool exact;
+};
+// Once an operation is inexact the value no longer matters: {0, false}, computing nothing that
+// could overflow (constant evaluation refuses a NaN).
+[[nodiscard]] constexpr exact_double operator+(exact_double a, exact_double b) {
+    if (!a.exact || !b.exact || !(abs(a.v) < 0x1p1021 && abs(b.v) < 0x1p1021)) return {0.0, false};
+    const auto s = two_sum(a.v, b.v);
+    return {s.hi, s.lo == 0.0};
+}
+[[nodiscard]] constexpr exact_double operator-(exact_double a) { return {-a.v, a.exact}; }
+[[nodiscard]] constexpr exact_double operator-(exact_double a, exact_double b) { return a + (-b); }
+[[nodiscard]] constexpr exact_double operator*(exact_double a, exact_double b) {
+    if (!a.exact || !b.exact) return {0.0, false};
+    if (a.v == 0.0 || b.v == 0.0) return {0.0, true};
+    const int e = exponent_of(a.v) + exponent_of(b.v); // |a b| in [2^e, 2^(e+2))
+    if (e > 1020 || e < -968 || !(abs(a.v) < 0x1p995 && abs(b.v) < 0x1p995)) return {0.0, false};
+    const auto p = two_product(a.v, b.v);
+    return {p.hi, p.lo == 0.0};
+}
+struct lift_exact_double {
+    [[nodiscard]] constexpr exact_double operator()(double x) const { return {x, abs(x) <= 0x1.fffffffffffffp1023}; }
+};
 struct lift_dyadic {
     [[nodiscard]] constexpr dyadic operator()(double x) const { return to_dyadic(x); }
 };
@@ -151,6 +179,8 @@ template <class F>
 
 template <class F>
 [[nodiscard, gnu::noinline]] constexpr sign exact_sign_fallback(F f, bool& valid) {
+    // Stage 1a: every operation exact in double (exactly touching inputs).
+    if (const exact_double x = f(lift_exact_double{}); x.exact) return sign_of_double(x.v);
     // Stage 1b: double-double filter (decides configurations a few ulps off the boundary).
     if (const int s = proven_sign(f(lift_filter2{})); s != 0) return to_sign(s);
     const range_probe r = f(lift_range{});
@@ -199,6 +229,14 @@ struct exact_kernel {
     template <class F>
     [[nodiscard, gnu::always_inline]] constexpr sign sgn(const F& f) { return exact_sign(f, valid); }
 };
+
+// sign(a - b) for two doubles, exactly, by comparison. A kernel that observes decisions (the tests'
+// margin kernel) sees it through observe_compare; the others pay nothing.
+template <class K>
+[[nodiscard, gnu::always_inline]] constexpr sign compare(K& k, double a, double b) {
+    if constexpr (requires { k.observe_compare(a, b); }) k.observe_compare(a, b);
+    return a > b ? sign::positive : (a < b ? sign::negative : sign::zero);
+}
 
 // The exact re-run of a query body, out of line: its exact signs may carry large temporaries.
 template <class Body>

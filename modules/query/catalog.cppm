@@ -26,7 +26,8 @@ template <class A, class B, std::size_t N>
 struct family {
     using first_type = A;
     using second_type = B;
-    const char* name; // modules/query/<name>.cppm
+    const char* name; // modules/query/<name>.cppm, tests/query/<name>.cpp
+    const char* fuzzer; // fuzz/<fuzzer>.cpp runs it against the oracle
     const char* approximate_method; // what the approximate tier runs
     std::array<alternative<A, B>, N> alternatives;
 };
@@ -38,36 +39,41 @@ template <class A, class B>
 }
 
 inline constexpr std::tuple families{
-    family<point3, sphere3, 0>{"point_sphere", "signs in double", {}},
-    family<sphere3, sphere3, 0>{"sphere_sphere", "signs in double", {}},
-    family<aabb3, point3, 0>{"aabb_point", "signs in double", {}},
-    family<aabb3, aabb3, 0>{"aabb_aabb", "signs in double", {}},
+    family<point3, sphere3, 0>{"point_sphere", "spheres_boxes", "signs in double", {}},
+    family<sphere3, sphere3, 0>{"sphere_sphere", "spheres_boxes", "signs in double", {}},
+    family<aabb3, point3, 0>{"aabb_point", "spheres_boxes", "signs in double", {}},
+    family<aabb3, aabb3, 0>{"aabb_aabb", "spheres_boxes", "signs in double", {}},
     family<ray3, sphere3, 2>{
-        "ray_sphere",
+        "ray_sphere", "spheres_boxes",
         "geometric (Akenine-Moeller et al., Real-Time Rendering)",
         {{{"geometric", "Akenine-Moeller et al., Real-Time Rendering, optimized geometric method",
            [](const ray3& r, const sphere3& s) { return method::ray_sphere_geometric(r, s).has_value(); }},
           {"algebraic", "quadratic formula on |o + t d - c|^2 = r^2",
            [](const ray3& r, const sphere3& s) { return method::ray_sphere_algebraic(r, s).has_value(); }}}}},
-    family<aabb3, ray3, 2>{"aabb_ray",
+    family<aabb3, ray3, 2>{"aabb_ray", "spheres_boxes",
                            "slab method (Kay and Kajiya 1986)",
                            {{{"slab", "Kay and Kajiya, SIGGRAPH 1986; Williams et al., JGT 10(1) 2005",
                               [](const aabb3& b, const ray3& r) { return method::aabb_ray_slab(b, r).has_value(); }},
                              {"woo", "Woo, Graphics Gems (1990), Fast ray-box intersection",
                               [](const aabb3& b, const ray3& r) { return method::aabb_ray_woo(b, r); }}}}},
     family<ray3, triangle3, 2>{
-        "ray_triangle",
+        "ray_triangle", "ray_triangle",
         "watertight (Woop, Benthin and Wald 2013)",
         {{{"watertight", "Woop, Benthin and Wald, JCGT 2(1), 2013",
            [](const ray3& r, const triangle3& t) { return method::ray_triangle_watertight(r, t).has_value(); }},
           {"moller_trumbore", "Moeller and Trumbore, JGT 2(1), 1997",
            [](const ray3& r, const triangle3& t) { return method::ray_triangle_moller_trumbore(r, t).has_value(); }}}}},
-    family<segment3, triangle3, 0>{"segment_triangle", "signs in double", {}},
+    family<segment3, triangle3, 0>{"segment_triangle", "ray_triangle", "signs in double", {}},
     family<triangle3, triangle3, 1>{
-        "triangle_triangle",
+        "triangle_triangle", "ray_triangle",
         "signs in double",
         {{{"sat", "separating axes, Akenine-Moeller et al., Real-Time Rendering 4th ed., 22.12",
            [](const triangle3& p, const triangle3& q) { return method::triangle_triangle_sat(p, q); }}}}},
+    family<aabb3, triangle3, 1>{
+        "aabb_triangle", "ray_triangle",
+        "separating axes in double (Akenine-Moeller, JGT 6(1) 2001)",
+        {{{"sat", "Akenine-Moeller, Fast 3D triangle-box overlap testing, JGT 6(1), 2001",
+           [](const aabb3& b, const triangle3& t) { return method::aabb_triangle_sat(b, t); }}}}},
 };
 
 inline constexpr std::size_t family_count = std::tuple_size_v<decltype(families)>;

@@ -19,6 +19,7 @@ export import :aabb_ray;
 export import :ray_triangle;
 export import :segment_triangle;
 export import :triangle_triangle;
+export import :aabb_triangle;
 import incidence.core;
 import incidence.arith;
 import incidence.shapes;
@@ -176,6 +177,7 @@ namespace method {
 [[nodiscard]] constexpr std::optional<ray_sphere_hit> ray_sphere_algebraic(const ray3& r, const sphere3& s) {
     return pair::ray_sphere_algebraic(r, s);
 }
+[[nodiscard]] constexpr bool aabb_triangle_sat(const aabb3& b, const triangle3& t) { return pair::aabb_triangle_sat(b, t); }
 [[nodiscard]] constexpr bool triangle_triangle_sat(const triangle3& p, const triangle3& q) {
     return pair::triangle_triangle_sat(p, q);
 }

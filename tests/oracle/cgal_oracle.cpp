@@ -86,6 +86,24 @@ bool triangle_triangle(const double a[3], const double b[3], const double c[3], 
                        const double f[3]) {
     return CGAL::do_intersect(K::Triangle_3(P(a), P(b), P(c)), K::Triangle_3(P(d), P(e), P(f)));
 }
+bool box_triangle(const double mn[3], const double mx[3], const double a[3], const double b[3], const double c[3]) {
+    const K::Triangle_3 t(P(a), P(b), P(c));
+    int flat = -1;
+    for (int i = 0; i < 3; ++i)
+        if (mn[i] == mx[i]) flat = i;
+    if (flat < 0) return CGAL::do_intersect(t, K::Iso_cuboid_3(P(mn), P(mx)));
+    // the rectangle (or segment, or point) in the plane x_flat = mn[flat]
+    const int j = (flat + 1) % 3, l = (flat + 2) % 3;
+    auto corner = [&](bool hj, bool hl) {
+        double p[3];
+        p[flat] = mn[flat], p[j] = hj ? mx[j] : mn[j], p[l] = hl ? mx[l] : mn[l];
+        return P(p);
+    };
+    const K::Point_3 c00 = corner(false, false), c10 = corner(true, false), c11 = corner(true, true), c01 = corner(false, true);
+    if (c00 == c11) return CGAL::do_intersect(t, c00);
+    if (c00 == c10 || c00 == c01) return CGAL::do_intersect(t, K::Segment_3(c00, c11));
+    return CGAL::do_intersect(t, K::Triangle_3(c00, c10, c11)) || CGAL::do_intersect(t, K::Triangle_3(c00, c11, c01));
+}
 bool ray_box(const double o[3], const double d[3], const double mn[3], const double mx[3]) {
     return CGAL::do_intersect(K::Ray_3(P(o), V(d)), K::Iso_cuboid_3(P(mn), P(mx)));
 }
@@ -254,6 +272,9 @@ bool segment_triangle_epick(const double p[3], const double q[3], const double a
 bool triangle_triangle_epick(const double a[3], const double b[3], const double c[3], const double d[3], const double e[3],
                              const double f[3]) {
     return CGAL::do_intersect(KI::Triangle_3(P<KI>(a), P<KI>(b), P<KI>(c)), KI::Triangle_3(P<KI>(d), P<KI>(e), P<KI>(f)));
+}
+bool box_triangle_epick(const double mn[3], const double mx[3], const double a[3], const double b[3], const double c[3]) {
+    return CGAL::do_intersect(KI::Triangle_3(P<KI>(a), P<KI>(b), P<KI>(c)), KI::Iso_cuboid_3(P<KI>(mn), P<KI>(mx)));
 }
 bool box_box_epick(const double amn[3], const double amx[3], const double bmn[3], const double bmx[3]) {
     return CGAL::do_intersect(KI::Iso_cuboid_3(P<KI>(amn), P<KI>(amx)), KI::Iso_cuboid_3(P<KI>(bmn), P<KI>(bmx)));

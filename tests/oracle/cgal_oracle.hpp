@@ -16,6 +16,11 @@ int insphere(const double a[3], const double b[3], const double c[3], const doub
 bool triangle_is_degenerate(const double a[3], const double b[3], const double c[3]);
 bool ray_triangle(const double o[3], const double d[3], const double a[3], const double b[3], const double c[3]);
 bool segment_triangle(const double p[3], const double q[3], const double a[3], const double b[3], const double c[3]);
+// Closed box [mn, mx] against a non-degenerate triangle (Epeck). A box of full dimension is a CGAL
+// Iso_cuboid_3; a flat box (a rectangle, a segment or a point) is tested as CGAL Triangle_3,
+// Segment_3 or Point_3 pieces, since CGAL's box predicates assume a solid.
+bool box_triangle(const double mn[3], const double mx[3], const double a[3], const double b[3], const double c[3]);
+bool box_triangle_epick(const double mn[3], const double mx[3], const double a[3], const double b[3], const double c[3]);
 bool triangle_triangle(const double a[3], const double b[3], const double c[3], const double d[3], const double e[3],
                        const double f[3]); // both non-degenerate (CGAL's precondition)
 bool ray_box(const double o[3], const double d[3], const double mn[3], const double mx[3]);

@@ -34,6 +34,14 @@ static_assert(!intersects(segment3{{0.25, 0.25, 1}, {0.25, 0.25, 0.5}}, T));
 static_assert(intersects(B, ray3{{-1, 1, 1}, {1, 0, 0}}));                // along an edge
 static_assert(intersects(B, ray3{{2, 1, 0}, {-1, -1, 0}}));               // touching an edge only
 static_assert(!intersects(B, ray3{{2.0000000000000004, 1, 0}, {-1, -1, 0}}));
+// box-triangle: touching a corner, one ulp off it, plane through the far corner, edge axis, flat box
+static_assert(intersects(B, triangle3{{1, 1, 1}, {2, 1, 1}, {1, 2, 2}}));
+static_assert(!intersects(B, triangle3{{1, 1, 1.0000000000000002}, {2, 1, 2}, {1, 2, 2}}));
+static_assert(intersects(triangle3{{3, 0, 0}, {0, 3, 0}, {0, 0, 3}}, B));            // reversed order
+static_assert(!intersects(B, triangle3{{1.5, -1, 0.5}, {3, 0.5, 0.5}, {1.5, 2, 0.5}}));
+static_assert(intersects(aabb3{{0.25, 0.25, 0}, {0.25, 0.25, 0}}, T));
+static_assert(intersects<conservative>(B, triangle3{{1, 1, 1}, {2, 1, 1}, {1, 2, 2}}));
+static_assert(intersects<approximate>(B, triangle3{{0.5, 0.5, 0.5}, {3, 0, 0}, {0, 3, 0}}));
 // ray-sphere, spheres, points, boxes
 static_assert(intersects(ray3{{-5, 1, 0}, {1, 0, 0}}, S));                // tangent
 static_assert(!intersects(ray3{{-5, 1.0000000000000002, 0}, {1, 0, 0}}, S));

@@ -131,5 +131,6 @@ struct margin_kernel {
         if (!(rel >= min_rel)) min_rel = rel;
         return incidence::arith::exact_sign(f, valid);
     }
+    void observe_compare(double a, double b) { (void)sgn([=](auto L) { return L(a) - L(b); }); }
 };
 } // namespace support_margin

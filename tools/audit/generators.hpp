@@ -209,6 +209,33 @@ struct near_boundary<segment3, triangle3> {
     }
 };
 template <>
+struct near_boundary<aabb3, triangle3> {
+    // A triangle outside the box touching it at a boundary point p: at a vertex, or along an edge
+    // lying in the plane of a face through p; the rest of the triangle beyond that face.
+    static std::pair<aabb3, triangle3> touching(rng& r) {
+        const auto [b, p] = near_boundary<aabb3, point3>::touching(r);
+        const double q[3] = {p.x, p.y, p.z}, mn[3] = {b.min.x, b.min.y, b.min.z}, mx[3] = {b.max.x, b.max.y, b.max.z};
+        int axis = 0;
+        while (q[axis] != mn[axis] && q[axis] != mx[axis]) ++axis;
+        const double out = q[axis] == mx[axis] ? 1.0 : -1.0;
+        auto away = [&](bool in_plane) { // a vector pointing out of the face (or lying in its plane)
+            double v[3] = {double(r.integer(-300, 300)), double(r.integer(-300, 300)), double(r.integer(-300, 300))};
+            v[axis] = in_plane ? 0.0 : out * double(r.integer(1, 300));
+            return vec3{v[0], v[1], v[2]};
+        };
+        for (;;) {
+            triangle3 t;
+            if (r.coin()) t = triangle3{p, p + away(false), p + away(false)};
+            else {
+                const vec3 w = away(true);
+                t = triangle3{p + w, p - w * double(r.integer(1, 3)), p + away(false)};
+            }
+            const vec3 n = cross(t.b - t.a, t.c - t.a);
+            if (dot(n, n) > 1e4) return {b, t};
+        }
+    }
+};
+template <>
 struct near_boundary<triangle3, triangle3> {
     static std::pair<triangle3, triangle3> touching(rng& r) {
         const triangle3 t = int_triangle(r);

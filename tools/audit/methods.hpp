@@ -35,6 +35,11 @@ inline bool epick(const triangle3& t, const triangle3& u) {
     arr(t.a, a), arr(t.b, b), arr(t.c, c), arr(u.a, d), arr(u.b, e), arr(u.c, f);
     return oracle::triangle_triangle_epick(a, b, c, d, e, f);
 }
+inline bool epick(const aabb3& b, const triangle3& t) {
+    double mn[3], mx[3], a[3], c[3], d[3];
+    arr(b.min, mn), arr(b.max, mx), arr(t.a, a), arr(t.b, c), arr(t.c, d);
+    return oracle::box_triangle_epick(mn, mx, a, c, d);
+}
 inline bool epick(const aabb3& b, const ray3& r) {
     double o[3], d[3], mn[3], mx[3];
     arr(r.origin, o), arr(r.direction, d), arr(b.min, mn), arr(b.max, mx);

@@ -65,6 +65,12 @@ int truth(const segment3& s, const triangle3& t) {
     arr(s.a, p), arr(s.b, q), arr(t.a, a), arr(t.b, b), arr(t.c, c);
     return oracle::segment_triangle(p, q, a, b, c);
 }
+int truth(const aabb3& b, const triangle3& t) {
+    if (degenerate(t)) return -1;
+    double mn[3], mx[3], a[3], c[3], d[3];
+    arr(b.min, mn), arr(b.max, mx), arr(t.a, a), arr(t.b, c), arr(t.c, d);
+    return oracle::box_triangle(mn, mx, a, c, d);
+}
 int truth(const triangle3& t, const triangle3& u) {
     if (degenerate(t) || degenerate(u)) return -1;
     double a[3], b[3], c[3], d[3], e[3], f[3];

@@ -1,0 +1,144 @@
+// aabb3 against triangle3 (closed box, closed triangle; a collinear triangle is its hull).
+// Semantics: touching at a vertex, along an edge or on a face counts.
+// Method (exact tiers): separating axes. Two disjoint convex polytopes, one of them a solid box,
+// are strictly separated along one of 13 axes: the box's three face normals, the triangle's
+// normal, and the nine cross products of a box axis with a triangle edge. Each axis test picks
+// the box corner that is extreme along the axis (by the exact signs of the axis' components)
+// and compares it with the triangle's projection as exact signs: box axes are comparisons of
+// coordinates, edge axes are signs of degree 2 (e_i x f . (v - corner)), the normal axis a sign
+// of degree 3 (orient3d-like). A box that is flat along some axis (a rectangle, a segment or a
+// point) is not a solid, and the 13 axes no longer suffice for it; such a box is its rectangle's
+// two triangles, decided by the exact triangle_triangle test.
+// Source: Akenine-Moeller, "Fast 3D triangle-box overlap testing", JGT 6(1), 2001 (the 13 axes);
+// Gottschalk, Lin and Manocha, "OBBTree", SIGGRAPH 1996, section 5 (the separating axis theorem).
+// Approximate tier: Akenine-Moeller's test in plain double (box centre and half sizes, the nine
+// edge axes with projected radii, the box-axis overlap, then the plane-box test). Error bound:
+// for inputs whose nonzero magnitudes lie in [2^-500, 2^500], wrong only when some axis sign is
+// within 2^-40 of its permanent (the sets touch or nearly touch); tests/query/aabb_triangle.cpp
+// checks it.
+export module incidence.query:aabb_triangle;
+import incidence.core;
+import incidence.arith;
+import incidence.shapes;
+import :triangle_triangle;
+
+export namespace incidence::pair {
+
+namespace box_triangle_detail {
+[[nodiscard]] constexpr double at(const point3& p, int i) { return i == 0 ? p.x : (i == 1 ? p.y : p.z); }
+[[nodiscard]] constexpr point3 with(point3 p, int i, double v) {
+    if (i == 0) p.x = v;
+    else if (i == 1) p.y = v;
+    else p.z = v;
+    return p;
+}
+} // namespace box_triangle_detail
+
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const aabb3& b, const triangle3& t) {
+    using namespace box_triangle_detail;
+    for (int i = 0; i < 3; ++i)
+        if (!(at(b.min, i) <= at(b.max, i))) return false; // inverted or NaN box
+    const point3 v[3] = {t.a, t.b, t.c};
+    // The box's face normals: comparisons of coordinates.
+    for (int i = 0; i < 3; ++i) {
+        const double lo = at(b.min, i), hi = at(b.max, i);
+        if (arith::compare(k, at(v[0], i), hi) == sign::positive && arith::compare(k, at(v[1], i), hi) == sign::positive &&
+            arith::compare(k, at(v[2], i), hi) == sign::positive)
+            return false;
+        if (arith::compare(k, at(v[0], i), lo) == sign::negative && arith::compare(k, at(v[1], i), lo) == sign::negative &&
+            arith::compare(k, at(v[2], i), lo) == sign::negative)
+            return false;
+    }
+    for (int i = 0; i < 3; ++i)
+        if (at(b.min, i) == at(b.max, i)) { // flat box: its rectangle's two triangles
+            const int j = (i + 1) % 3, l = (i + 2) % 3;
+            auto corner = [&](bool hj, bool hl) {
+                point3 p = b.min;
+                p = with(p, j, hj ? at(b.max, j) : at(b.min, j));
+                return with(p, l, hl ? at(b.max, l) : at(b.min, l));
+            };
+            const point3 c00 = corner(false, false), c10 = corner(true, false), c11 = corner(true, true), c01 = corner(false, true);
+            return intersects(k, triangle3{c00, c10, c11}, t) || intersects(k, triangle3{c00, c11, c01}, t);
+        }
+    // The triangle's normal n = (b - a) x (c - a): every vertex projects to n . a.
+    {
+        const point3 a = t.a, bb = t.b, c = t.c;
+        sign s[3];
+        s[0] = k.sgn([=](auto L) { return (L(bb.y) - L(a.y)) * (L(c.z) - L(a.z)) - (L(bb.z) - L(a.z)) * (L(c.y) - L(a.y)); });
+        s[1] = k.sgn([=](auto L) { return (L(bb.z) - L(a.z)) * (L(c.x) - L(a.x)) - (L(bb.x) - L(a.x)) * (L(c.z) - L(a.z)); });
+        s[2] = k.sgn([=](auto L) { return (L(bb.x) - L(a.x)) * (L(c.y) - L(a.y)) - (L(bb.y) - L(a.y)) * (L(c.x) - L(a.x)); });
+        if (s[0] != sign::zero || s[1] != sign::zero || s[2] != sign::zero) {
+            // the corner farthest along n (hi) and along -n (lo)
+            point3 hi = b.min, lo = b.max;
+            for (int i = 0; i < 3; ++i)
+                if (s[i] == sign::positive) hi = with(hi, i, at(b.max, i)), lo = with(lo, i, at(b.min, i));
+            auto side = [&](point3 q) {
+                return k.sgn([=](auto L) {
+                    const auto u = arith::lift(L, bb) - arith::lift(L, a), w = arith::lift(L, c) - arith::lift(L, a);
+                    return arith::dot(arith::cross(u, w), arith::lift(L, a) - arith::lift(L, q));
+                });
+            };
+            if (side(hi) == sign::positive || side(lo) == sign::negative) return false;
+        }
+    }
+    // The nine axes e_i x f, f = q - p an edge, o the third vertex: with (i, j, l) cyclic,
+    // e_i x f = f_j e_l - f_l e_j, so (e_i x f) . w = f_j w_l - f_l w_j.
+    for (int e = 0; e < 3; ++e) {
+        const point3 p = v[e], q = v[(e + 1) % 3], o = v[(e + 2) % 3];
+        for (int i = 0; i < 3; ++i) {
+            const int j = (i + 1) % 3, l = (i + 2) % 3;
+            const sign fj = arith::compare(k, at(q, j), at(p, j)), fl = arith::compare(k, at(q, l), at(p, l));
+            if (fj == sign::zero && fl == sign::zero) continue; // the edge is parallel to e_i: no axis
+            // axis component l is f_j, component j is -f_l
+            point3 hi = b.min, lo = b.max;
+            if (fj == sign::positive) hi = with(hi, l, at(b.max, l)), lo = with(lo, l, at(b.min, l));
+            if (fl == sign::negative) hi = with(hi, j, at(b.max, j)), lo = with(lo, j, at(b.min, j));
+            const double pj = at(p, j), pl = at(p, l), qj = at(q, j), ql = at(q, l);
+            auto proj = [&](point3 x, point3 c) {
+                const double xj = at(x, j), xl = at(x, l), cj = at(c, j), cl = at(c, l);
+                return k.sgn([=](auto L) { return (L(qj) - L(pj)) * (L(xl) - L(cl)) - (L(ql) - L(pl)) * (L(xj) - L(cj)); });
+            };
+            if (proj(p, hi) == sign::positive && proj(o, hi) == sign::positive) return false;
+            if (proj(p, lo) == sign::negative && proj(o, lo) == sign::negative) return false;
+        }
+    }
+    return true;
+}
+
+// Akenine-Moeller's triangle-box overlap test in plain double (approximate tier).
+[[nodiscard]] constexpr bool aabb_triangle_sat(const aabb3& b, const triangle3& t) {
+    if (!(b.min.x <= b.max.x && b.min.y <= b.max.y && b.min.z <= b.max.z)) return false;
+    const point3 c{0.5 * b.min.x + 0.5 * b.max.x, 0.5 * b.min.y + 0.5 * b.max.y, 0.5 * b.min.z + 0.5 * b.max.z};
+    const double h[3] = {0.5 * b.max.x - 0.5 * b.min.x, 0.5 * b.max.y - 0.5 * b.min.y, 0.5 * b.max.z - 0.5 * b.min.z};
+    const vec3 v[3] = {t.a - c, t.b - c, t.c - c};
+    const vec3 f[3] = {v[1] - v[0], v[2] - v[1], v[0] - v[2]};
+    auto get = [](vec3 a, int i) { return i == 0 ? a.x : (i == 1 ? a.y : a.z); };
+    for (int e = 0; e < 3; ++e)
+        for (int i = 0; i < 3; ++i) {
+            const int j = (i + 1) % 3, l = (i + 2) % 3;
+            // axis e_i x f: components (j: -f_l, l: f_j)
+            const double aj = -get(f[e], l), al = get(f[e], j);
+            double mn = __builtin_huge_val(), mx = -__builtin_huge_val();
+            for (const vec3& w : v) {
+                const double s = aj * get(w, j) + al * get(w, l);
+                mn = s < mn ? s : mn, mx = s > mx ? s : mx;
+            }
+            const double r = h[j] * (aj < 0 ? -aj : aj) + h[l] * (al < 0 ? -al : al);
+            if (mn > r || mx < -r) return false;
+        }
+    for (int i = 0; i < 3; ++i) {
+        const double x0 = get(v[0], i), x1 = get(v[1], i), x2 = get(v[2], i);
+        const double mn = x0 < x1 ? (x0 < x2 ? x0 : x2) : (x1 < x2 ? x1 : x2), mx = x0 > x1 ? (x0 > x2 ? x0 : x2) : (x1 > x2 ? x1 : x2);
+        if (mn > h[i] || mx < -h[i]) return false;
+    }
+    const vec3 n = cross(f[0], f[1]);
+    const double d = dot(n, v[0]);
+    const double r = h[0] * (n.x < 0 ? -n.x : n.x) + h[1] * (n.y < 0 ? -n.y : n.y) + h[2] * (n.z < 0 ? -n.z : n.z);
+    return !(d > r || d < -r);
+}
+
+// The approximate tier of intersects(aabb3, triangle3) is Akenine-Moeller's test in double.
+[[nodiscard]] constexpr bool intersects_approximate(const aabb3& b, const triangle3& t) { return aabb_triangle_sat(b, t); }
+
+} // namespace incidence::pair
