@@ -385,6 +385,36 @@ void register_all() {
             });
         }
         {
+            // box x segment and box x line: the ray cases, the segment ending at origin + direction
+            struct bs { aabb3 b; segment3 s; line3 l; };
+            std::vector<bs> cs;
+            for (const auto& c : aabb_ray_set(near)) cs.push_back({c.b, segment3{c.r.origin, c.r.at(1.0)}, line3{c.r.origin, c.r.direction}});
+            auto seg_truth = [](const bs& c) {
+                double p[3], q[3], mn[3], mx[3];
+                arr(c.s.a, p); arr(c.s.b, q); arr(c.b.min, mn); arr(c.b.max, mx);
+                return oracle::box_segment(mn, mx, p, q);
+            };
+            auto line_truth = [](const bs& c) {
+                double p[3], d[3], mn[3], mx[3];
+                arr(c.l.origin, p); arr(c.l.direction, d); arr(c.b.min, mn); arr(c.b.max, mx);
+                return oracle::box_line(mn, mx, p, d);
+            };
+            tiers("aabb_segment", dist, cs, seg_truth, [](auto tier, const bs& c) { return intersects<decltype(tier)>(c.b, c.s); });
+            tiers("aabb_line", dist, cs, line_truth, [](auto tier, const bs& c) { return intersects<decltype(tier)>(c.b, c.l); });
+            std::vector<bool> ts, tl;
+            for (const auto& c : cs) ts.push_back(seg_truth(c)), tl.push_back(line_truth(c));
+            reg("cgal_epick/intersects/aabb_segment/" + dist, cs, ts, check::approximate, [](const bs& c) {
+                double p[3], q[3], mn[3], mx[3];
+                arr(c.s.a, p); arr(c.s.b, q); arr(c.b.min, mn); arr(c.b.max, mx);
+                return oracle::box_segment_epick(mn, mx, p, q);
+            });
+            reg("cgal_epick/intersects/aabb_line/" + dist, cs, tl, check::approximate, [](const bs& c) {
+                double p[3], d[3], mn[3], mx[3];
+                arr(c.l.origin, p); arr(c.l.direction, d); arr(c.b.min, mn); arr(c.b.max, mx);
+                return oracle::box_line_epick(mn, mx, p, d);
+            });
+        }
+        {
             const auto cs = aabb_aabb_set(near);
             auto truth = [](const bb& c) {
                 double a0[3], a1[3], b0[3], b1[3];

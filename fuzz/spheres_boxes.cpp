@@ -1,6 +1,6 @@
 // The sphere and box pairs: point_sphere, sphere_sphere (intersects, contains), aabb_point,
-// aabb_aabb (intersects, contains, covers), aabb_ray and ray_sphere, differential against CGAL
-// Epeck on raw bit patterns. Exact answers must match; conservative/aggressive/classify keep
+// aabb_aabb (intersects, contains, covers), aabb_ray, aabb_segment, aabb_line and ray_sphere,
+// differential against CGAL Epeck (the line against exact rational slabs) on raw bit patterns. Exact answers must match; conservative/aggressive/classify keep
 // their contracts; both argument orders agree; exact t values of ray hits are correctly
 // rounded. Every call must survive NaN, infinities and subnormals. Any finding aborts.
 #include "../tests/oracle/cgal_oracle.hpp"
@@ -40,6 +40,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     (void)squared_distance(b1, p);
     (void)max_squared_distance<conservative>(b1, p);
     (void)contains<aggressive>(s1, s2);
+    const segment3 seg{p, q};
+    const line3 line{p, vec3{v[3], v[4], v[5]}};
+    (void)intersects<approximate>(b1, seg);
+    (void)intersects<conservative>(seg, b1);
+    (void)intersects<approximate>(line, b1);
+    (void)intersects<aggressive>(b1, line);
+    if (intersects(b1, seg) && !(std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]) && std::isfinite(v[3]) && std::isfinite(v[4]) && std::isfinite(v[5]))) std::abort();
     bool finite = true;
     for (double x : v) finite = finite && std::isfinite(x);
     if (!finite) return 0;
@@ -58,7 +65,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (contains(box, other) != oracle::box_contains_box(mn, mx, omn, omx)) std::abort();
     if (!oracle::is_rounded_point_box_sqdist(P, mn, mx, false, squared_distance(box, p)) && std::isfinite(squared_distance(box, p)))
         std::abort();
+    contracts(box, seg, oracle::box_segment(mn, mx, P, Q));
     if (!(ray.direction == vec3{0, 0, 0})) {
+        contracts(box, line, oracle::box_line(mn, mx, P, Q));
         contracts(box, ray, oracle::ray_box(P, Q, mn, mx));
         contracts(ray, a, oracle::ray_ball(P, Q, C, a.radius));
         if (const auto h = intersection(box, ray); h && !oracle::is_rounded_ray_box_t(P, Q, mn, mx, h->t_enter, h->t_exit))

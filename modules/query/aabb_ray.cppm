@@ -48,33 +48,57 @@ struct slab_axis {
     return d < 0.0 ? slab_axis{o, d, mx, mn} : slab_axis{o, d, mn, mx};
 }
 
-template <class K>
-[[nodiscard]] constexpr bool intersects(K& k, const aabb3& b, const ray3& r) {
-    slab_axis ax[3] = {slab_of(b, r, 0), slab_of(b, r, 1), slab_of(b, r, 2)};
-    for (const auto& a : ax) {
-        if (!(a.d < 0.0 ? a.far_plane <= a.near_plane : a.near_plane <= a.far_plane)) return false; // inverted/NaN
-        if (a.d == 0.0) {
-            if (!(a.near_plane <= a.o && a.o <= a.far_plane)) return false;
-        } else if (a.d > 0.0 ? a.far_plane < a.o : a.far_plane > a.o) {
-            return false; // U_j / d_j < 0: the slab lies behind the origin
-        } else if (!(a.d > 0.0 || a.d < 0.0)) {
-            return false; // NaN direction
+// The slab test shared by the box's linear pairs (aabb_ray, aabb_segment, aabb_line). The
+// parameter runs over t >= 0 (ray), [0, 1] (segment, direction e - o taken exactly from its end
+// points) or all reals (line). Per axis with d_i != 0 the object is inside the slab for t between
+// L_i/d_i and U_i/d_i; the sets meet iff every near bound is <= every far bound, the far bounds
+// are >= 0 (ray, segment) and the near bounds are <= 1 (segment): as signs, degree 2 for the
+// pairs of axes, comparisons of coordinates for the rest. Non-finite input: no.
+enum class slab_extent { ray, segment, line };
+template <slab_extent X, class K>
+[[nodiscard]] constexpr bool slabs(K& k, const aabb3& b, point3 o, vec3 dv, point3 e) {
+    if (!is_finite(b.min) || !is_finite(b.max) || !is_finite(o) || !is_finite(dv) || !is_finite(e)) return false;
+    const double oc[3] = {o.x, o.y, o.z}, dc[3] = {dv.x, dv.y, dv.z}, ec[3] = {e.x, e.y, e.z};
+    const double mn[3] = {b.min.x, b.min.y, b.min.z}, mx[3] = {b.max.x, b.max.y, b.max.z};
+    sign s[3];
+    double near[3], far[3];
+    for (int i = 0; i < 3; ++i) {
+        if (!(mn[i] <= mx[i])) return false; // inverted box
+        s[i] = X == slab_extent::segment ? arith::compare(k, ec[i], oc[i]) : arith::compare(k, dc[i], 0.0);
+        near[i] = s[i] == sign::negative ? mx[i] : mn[i];
+        far[i] = s[i] == sign::negative ? mn[i] : mx[i];
+        if (s[i] == sign::zero) { // parallel to the slab: the origin must lie in it
+            if (arith::compare(k, oc[i], mn[i]) == sign::negative || arith::compare(k, oc[i], mx[i]) == sign::positive) return false;
+            continue;
         }
+        if constexpr (X != slab_extent::line) // U_i / d_i >= 0: the slab is not behind the origin
+            if (arith::compare(k, far[i], oc[i]) == -s[i]) return false;
+        if constexpr (X == slab_extent::segment) // L_i / d_i <= 1: the end point reaches the slab
+            if (arith::compare(k, near[i], ec[i]) == s[i]) return false;
     }
     for (int i = 0; i < 3; ++i) {
-        if (ax[i].d == 0.0) continue;
+        if (s[i] == sign::zero) continue;
         for (int j = 0; j < 3; ++j) {
-            if (j == i || ax[j].d == 0.0) continue;
-            const slab_axis ai = ax[i], aj = ax[j];
+            if (j == i || s[j] == sign::zero) continue;
             // L_i/d_i <= U_j/d_j  <=>  sign(U_j d_i - L_i d_j) * sign(d_i) * sign(d_j) >= 0
-            const sign s = k.sgn([=](auto L) {
-                return (L(aj.far_plane) - L(aj.o)) * L(ai.d) - (L(ai.near_plane) - L(ai.o)) * L(aj.d);
-            });
-            const sign sd = (ai.d > 0.0) == (aj.d > 0.0) ? sign::positive : sign::negative;
-            if (s * sd == sign::negative) return false;
+            const double oi = oc[i], oj = oc[j], ni = near[i], fj = far[j];
+            sign v;
+            if constexpr (X == slab_extent::segment) {
+                const double ai = oc[i], bi = ec[i], aj = oc[j], bj = ec[j];
+                v = k.sgn([=](auto L) { return (L(fj) - L(oj)) * (L(bi) - L(ai)) - (L(ni) - L(oi)) * (L(bj) - L(aj)); });
+            } else {
+                const double di = dc[i], dj = dc[j];
+                v = k.sgn([=](auto L) { return (L(fj) - L(oj)) * L(di) - (L(ni) - L(oi)) * L(dj); });
+            }
+            if (v * s[i] * s[j] == sign::negative) return false;
         }
     }
     return true;
+}
+
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const aabb3& b, const ray3& r) {
+    return slabs<slab_extent::ray>(k, b, r.origin, r.direction, r.origin);
 }
 
 // Classic slab method in plain double (approximate tier).

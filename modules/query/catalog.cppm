@@ -69,6 +69,12 @@ inline constexpr std::tuple families{
         "signs in double",
         {{{"sat", "separating axes, Akenine-Moeller et al., Real-Time Rendering 4th ed., 22.12",
            [](const triangle3& p, const triangle3& q) { return method::triangle_triangle_sat(p, q); }}}}},
+    family<aabb3, segment3, 1>{"aabb_segment", "spheres_boxes", "slab method on [0, 1] (Kay and Kajiya 1986)",
+                               {{{"slab", "Kay and Kajiya, SIGGRAPH 1986; Ericson, Real-Time Collision Detection, 5.3.3",
+                                  [](const aabb3& b, const segment3& s) { return method::aabb_segment_slab(b, s); }}}}},
+    family<aabb3, line3, 1>{"aabb_line", "spheres_boxes", "slab method over all t (Kay and Kajiya 1986)",
+                            {{{"slab", "Kay and Kajiya, SIGGRAPH 1986",
+                               [](const aabb3& b, const line3& l) { return method::aabb_line_slab(b, l); }}}}},
     family<aabb3, triangle3, 1>{
         "aabb_triangle", "ray_triangle",
         "separating axes in double (Akenine-Moeller, JGT 6(1) 2001)",

@@ -20,6 +20,8 @@ export import :ray_triangle;
 export import :segment_triangle;
 export import :triangle_triangle;
 export import :aabb_triangle;
+export import :aabb_segment;
+export import :aabb_line;
 import incidence.core;
 import incidence.arith;
 import incidence.shapes;
@@ -177,6 +179,8 @@ namespace method {
 [[nodiscard]] constexpr std::optional<ray_sphere_hit> ray_sphere_algebraic(const ray3& r, const sphere3& s) {
     return pair::ray_sphere_algebraic(r, s);
 }
+[[nodiscard]] constexpr bool aabb_segment_slab(const aabb3& b, const segment3& s) { return pair::aabb_segment_slab(b, s); }
+[[nodiscard]] constexpr bool aabb_line_slab(const aabb3& b, const line3& l) { return pair::aabb_line_slab(b, l); }
 [[nodiscard]] constexpr bool aabb_triangle_sat(const aabb3& b, const triangle3& t) { return pair::aabb_triangle_sat(b, t); }
 [[nodiscard]] constexpr bool triangle_triangle_sat(const triangle3& p, const triangle3& q) {
     return pair::triangle_triangle_sat(p, q);

@@ -86,6 +86,31 @@ bool triangle_triangle(const double a[3], const double b[3], const double c[3], 
                        const double f[3]) {
     return CGAL::do_intersect(K::Triangle_3(P(a), P(b), P(c)), K::Triangle_3(P(d), P(e), P(f)));
 }
+bool box_segment(const double mn[3], const double mx[3], const double p[3], const double q[3]) {
+    const K::Iso_cuboid_3 box(P(mn), P(mx));
+    if (P(p) == P(q)) return !box.has_on_unbounded_side(P(p));
+    return CGAL::do_intersect(K::Segment_3(P(p), P(q)), box);
+}
+// Not CGAL's do_intersect(Line_3, Iso_cuboid_3): in CGAL 5.5 (bbox_line_do_intersect_aux) a line
+// parallel to a face and lying exactly in its plane loses a slab bound (0/0), and the test says
+// yes for lines that miss the box. Here: the slab intervals in exact rationals, with quotients.
+bool box_line(const double mn[3], const double mx[3], const double p[3], const double d[3]) {
+    using FT = K::FT;
+    bool have = false;
+    FT lo = 0, hi = 0;
+    for (int i = 0; i < 3; ++i) {
+        if (d[i] == 0) {
+            if (p[i] < mn[i] || p[i] > mx[i]) return false;
+            continue;
+        }
+        FT a = (FT(mn[i]) - FT(p[i])) / FT(d[i]), b = (FT(mx[i]) - FT(p[i])) / FT(d[i]);
+        if (b < a) std::swap(a, b);
+        if (!have || a > lo) lo = a;
+        if (!have || b < hi) hi = b;
+        have = true;
+    }
+    return !have || lo <= hi;
+}
 bool box_triangle(const double mn[3], const double mx[3], const double a[3], const double b[3], const double c[3]) {
     const K::Triangle_3 t(P(a), P(b), P(c));
     int flat = -1;
@@ -272,6 +297,14 @@ bool segment_triangle_epick(const double p[3], const double q[3], const double a
 bool triangle_triangle_epick(const double a[3], const double b[3], const double c[3], const double d[3], const double e[3],
                              const double f[3]) {
     return CGAL::do_intersect(KI::Triangle_3(P<KI>(a), P<KI>(b), P<KI>(c)), KI::Triangle_3(P<KI>(d), P<KI>(e), P<KI>(f)));
+}
+bool box_segment_epick(const double mn[3], const double mx[3], const double p[3], const double q[3]) {
+    const KI::Iso_cuboid_3 box(P<KI>(mn), P<KI>(mx));
+    if (P<KI>(p) == P<KI>(q)) return !box.has_on_unbounded_side(P<KI>(p));
+    return CGAL::do_intersect(KI::Segment_3(P<KI>(p), P<KI>(q)), box);
+}
+bool box_line_epick(const double mn[3], const double mx[3], const double p[3], const double d[3]) {
+    return CGAL::do_intersect(KI::Line_3(P<KI>(p), V<KI>(d)), KI::Iso_cuboid_3(P<KI>(mn), P<KI>(mx)));
 }
 bool box_triangle_epick(const double mn[3], const double mx[3], const double a[3], const double b[3], const double c[3]) {
     return CGAL::do_intersect(KI::Triangle_3(P<KI>(a), P<KI>(b), P<KI>(c)), KI::Iso_cuboid_3(P<KI>(mn), P<KI>(mx)));

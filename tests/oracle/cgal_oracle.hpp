@@ -19,6 +19,12 @@ bool segment_triangle(const double p[3], const double q[3], const double a[3], c
 // Closed box [mn, mx] against a non-degenerate triangle (Epeck). A box of full dimension is a CGAL
 // Iso_cuboid_3; a flat box (a rectangle, a segment or a point) is tested as CGAL Triangle_3,
 // Segment_3 or Point_3 pieces, since CGAL's box predicates assume a solid.
+// Closed box against a segment (p, q; p == q is a point) and against the line through p with
+// direction d (d != 0), Epeck.
+bool box_segment(const double mn[3], const double mx[3], const double p[3], const double q[3]);
+bool box_line(const double mn[3], const double mx[3], const double p[3], const double d[3]);
+bool box_segment_epick(const double mn[3], const double mx[3], const double p[3], const double q[3]);
+bool box_line_epick(const double mn[3], const double mx[3], const double p[3], const double d[3]);
 bool box_triangle(const double mn[3], const double mx[3], const double a[3], const double b[3], const double c[3]);
 bool box_triangle_epick(const double mn[3], const double mx[3], const double a[3], const double b[3], const double c[3]);
 bool triangle_triangle(const double a[3], const double b[3], const double c[3], const double d[3], const double e[3],

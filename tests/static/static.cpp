@@ -42,6 +42,13 @@ static_assert(!intersects(B, triangle3{{1.5, -1, 0.5}, {3, 0.5, 0.5}, {1.5, 2, 0
 static_assert(intersects(aabb3{{0.25, 0.25, 0}, {0.25, 0.25, 0}}, T));
 static_assert(intersects<conservative>(B, triangle3{{1, 1, 1}, {2, 1, 1}, {1, 2, 2}}));
 static_assert(intersects<approximate>(B, triangle3{{0.5, 0.5, 0.5}, {3, 0, 0}, {0, 3, 0}}));
+// box-segment and box-line: touching an edge, one ulp off, ending on a face, behind the origin
+static_assert(intersects(B, segment3{{2, 1, 0}, {0, -1, 0}}));
+static_assert(!intersects(B, segment3{{-1, 0.5, 0.5}, {-0x1p-1074, 0.5, 0.5}}));
+static_assert(intersects(segment3{{-1, 0.5, 0.5}, {0, 0.5, 0.5}}, B));
+static_assert(intersects(B, line3{{5, 0.5, 0.5}, {1, 0, 0}}));
+static_assert(!intersects(B, line3{{-1, 1.0000000000000002, 1}, {1, 0, 0}}));
+static_assert(intersects(line3{{2, 1, 0}, {-1, -1, 0}}, B));
 // ray-sphere, spheres, points, boxes
 static_assert(intersects(ray3{{-5, 1, 0}, {1, 0, 0}}, S));                // tangent
 static_assert(!intersects(ray3{{-5, 1.0000000000000002, 0}, {1, 0, 0}}, S));

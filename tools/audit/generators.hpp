@@ -40,6 +40,7 @@ inline sphere3 moved(sphere3 s, vec3 v) { return {s.center + v, s.radius}; }
 inline aabb3 moved(aabb3 b, vec3 v) { return {b.min + v, b.max + v}; }
 inline ray3 moved(ray3 r, vec3 v) { return {r.origin + v, r.direction}; }
 inline segment3 moved(segment3 s, vec3 v) { return {s.a + v, s.b + v}; }
+inline line3 moved(line3 l, vec3 v) { return {l.origin + v, l.direction}; }
 inline triangle3 moved(triangle3 t, vec3 v) { return {t.a + v, t.b + v, t.c + v}; }
 
 // Every shape is an aggregate of doubles: scaling and ulp moves act on its fields.
@@ -189,6 +190,21 @@ struct near_boundary<aabb3, ray3> {
                 continue;
             return {b, ray3{o, p - o}};
         }
+    }
+};
+template <>
+struct near_boundary<aabb3, segment3> {
+    static std::pair<aabb3, segment3> touching(rng& r) { // ends on the boundary, or passes through it
+        const auto [b, ray] = near_boundary<aabb3, ray3>::touching(r);
+        const double f = r.integer(2, 4) * 0.5; // 1: ends at the boundary point
+        return {b, segment3{ray.origin, ray.origin + ray.direction * f}};
+    }
+};
+template <>
+struct near_boundary<aabb3, line3> {
+    static std::pair<aabb3, line3> touching(rng& r) { // the ray's line: the origin is outside the box
+        const auto [b, ray] = near_boundary<aabb3, ray3>::touching(r);
+        return {b, line3{ray.origin, ray.direction}};
     }
 };
 template <>

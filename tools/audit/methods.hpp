@@ -35,6 +35,16 @@ inline bool epick(const triangle3& t, const triangle3& u) {
     arr(t.a, a), arr(t.b, b), arr(t.c, c), arr(u.a, d), arr(u.b, e), arr(u.c, f);
     return oracle::triangle_triangle_epick(a, b, c, d, e, f);
 }
+inline bool epick(const aabb3& b, const segment3& s) {
+    double mn[3], mx[3], p[3], q[3];
+    arr(b.min, mn), arr(b.max, mx), arr(s.a, p), arr(s.b, q);
+    return oracle::box_segment_epick(mn, mx, p, q);
+}
+inline bool epick(const aabb3& b, const line3& l) {
+    double mn[3], mx[3], p[3], d[3];
+    arr(b.min, mn), arr(b.max, mx), arr(l.origin, p), arr(l.direction, d);
+    return oracle::box_line_epick(mn, mx, p, d);
+}
 inline bool epick(const aabb3& b, const triangle3& t) {
     double mn[3], mx[3], a[3], c[3], d[3];
     arr(b.min, mn), arr(b.max, mx), arr(t.a, a), arr(t.b, c), arr(t.c, d);
@@ -63,6 +73,7 @@ inline bool epick_accepts(const triangle3& t) {
     arr(t.a, a), arr(t.b, b), arr(t.c, c);
     return !oracle::triangle_is_degenerate(a, b, c);
 }
+inline bool epick_accepts(const line3& l) { return !(l.direction.x == 0 && l.direction.y == 0 && l.direction.z == 0); }
 template <class S>
 bool epick_accepts(const S&) { return true; }
 } // namespace peer

@@ -65,6 +65,17 @@ int truth(const segment3& s, const triangle3& t) {
     arr(s.a, p), arr(s.b, q), arr(t.a, a), arr(t.b, b), arr(t.c, c);
     return oracle::segment_triangle(p, q, a, b, c);
 }
+int truth(const aabb3& b, const segment3& s) {
+    double mn[3], mx[3], p[3], q[3];
+    arr(b.min, mn), arr(b.max, mx), arr(s.a, p), arr(s.b, q);
+    return oracle::box_segment(mn, mx, p, q);
+}
+int truth(const aabb3& b, const line3& l) {
+    if (l.direction.x == 0 && l.direction.y == 0 && l.direction.z == 0) return -1;
+    double mn[3], mx[3], p[3], d[3];
+    arr(b.min, mn), arr(b.max, mx), arr(l.origin, p), arr(l.direction, d);
+    return oracle::box_line(mn, mx, p, d);
+}
 int truth(const aabb3& b, const triangle3& t) {
     if (degenerate(t)) return -1;
     double mn[3], mx[3], a[3], c[3], d[3];
