@@ -415,6 +415,32 @@ void register_all() {
             });
         }
         {
+            // planes: through the box's extreme corner / a segment end / a triangle vertex when near
+            struct pc { aabb3 b; segment3 s; triangle3 t; plane3 p; };
+            std::vector<pc> cs;
+            for (const auto& c : ray_triangle_set(near)) {
+                const aabb3 bx = box(c.t.a, c.t.b);
+                const vec3 n = near ? vec3{double(irand(-3, 3)), double(irand(-3, 3)), 1} : vec3{uni(-1, 1), uni(-1, 1), uni(-1, 1)};
+                const point3 q = near ? c.t.a : rp();
+                cs.push_back({bx, segment3{c.r.origin, c.t.a}, c.t, plane3{n, dot(n, q - point3{0, 0, 0})}});
+            }
+            auto n3 = [](const pc& c, double* n) { arr(c.p.normal, n); };
+            auto tb = [&](const pc& c) { double mn[3], mx[3], n[3]; arr(c.b.min, mn); arr(c.b.max, mx); n3(c, n); return oracle::box_plane(mn, mx, n, c.p.offset); };
+            auto ts = [&](const pc& c) { double a[3], q[3], n[3]; arr(c.s.a, a); arr(c.s.b, q); n3(c, n); return oracle::plane_segment(n, c.p.offset, a, q); };
+            auto tt3 = [&](const pc& c) { double a[3], q[3], w[3], n[3]; arr(c.t.a, a); arr(c.t.b, q); arr(c.t.c, w); n3(c, n); return oracle::plane_triangle(n, c.p.offset, a, q, w); };
+            tiers("aabb_plane", dist, cs, tb, [](auto tier, const pc& c) { return intersects<decltype(tier)>(c.b, c.p); });
+            tiers("plane_segment", dist, cs, ts, [](auto tier, const pc& c) { return intersects<decltype(tier)>(c.p, c.s); });
+            tiers("plane_triangle", dist, cs, tt3, [](auto tier, const pc& c) { return intersects<decltype(tier)>(c.p, c.t); });
+            std::vector<bool> t1, t2, t3;
+            for (const auto& c : cs) t1.push_back(tb(c)), t2.push_back(ts(c)), t3.push_back(tt3(c));
+            reg("cgal_epick/intersects/aabb_plane/" + dist, cs, t1, check::approximate, [n3](const pc& c) {
+                double mn[3], mx[3], n[3]; arr(c.b.min, mn); arr(c.b.max, mx); n3(c, n); return oracle::box_plane_epick(mn, mx, n, c.p.offset); });
+            reg("cgal_epick/intersects/plane_segment/" + dist, cs, t2, check::approximate, [n3](const pc& c) {
+                double a[3], q[3], n[3]; arr(c.s.a, a); arr(c.s.b, q); n3(c, n); return oracle::plane_segment_epick(n, c.p.offset, a, q); });
+            reg("cgal_epick/intersects/plane_triangle/" + dist, cs, t3, check::approximate, [n3](const pc& c) {
+                double a[3], q[3], w[3], n[3]; arr(c.t.a, a); arr(c.t.b, q); arr(c.t.c, w); n3(c, n); return oracle::plane_triangle_epick(n, c.p.offset, a, q, w); });
+        }
+        {
             const auto cs = aabb_aabb_set(near);
             auto truth = [](const bb& c) {
                 double a0[3], a1[3], b0[3], b1[3];

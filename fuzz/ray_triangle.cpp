@@ -1,5 +1,5 @@
 // ray3 x triangle3 (and segment3 x triangle3, triangle3 x triangle3 and aabb3 x triangle3 on the
-// same bytes: the second triangle is the ray's two points and doubles 15..17, the box's corners
+// same bytes, and plane3 x segment3 and plane3 x triangle3: the second triangle is the ray's two points and doubles 15..17, the box's corners
 // are doubles 0..5): differential against CGAL
 // Epeck for the exact tier; conservative never misses, aggressive never lies, classify is never
 // wrong; both argument orders agree; every tier and intersection() survive raw bit patterns
@@ -39,6 +39,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     (void)intersects<conservative>(t, box);
     (void)intersects<aggressive>(box, t);
     const bool box_hit = intersects<exact>(box, t);
+    const plane3 pl{{v[3], v[4], v[5]}, v[15]}; // plane_segment, plane_triangle: normal 3..5, offset 15
+    const segment3 ps{{v[0], v[1], v[2]}, {v[16], v[17], v[15]}};
+    (void)intersects<approximate>(pl, t);
+    (void)intersects<conservative>(ps, pl);
+    (void)intersects<aggressive>(t, pl);
     bool finite = true; // the ray, segment and t: doubles 0..14
     for (int i = 0; i < 15; ++i) finite = finite && std::isfinite(v[i]);
     const bool u_all_finite = finite && std::isfinite(v[15]) && std::isfinite(v[16]) && std::isfinite(v[17]);
@@ -55,6 +60,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (u_all_finite) {
         if (!oracle::triangle_is_degenerate(v, v + 3, v + 15)) contracts(u, t, oracle::triangle_triangle(v, v + 3, v + 15, v + 6, v + 9, v + 12));
         else (void)intersects<exact>(u, t);
+    }
+    if (u_all_finite && !(v[3] == 0 && v[4] == 0 && v[5] == 0)) {
+        double n[3] = {v[3], v[4], v[5]}, q[3] = {v[16], v[17], v[15]};
+        contracts(pl, ps, oracle::plane_segment(n, v[15], v, q));
+        contracts(pl, t, oracle::plane_triangle(n, v[15], v + 6, v + 9, v + 12));
     }
     if (v[0] <= v[3] && v[1] <= v[4] && v[2] <= v[5]) contracts(box, t, oracle::box_triangle(v, v + 3, v + 6, v + 9, v + 12));
     else if (box_hit) std::abort(); // an inverted box is empty

@@ -1,5 +1,5 @@
 // The sphere and box pairs: point_sphere, sphere_sphere (intersects, contains), aabb_point,
-// aabb_aabb (intersects, contains, covers), aabb_ray, aabb_segment, aabb_line and ray_sphere,
+// aabb_aabb (intersects, contains, covers), aabb_ray, aabb_segment, aabb_line, aabb_plane and ray_sphere,
 // differential against CGAL Epeck (the line against exact rational slabs) on raw bit patterns. Exact answers must match; conservative/aggressive/classify keep
 // their contracts; both argument orders agree; exact t values of ray hits are correctly
 // rounded. Every call must survive NaN, infinities and subnormals. Any finding aborts.
@@ -66,6 +66,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!oracle::is_rounded_point_box_sqdist(P, mn, mx, false, squared_distance(box, p)) && std::isfinite(squared_distance(box, p)))
         std::abort();
     contracts(box, seg, oracle::box_segment(mn, mx, P, Q));
+    if (!(ray.direction == vec3{0, 0, 0})) contracts(box, plane3{ray.direction, r1}, oracle::box_plane(mn, mx, Q, r1));
     if (!(ray.direction == vec3{0, 0, 0})) {
         contracts(box, line, oracle::box_line(mn, mx, P, Q));
         contracts(box, ray, oracle::ray_box(P, Q, mn, mx));

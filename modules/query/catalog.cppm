@@ -75,6 +75,9 @@ inline constexpr std::tuple families{
     family<aabb3, line3, 1>{"aabb_line", "spheres_boxes", "slab method over all t (Kay and Kajiya 1986)",
                             {{{"slab", "Kay and Kajiya, SIGGRAPH 1986",
                                [](const aabb3& b, const line3& l) { return method::aabb_line_slab(b, l); }}}}},
+    family<aabb3, plane3, 0>{"aabb_plane", "spheres_boxes", "signs in double", {}},
+    family<plane3, segment3, 0>{"plane_segment", "ray_triangle", "signs in double", {}},
+    family<plane3, triangle3, 0>{"plane_triangle", "ray_triangle", "signs in double", {}},
     family<aabb3, triangle3, 1>{
         "aabb_triangle", "ray_triangle",
         "separating axes in double (Akenine-Moeller, JGT 6(1) 2001)",

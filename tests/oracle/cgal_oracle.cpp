@@ -86,6 +86,34 @@ bool triangle_triangle(const double a[3], const double b[3], const double c[3], 
                        const double f[3]) {
     return CGAL::do_intersect(K::Triangle_3(P(a), P(b), P(c)), K::Triangle_3(P(d), P(e), P(f)));
 }
+template <class Ker>
+typename Ker::Plane_3 plane_of(const double n[3], double offset) {
+    return typename Ker::Plane_3(n[0], n[1], n[2], -typename Ker::FT(offset));
+}
+template <class Ker>
+bool box_plane_k(const double mn[3], const double mx[3], const double n[3], double offset) {
+    return CGAL::do_intersect(plane_of<Ker>(n, offset), typename Ker::Iso_cuboid_3(P<Ker>(mn), P<Ker>(mx)));
+}
+template <class Ker>
+bool plane_segment_k(const double n[3], double offset, const double p[3], const double q[3]) {
+    const auto pl = plane_of<Ker>(n, offset);
+    if (P<Ker>(p) == P<Ker>(q)) return pl.has_on(P<Ker>(p));
+    return CGAL::do_intersect(pl, typename Ker::Segment_3(P<Ker>(p), P<Ker>(q)));
+}
+template <class Ker>
+bool plane_triangle_k(const double n[3], double offset, const double a[3], const double b[3], const double c[3]) {
+    return CGAL::do_intersect(plane_of<Ker>(n, offset), typename Ker::Triangle_3(P<Ker>(a), P<Ker>(b), P<Ker>(c)));
+}
+bool box_plane(const double mn[3], const double mx[3], const double n[3], double offset) { return box_plane_k<K>(mn, mx, n, offset); }
+bool plane_segment(const double n[3], double offset, const double p[3], const double q[3]) { return plane_segment_k<K>(n, offset, p, q); }
+bool plane_triangle(const double n[3], double offset, const double a[3], const double b[3], const double c[3]) {
+    return plane_triangle_k<K>(n, offset, a, b, c);
+}
+bool box_plane_epick(const double mn[3], const double mx[3], const double n[3], double offset) { return box_plane_k<KI>(mn, mx, n, offset); }
+bool plane_segment_epick(const double n[3], double offset, const double p[3], const double q[3]) { return plane_segment_k<KI>(n, offset, p, q); }
+bool plane_triangle_epick(const double n[3], double offset, const double a[3], const double b[3], const double c[3]) {
+    return plane_triangle_k<KI>(n, offset, a, b, c);
+}
 bool box_segment(const double mn[3], const double mx[3], const double p[3], const double q[3]) {
     const K::Iso_cuboid_3 box(P(mn), P(mx));
     if (P(p) == P(q)) return !box.has_on_unbounded_side(P(p));

@@ -25,6 +25,14 @@ bool box_segment(const double mn[3], const double mx[3], const double p[3], cons
 bool box_line(const double mn[3], const double mx[3], const double p[3], const double d[3]);
 bool box_segment_epick(const double mn[3], const double mx[3], const double p[3], const double q[3]);
 bool box_line_epick(const double mn[3], const double mx[3], const double p[3], const double d[3]);
+// The plane n . p = offset (n != 0) against a closed box, a segment (p == q: a point) and a
+// triangle (Epeck, and Epick for the peers).
+bool box_plane(const double mn[3], const double mx[3], const double n[3], double offset);
+bool plane_segment(const double n[3], double offset, const double p[3], const double q[3]);
+bool plane_triangle(const double n[3], double offset, const double a[3], const double b[3], const double c[3]);
+bool box_plane_epick(const double mn[3], const double mx[3], const double n[3], double offset);
+bool plane_segment_epick(const double n[3], double offset, const double p[3], const double q[3]);
+bool plane_triangle_epick(const double n[3], double offset, const double a[3], const double b[3], const double c[3]);
 bool box_triangle(const double mn[3], const double mx[3], const double a[3], const double b[3], const double c[3]);
 bool box_triangle_epick(const double mn[3], const double mx[3], const double a[3], const double b[3], const double c[3]);
 bool triangle_triangle(const double a[3], const double b[3], const double c[3], const double d[3], const double e[3],

@@ -49,6 +49,13 @@ static_assert(intersects(segment3{{-1, 0.5, 0.5}, {0, 0.5, 0.5}}, B));
 static_assert(intersects(B, line3{{5, 0.5, 0.5}, {1, 0, 0}}));
 static_assert(!intersects(B, line3{{-1, 1.0000000000000002, 1}, {1, 0, 0}}));
 static_assert(intersects(line3{{2, 1, 0}, {-1, -1, 0}}, B));
+// planes: touching a box corner, one ulp off, an end point, a triangle vertex
+static_assert(intersects(B, plane3{{1, 1, 1}, 3}));
+static_assert(!intersects(plane3{{1, 1, 1}, 3.0000000000000004}, B));
+static_assert(intersects(plane3{{0, 0, 1}, 1}, segment3{{0, 0, 0}, {5, 5, 1}}));
+static_assert(!intersects(segment3{{0, 0, 0}, {5, 5, 0.9999999999999999}}, plane3{{0, 0, 1}, 1}));
+static_assert(intersects(plane3{{0, 0, 1}, 0}, T));
+static_assert(!intersects(plane3{{0, 0, 1}, 0x1p-1074}, T));
 // ray-sphere, spheres, points, boxes
 static_assert(intersects(ray3{{-5, 1, 0}, {1, 0, 0}}, S));                // tangent
 static_assert(!intersects(ray3{{-5, 1.0000000000000002, 0}, {1, 0, 0}}, S));

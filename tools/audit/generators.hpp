@@ -41,6 +41,7 @@ inline aabb3 moved(aabb3 b, vec3 v) { return {b.min + v, b.max + v}; }
 inline ray3 moved(ray3 r, vec3 v) { return {r.origin + v, r.direction}; }
 inline segment3 moved(segment3 s, vec3 v) { return {s.a + v, s.b + v}; }
 inline line3 moved(line3 l, vec3 v) { return {l.origin + v, l.direction}; }
+inline plane3 moved(plane3 p, vec3 v) { return {p.normal, p.offset + dot(p.normal, v)}; }
 inline triangle3 moved(triangle3 t, vec3 v) { return {t.a + v, t.b + v, t.c + v}; }
 
 // Every shape is an aggregate of doubles: scaling and ulp moves act on its fields.
@@ -53,6 +54,7 @@ S scaled(const S& s, int e) {
     for (double& x : f) x = std::ldexp(x, e);
     return std::bit_cast<S>(f);
 }
+inline plane3 scaled(const plane3& p, int e) { return {p.normal, std::ldexp(p.offset, e)}; } // n . (2^e x) = 2^e offset
 inline aabb3 tidy(aabb3 b) { // a nudge may swap a flat box's bounds
     if (b.min.x > b.max.x) std::swap(b.min.x, b.max.x);
     if (b.min.y > b.max.y) std::swap(b.min.y, b.max.y);
@@ -205,6 +207,39 @@ struct near_boundary<aabb3, line3> {
     static std::pair<aabb3, line3> touching(rng& r) { // the ray's line: the origin is outside the box
         const auto [b, ray] = near_boundary<aabb3, ray3>::touching(r);
         return {b, line3{ray.origin, ray.direction}};
+    }
+};
+// Planes n . p = offset through the shape's vertex that is extreme along -n: the shape lies on
+// the plane's positive side and touches it at a vertex, an edge or a face (ties).
+template <>
+struct near_boundary<aabb3, plane3> {
+    static std::pair<aabb3, plane3> touching(rng& r) {
+        const auto [b, p] = near_boundary<aabb3, point3>::touching(r);
+        const vec3 n = int_vec(r, 6);
+        const point3 lo{n.x >= 0 ? b.min.x : b.max.x, n.y >= 0 ? b.min.y : b.max.y, n.z >= 0 ? b.min.z : b.max.z};
+        return {b, plane3{n, dot(n, lo - point3{0, 0, 0})}};
+    }
+};
+template <>
+struct near_boundary<plane3, segment3> {
+    static std::pair<plane3, segment3> touching(rng& r) {
+        const point3 a = int_point(r, 400);
+        const point3 b = a + int_vec(r, 400);
+        vec3 n = int_vec(r, 6);
+        if (dot(n, b - a) < 0) n = n * -1.0;
+        return {plane3{n, dot(n, a - point3{0, 0, 0})}, r.coin() ? segment3{a, b} : segment3{b, a}};
+    }
+};
+template <>
+struct near_boundary<plane3, triangle3> {
+    static std::pair<plane3, triangle3> touching(rng& r) {
+        const triangle3 t = int_triangle(r);
+        const vec3 n = int_vec(r, 6);
+        const point3 v[3] = {t.a, t.b, t.c};
+        point3 lo = v[0];
+        for (const point3& q : v)
+            if (dot(n, q - lo) < 0) lo = q;
+        return {plane3{n, dot(n, lo - point3{0, 0, 0})}, t};
     }
 };
 template <>

@@ -35,6 +35,21 @@ inline bool epick(const triangle3& t, const triangle3& u) {
     arr(t.a, a), arr(t.b, b), arr(t.c, c), arr(u.a, d), arr(u.b, e), arr(u.c, f);
     return oracle::triangle_triangle_epick(a, b, c, d, e, f);
 }
+inline bool epick(const aabb3& b, const plane3& p) {
+    double mn[3], mx[3], n[3];
+    arr(b.min, mn), arr(b.max, mx), arr(p.normal, n);
+    return oracle::box_plane_epick(mn, mx, n, p.offset);
+}
+inline bool epick(const plane3& p, const segment3& s) {
+    double n[3], a[3], b[3];
+    arr(p.normal, n), arr(s.a, a), arr(s.b, b);
+    return oracle::plane_segment_epick(n, p.offset, a, b);
+}
+inline bool epick(const plane3& p, const triangle3& t) {
+    double n[3], a[3], b[3], c[3];
+    arr(p.normal, n), arr(t.a, a), arr(t.b, b), arr(t.c, c);
+    return oracle::plane_triangle_epick(n, p.offset, a, b, c);
+}
 inline bool epick(const aabb3& b, const segment3& s) {
     double mn[3], mx[3], p[3], q[3];
     arr(b.min, mn), arr(b.max, mx), arr(s.a, p), arr(s.b, q);
@@ -73,6 +88,7 @@ inline bool epick_accepts(const triangle3& t) {
     arr(t.a, a), arr(t.b, b), arr(t.c, c);
     return !oracle::triangle_is_degenerate(a, b, c);
 }
+inline bool epick_accepts(const plane3& p) { return !(p.normal.x == 0 && p.normal.y == 0 && p.normal.z == 0); }
 inline bool epick_accepts(const line3& l) { return !(l.direction.x == 0 && l.direction.y == 0 && l.direction.z == 0); }
 template <class S>
 bool epick_accepts(const S&) { return true; }

@@ -65,6 +65,24 @@ int truth(const segment3& s, const triangle3& t) {
     arr(s.a, p), arr(s.b, q), arr(t.a, a), arr(t.b, b), arr(t.c, c);
     return oracle::segment_triangle(p, q, a, b, c);
 }
+int truth(const aabb3& b, const plane3& p) {
+    if (p.normal.x == 0 && p.normal.y == 0 && p.normal.z == 0) return -1;
+    double mn[3], mx[3], n[3];
+    arr(b.min, mn), arr(b.max, mx), arr(p.normal, n);
+    return oracle::box_plane(mn, mx, n, p.offset);
+}
+int truth(const plane3& p, const segment3& s) {
+    if (p.normal.x == 0 && p.normal.y == 0 && p.normal.z == 0) return -1;
+    double n[3], a[3], b[3];
+    arr(p.normal, n), arr(s.a, a), arr(s.b, b);
+    return oracle::plane_segment(n, p.offset, a, b);
+}
+int truth(const plane3& p, const triangle3& t) {
+    if ((p.normal.x == 0 && p.normal.y == 0 && p.normal.z == 0) || degenerate(t)) return -1;
+    double n[3], a[3], b[3], c[3];
+    arr(p.normal, n), arr(t.a, a), arr(t.b, b), arr(t.c, c);
+    return oracle::plane_triangle(n, p.offset, a, b, c);
+}
 int truth(const aabb3& b, const segment3& s) {
     double mn[3], mx[3], p[3], q[3];
     arr(b.min, mn), arr(b.max, mx), arr(s.a, p), arr(s.b, q);
