@@ -6,6 +6,7 @@
 // Run: bench/incidence_bench --benchmark_format=json  (the numbers belong in notes, not tests)
 #include <benchmark/benchmark.h>
 #include "../tests/oracle/cgal_oracle.hpp"
+#include "fcl_peer.hpp"
 #include <cmath>
 #include <algorithm>
 #include <functional>
@@ -13,6 +14,8 @@
 #include <string>
 #include <vector>
 import incidence;
+#include "../tests/support/testing.hpp"
+#include "../tests/support/obb_cases.hpp"
 
 using namespace incidence;
 
@@ -179,9 +182,44 @@ void tiers(const std::string& pair, const std::string& dist, const std::vector<C
     reg("approximate/intersects/" + pair + "/" + dist, cs, truth, check::approximate, [f](const Case& c) { return f(approximate{}, c); });
 }
 
+// An OBB pair on the tests' generators (tests/support/obb_cases.hpp), the LP oracle as truth.
+template <class A, class B>
+std::vector<std::pair<A, B>> obb_tiers(const std::string& pair, bool near) {
+    const std::string dist = near ? "near_degenerate" : "random";
+    support::rng r(20261122 + (near ? 1 : 0));
+    std::vector<std::pair<A, B>> cs;
+    while (cs.size() < set_size) cs.push_back(near ? support::obb_case<A, B>::near(r) : support::obb_case<A, B>::random(r));
+    auto truth = [](const std::pair<A, B>& c) { return oracle::lp_intersect(support::lp(c.first), support::lp(c.second)); };
+    tiers(pair, dist, cs, truth, [](auto tier, const std::pair<A, B>& c) { return intersects<decltype(tier)>(c.first, c.second); });
+    return cs;
+}
+void obb_arrays(const obb3& b, double* c, double* a, double* h) {
+    arr(b.center, c);
+    for (unsigned i = 0; i < 3; ++i) arr(b.axes[i], a + 3 * i), h[i] = b.half_extents[i];
+}
+
 void register_all() {
     for (const bool near : {false, true}) {
         const std::string dist = near ? "near_degenerate" : "random";
+        {
+            const auto cs = obb_tiers<obb3, obb3>("obb_obb", near);
+            std::vector<bool> t;
+            for (const auto& c : cs) t.push_back(oracle::lp_intersect(support::lp(c.first), support::lp(c.second)));
+            reg("gottschalk/intersects/obb_obb/" + dist, cs, t, check::approximate,
+                [](const std::pair<obb3, obb3>& c) { return method::obb_obb_gottschalk(c.first, c.second); });
+            reg("fcl/intersects/obb_obb/" + dist, cs, t, check::approximate, [](const std::pair<obb3, obb3>& c) {
+                double ca[3], aa[9], ha[3], cb[3], ab[9], hb[3];
+                obb_arrays(c.first, ca, aa, ha), obb_arrays(c.second, cb, ab, hb);
+                return fcl_peer::obb_obb(ca, aa, ha, cb, ab, hb);
+            });
+            (void)obb_tiers<aabb3, obb3>("aabb_obb", near);
+            (void)obb_tiers<obb3, point3>("obb_point", near);
+            (void)obb_tiers<obb3, segment3>("obb_segment", near);
+            (void)obb_tiers<obb3, ray3>("obb_ray", near);
+            (void)obb_tiers<line3, obb3>("line_obb", near);
+            (void)obb_tiers<obb3, triangle3>("obb_triangle", near);
+            (void)obb_tiers<obb3, plane3>("obb_plane", near);
+        }
         {
             const auto cs = ray_triangle_set(near);
             auto truth = [](const rt& c) {
@@ -343,6 +381,11 @@ void register_all() {
                 double a[3], b[3], cc[3], d[3], e[3], f[3];
                 arr(c.p.a, a); arr(c.p.b, b); arr(c.p.c, cc); arr(c.q.a, d); arr(c.q.b, e); arr(c.q.c, f);
                 return oracle::triangle_triangle_epick(a, b, cc, d, e, f);
+            });
+            reg("fcl/intersects/triangle_triangle/" + dist, cs, t, check::approximate, [](const tt& c) {
+                double a[3], b[3], cc[3], d[3], e[3], f[3];
+                arr(c.p.a, a); arr(c.p.b, b); arr(c.p.c, cc); arr(c.q.a, d); arr(c.q.b, e); arr(c.q.c, f);
+                return fcl_peer::triangle_triangle(a, b, cc, d, e, f);
             });
         }
         {

@@ -127,6 +127,11 @@ constexpr void trim(dyadic& a) {
     return d;
 }
 
+[[nodiscard]] constexpr dyadic abs(const dyadic& a) {
+    dyadic r = a;
+    r.neg = false;
+    return r;
+}
 [[nodiscard]] constexpr dyadic operator-(const dyadic& a) {
     dyadic r = a;
     if (r.n != 0) r.neg = !r.neg;

@@ -98,6 +98,8 @@ template <int N>
     for (int i = 0; i < a.n; ++i) r.c[static_cast<unsigned>(i)] = -a.c[static_cast<unsigned>(i)];
     return r;
 }
+template <int N>
+[[nodiscard]] constexpr expansion<N> abs(const expansion<N>& a) { return a.sign() < 0 ? -a : a; }
 template <int N, int M>
 [[nodiscard]] constexpr expansion<N + M> operator-(const expansion<N>& a, const expansion<M>& b) {
     if constexpr (N == 1 && M == 1) {

@@ -65,6 +65,9 @@ template <int A, int B>
     return {a.v * b.v, a.p * b.p + 0x1p-1020};
 }
 
+// |x|: the bound carries over unchanged, since | |v| - |x| | <= |v - x| and | |v| | <= p.
+template <int A>
+[[nodiscard]] constexpr filtered<A> abs(filtered<A> a) { return {abs(a.v), a.p}; }
 template <int K>
 [[nodiscard]] constexpr double error_bound(filtered<K> a) {
     constexpr double ku = K * unit_roundoff;

@@ -52,6 +52,9 @@ template <int A, int B>
 }
 template <int A>
 [[nodiscard]] constexpr filtered2<A> operator-(const filtered2<A>& a) { return {-a.hi, -a.lo, a.p}; }
+// |x|: a normalised double-double has the sign of its leading part; the bound carries over.
+template <int A>
+[[nodiscard]] constexpr filtered2<A> abs(const filtered2<A>& a) { return a.hi < 0.0 ? -a : a; }
 template <int A, int B>
 [[nodiscard]] constexpr auto operator-(const filtered2<A>& a, const filtered2<B>& b) {
     if constexpr (A == 0 && B == 0) {

@@ -9,6 +9,9 @@
 //
 // Rule for predicate polynomials: homogeneous in their inputs (every input has degree 1,
 // no literal constants), so scaling all inputs by 2^s keeps the sign. The range probe checks it.
+// A constant that balances degrees is lifted like an input (L(1.0)), so it scales with them.
+// abs(x) of a subexpression is allowed: every number type knows or bounds its sign, and
+// |x| keeps both the degree and the filters' error bounds.
 module;
 #include <array>
 #include <cstdint>
@@ -104,6 +107,7 @@ struct exact_double {
 }
 [[nodiscard]] constexpr exact_double operator-(exact_double a) { return {-a.v, a.exact}; }
 [[nodiscard]] constexpr exact_double operator-(exact_double a, exact_double b) { return a + (-b); }
+[[nodiscard]] constexpr exact_double abs(exact_double a) { return {abs(a.v), a.exact}; }
 [[nodiscard]] constexpr exact_double operator*(exact_double a, exact_double b) {
     if (!a.exact || !b.exact) return {0.0, false};
     if (a.v == 0.0 || b.v == 0.0) return {0.0, true};
@@ -137,6 +141,7 @@ struct range_probe {
 }
 [[nodiscard]] constexpr range_probe operator-(range_probe a, range_probe b) { return a + b; }
 [[nodiscard]] constexpr range_probe operator-(range_probe a) { return a; }
+[[nodiscard]] constexpr range_probe abs(range_probe a) { return a; }
 [[nodiscard]] constexpr range_probe operator*(range_probe a, range_probe b) {
     auto r = merge_range(a, b);
     r.dmin = a.dmin + b.dmin;

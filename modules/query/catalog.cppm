@@ -83,6 +83,18 @@ inline constexpr std::tuple families{
         "separating axes in double (Akenine-Moeller, JGT 6(1) 2001)",
         {{{"sat", "Akenine-Moeller, Fast 3D triangle-box overlap testing, JGT 6(1), 2001",
            [](const aabb3& b, const triangle3& t) { return method::aabb_triangle_sat(b, t); }}}}},
+    family<obb3, point3, 0>{"obb_point", "obb", "signs in double", {}},
+    family<aabb3, obb3, 0>{"aabb_obb", "obb", "signs in double", {}},
+    family<obb3, obb3, 1>{
+        "obb_obb", "obb",
+        "signs in double",
+        {{{"gottschalk", "Gottschalk, Lin and Manocha, OBBTree, SIGGRAPH 1996; Ericson, Real-Time Collision Detection, 4.4.1",
+           [](const obb3& a, const obb3& b) { return method::obb_obb_gottschalk(a, b); }}}}},
+    family<obb3, segment3, 0>{"obb_segment", "obb", "signs in double", {}},
+    family<obb3, ray3, 0>{"obb_ray", "obb", "signs in double", {}},
+    family<line3, obb3, 0>{"line_obb", "obb", "signs in double", {}},
+    family<obb3, triangle3, 0>{"obb_triangle", "obb", "signs in double", {}},
+    family<obb3, plane3, 0>{"obb_plane", "obb", "signs in double", {}},
 };
 
 inline constexpr std::size_t family_count = std::tuple_size_v<decltype(families)>;

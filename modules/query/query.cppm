@@ -25,6 +25,14 @@ export import :aabb_line;
 export import :aabb_plane;
 export import :plane_segment;
 export import :plane_triangle;
+export import :aabb_obb;
+export import :obb_obb;
+export import :obb_point;
+export import :obb_segment;
+export import :obb_ray;
+export import :line_obb;
+export import :obb_triangle;
+export import :obb_plane;
 import incidence.core;
 import incidence.arith;
 import incidence.shapes;
@@ -188,6 +196,7 @@ namespace method {
 [[nodiscard]] constexpr bool triangle_triangle_sat(const triangle3& p, const triangle3& q) {
     return pair::triangle_triangle_sat(p, q);
 }
+[[nodiscard]] constexpr bool obb_obb_gottschalk(const obb3& a, const obb3& b) { return pair::obb_obb_gottschalk(a, b); }
 } // namespace method
 
 } // namespace incidence

@@ -3,6 +3,8 @@
 // exact kernel Epeck (exact rationals), or with Epick where the name says so (for timing).
 // Balls, not spheres: CGAL's Sphere_3 is a surface, so ball tests use exact squared distances.
 #pragma once
+#include <array>
+#include <optional>
 #include <vector>
 
 namespace oracle {
@@ -45,6 +47,28 @@ bool point_in_ball(const double p[3], const double c[3], double r);
 bool ball_ball(const double c1[3], double r1, const double c2[3], double r2);
 bool ball_contains_ball(const double c1[3], double r1, const double c2[3], double r2);
 bool ray_ball(const double o[3], const double d[3], const double c[3], double r);
+
+// A closed convex set for the LP oracle, every coefficient an input double: the points' convex
+// hull plus sum t_g g with lo_g <= t_g <= hi_g (a box: its centre and its axes with |t| <= h; a
+// ray: its origin and t >= 0 along d), or the plane normal . x = offset.
+struct convex_set {
+    struct generator {
+        std::array<double, 3> g;
+        bool has_lo = false, has_hi = false;
+        double lo = 0, hi = 0;
+    };
+    std::vector<std::array<double, 3>> points;
+    std::vector<generator> generators;
+    bool plane = false;
+    std::array<double, 3> normal{};
+    double offset = 0;
+};
+// Do a and b meet? Exact LP feasibility (CGAL QP_solver over Gmpzf), for every pair of convex
+// sets, the OBB, k-DOP and frustum pairs that CGAL's kernel cannot express among them.
+// Throws when CGAL's own certificate check rejects every answer (seen for inputs spanning
+// 2^-1030 .. 2^1020 together); lp_intersect_verified returns std::nullopt then.
+bool lp_intersect(const convex_set& a, const convex_set& b);
+std::optional<bool> lp_intersect_verified(const convex_set& a, const convex_set& b);
 
 // Is `x` the correctly rounded (nearest, ties to even) value of the exact quantity?
 bool is_rounded_ray_triangle_t(const double o[3], const double d[3], const double a[3], const double b[3],

@@ -56,6 +56,24 @@ static_assert(intersects(plane3{{0, 0, 1}, 1}, segment3{{0, 0, 0}, {5, 5, 1}}));
 static_assert(!intersects(segment3{{0, 0, 0}, {5, 5, 0.9999999999999999}}, plane3{{0, 0, 1}, 1}));
 static_assert(intersects(plane3{{0, 0, 1}, 0}, T));
 static_assert(!intersects(plane3{{0, 0, 1}, 0x1p-1074}, T));
+// OBB pairs: a box rotated 45 degrees about z (axes (1, 1, 0) and (-1, 1, 0), a parallelepiped)
+constexpr obb3 D{{0, 0, 0}, {vec3{1, 1, 0}, vec3{-1, 1, 0}, vec3{0, 0, 1}}, {1, 1, 1}};
+static_assert(intersects(D, point3{2, 0, 0}));                                         // a corner
+static_assert(!intersects(point3{2.0000000000000004, 0, 0}, D));
+static_assert(intersects(D, obb3{{3, 0, 0}, {vec3{1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1}}, {1, 1, 1}})); // corner on a face
+static_assert(!intersects(D, obb3{{3.0000000000000004, 0, 0}, {vec3{1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1}}, {1, 1, 1}}));
+static_assert(intersects(aabb3{{2, -1, -1}, {3, 1, 1}}, D));
+static_assert(!intersects<aggressive>(D, aabb3{{2.0000000000000004, -1, -1}, {3, 1, 1}}));
+static_assert(intersects(D, segment3{{2, 0, -5}, {2, 0, 5}}));                           // along an edge
+static_assert(intersects(D, ray3{{3, 0, 0}, {-1, 0, 0}}));
+static_assert(!intersects(ray3{{3, 0, 0}, {1, 0, 0}}, D));
+static_assert(intersects(line3{{2, 0, 7}, {0, 0, 1}}, D));
+static_assert(!intersects(D, line3{{2.0000000000000004, 0, 7}, {0, 0, 1}}));
+static_assert(intersects(D, triangle3{{2, 0, 0}, {3, 1, 0}, {3, -1, 0}}));
+static_assert(intersects(D, plane3{{1, 0, 0}, 2}));
+static_assert(!intersects(plane3{{1, 0, 0}, 2.0000000000000004}, D));
+static_assert(intersects<conservative>(D, plane3{{1, 1, 0}, 2}));
+static_assert(intersects<approximate>(D, point3{0.5, 0.5, 0.5}));
 // ray-sphere, spheres, points, boxes
 static_assert(intersects(ray3{{-5, 1, 0}, {1, 0, 0}}, S));                // tangent
 static_assert(!intersects(ray3{{-5, 1.0000000000000002, 0}, {1, 0, 0}}, S));

@@ -45,13 +45,6 @@ namespace support {
 
 inline std::string str(incidence::point3 q) { return "(" + hex(q.x) + "," + hex(q.y) + "," + hex(q.z) + ")"; }
 inline std::string str(incidence::vec3 q) { return "(" + hex(q.x) + "," + hex(q.y) + "," + hex(q.z) + ")"; }
-// The box spanned by two corners in any order (nudged flat boxes may come out inverted).
-inline incidence::aabb3 ordered(incidence::aabb3 b) {
-    if (b.min.x > b.max.x) std::swap(b.min.x, b.max.x);
-    if (b.min.y > b.max.y) std::swap(b.min.y, b.max.y);
-    if (b.min.z > b.max.z) std::swap(b.min.z, b.max.z);
-    return b;
-}
 inline void arr(incidence::point3 p, double* o) { o[0] = p.x; o[1] = p.y; o[2] = p.z; }
 inline void arr(incidence::vec3 p, double* o) { o[0] = p.x; o[1] = p.y; o[2] = p.z; }
 

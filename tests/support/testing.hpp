@@ -89,6 +89,13 @@ struct tally {
     }
 };
 
+// The box spanned by two corners in any order (nudged flat boxes may come out inverted).
+inline incidence::aabb3 ordered(incidence::aabb3 b) {
+    if (b.min.x > b.max.x) std::swap(b.min.x, b.max.x);
+    if (b.min.y > b.max.y) std::swap(b.min.y, b.max.y);
+    if (b.min.z > b.max.z) std::swap(b.min.z, b.max.z);
+    return b;
+}
 inline std::string hex(double x) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%a", x);
@@ -112,6 +119,7 @@ constexpr mnum operator+(mnum a, mnum b) { return {a.v + b.v, a.p + b.p, a.in_do
 constexpr mnum operator-(mnum a, mnum b) { return {a.v - b.v, a.p + b.p, a.in_domain && b.in_domain}; }
 constexpr mnum operator-(mnum a) { return {-a.v, a.p, a.in_domain}; }
 constexpr mnum operator*(mnum a, mnum b) { return {a.v * b.v, a.p * b.p, a.in_domain && b.in_domain}; }
+constexpr mnum abs(mnum a) { return {std::fabs(a.v), a.p, a.in_domain}; }
 struct lift_margin {
     mnum operator()(double x) const {
         const double m = std::fabs(x);
@@ -133,4 +141,5 @@ struct margin_kernel {
     }
     void observe_compare(double a, double b) { (void)sgn([=](auto L) { return L(a) - L(b); }); }
 };
+
 } // namespace support_margin

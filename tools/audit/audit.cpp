@@ -76,6 +76,7 @@ std::string shape_name(const segment3*) { return "segment3"; }
 std::string shape_name(const triangle3*) { return "triangle3"; }
 std::string shape_name(const line3*) { return "line3"; }
 std::string shape_name(const plane3*) { return "plane3"; }
+std::string shape_name(const obb3*) { return "obb3"; }
 
 struct counts {
     long cases = 0, wrong = 0, false_positive = 0, false_negative = 0;

@@ -43,6 +43,7 @@ inline segment3 moved(segment3 s, vec3 v) { return {s.a + v, s.b + v}; }
 inline line3 moved(line3 l, vec3 v) { return {l.origin + v, l.direction}; }
 inline plane3 moved(plane3 p, vec3 v) { return {p.normal, p.offset + dot(p.normal, v)}; }
 inline triangle3 moved(triangle3 t, vec3 v) { return {t.a + v, t.b + v, t.c + v}; }
+inline obb3 moved(obb3 b, vec3 v) { return {b.center + v, b.axes, b.half_extents}; }
 
 // Every shape is an aggregate of doubles: scaling and ulp moves act on its fields.
 template <class S>
@@ -55,10 +56,17 @@ S scaled(const S& s, int e) {
     return std::bit_cast<S>(f);
 }
 inline plane3 scaled(const plane3& p, int e) { return {p.normal, std::ldexp(p.offset, e)}; } // n . (2^e x) = 2^e offset
+inline obb3 scaled(const obb3& b, int e) { // the axes are directions: only the centre and extents scale
+    return {scaled(b.center, e), b.axes, {std::ldexp(b.half_extents[0], e), std::ldexp(b.half_extents[1], e), std::ldexp(b.half_extents[2], e)}};
+}
 inline aabb3 tidy(aabb3 b) { // a nudge may swap a flat box's bounds
     if (b.min.x > b.max.x) std::swap(b.min.x, b.max.x);
     if (b.min.y > b.max.y) std::swap(b.min.y, b.max.y);
     if (b.min.z > b.max.z) std::swap(b.min.z, b.max.z);
+    return b;
+}
+inline obb3 tidy(obb3 b) { // a nudge may make a zero extent negative
+    for (double& h : b.half_extents) h = std::fabs(h);
     return b;
 }
 template <class S>
@@ -296,6 +304,113 @@ struct near_boundary<triangle3, triangle3> {
             const vec3 n = cross(u.b - u.a, u.c - u.a);
             if (dot(n, n) > 1e4) return r.coin() ? std::pair{t, u} : std::pair{u, t};
         }
+    }
+};
+
+// A box whose corners are exact: integer centre and extents, and a frame that is a signed
+// permutation of the unit axes, possibly turned by the exactly orthogonal dyadic near-rotation
+// (1, e, 0), (-e, 1, 0), (0, 0, 1 + e^2), |e| <= 2^-11. p is a corner, edge or face point of its boundary and
+// o = sum s_i a_i points out of the box there.
+struct obb_touch {
+    obb3 box;
+    point3 p;
+    vec3 o;
+};
+inline obb_touch touching_obb(rng& r) {
+    std::array<vec3, 3> a{vec3{1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1}};
+    if (r.coin()) {
+        // e <= 2^-11 keeps the frame within obb3::make's 1e-6 of orthonormal, as the
+        // alternatives (Gottschalk's test) assume
+        const double e = std::ldexp(1.0, -r.integer(11, 13)) * (r.coin() ? 1 : -1);
+        a = {vec3{1, e, 0}, vec3{-e, 1, 0}, vec3{0, 0, 1 + e * e}};
+    }
+    for (int i = 2; i > 0; --i) std::swap(a[static_cast<unsigned>(i)], a[static_cast<unsigned>(r.integer(0, i))]);
+    const bool swap_xz = r.coin(); // one coordinate permutation for the whole frame
+    for (auto& v : a) {
+        double c[3] = {v.x, v.y, v.z};
+        if (swap_xz) std::swap(c[0], c[2]);
+        v = r.coin() ? vec3{c[0], c[1], c[2]} : vec3{-c[0], -c[1], -c[2]};
+    }
+    obb_touch t{obb3{int_point(r, 256), a, {double(r.integer(1, 256)), double(r.integer(1, 256)), double(r.integer(1, 256))}}, {}, {}};
+    t.p = t.box.center;
+    for (unsigned i = 0; i < 3; ++i) {
+        const double s = r.integer(0, 3) == 0 ? 0.0 : (r.coin() ? 1.0 : -1.0);
+        t.p = t.p + a[i] * (s * t.box.half_extents[i]);
+        t.o = t.o + a[i] * (s == 0.0 ? 0.0 : s);
+    }
+    if (t.o.x == 0 && t.o.y == 0 && t.o.z == 0) t.o = a[0]; // the centre was picked: use a face
+    if (t.o.x == a[0].x && t.o.y == a[0].y && t.o.z == a[0].z) t.p = t.box.center + a[0] * t.box.half_extents[0];
+    return t;
+}
+template <>
+struct near_boundary<obb3, point3> {
+    static std::pair<obb3, point3> touching(rng& r) {
+        const auto t = touching_obb(r);
+        return {t.box, t.p};
+    }
+};
+template <>
+struct near_boundary<aabb3, obb3> {
+    static std::pair<aabb3, obb3> touching(rng& r) { // the box in the octant of o at p
+        const auto t = touching_obb(r);
+        const vec3 w{double(r.integer(1, 256)), double(r.integer(1, 256)), double(r.integer(1, 256))};
+        const point3 q{t.p.x + (t.o.x >= 0 ? w.x : -w.x), t.p.y + (t.o.y >= 0 ? w.y : -w.y), t.p.z + (t.o.z >= 0 ? w.z : -w.z)};
+        return {tidy(aabb3{t.p, q}), t.box};
+    }
+};
+template <>
+struct near_boundary<obb3, obb3> {
+    static std::pair<obb3, obb3> touching(rng& r) { // a box of the same frame, corner to corner beyond p
+        const auto t = touching_obb(r);
+        obb3 b{t.p, t.box.axes, {double(r.integer(1, 256)), double(r.integer(1, 256)), double(r.integer(1, 256))}};
+        for (unsigned i = 0; i < 3; ++i) {
+            const double s = dot(t.o, t.box.axes[i]) > 0 ? 1.0 : (dot(t.o, t.box.axes[i]) < 0 ? -1.0 : 0.0);
+            b.center = b.center + t.box.axes[i] * (s * b.half_extents[i]);
+        }
+        return r.coin() ? std::pair{t.box, b} : std::pair{b, t.box};
+    }
+};
+template <>
+struct near_boundary<obb3, segment3> {
+    static std::pair<obb3, segment3> touching(rng& r) { // from p outwards
+        const auto t = touching_obb(r);
+        const point3 q = t.p + t.o * double(r.integer(1, 200)) + int_vec(r, 40);
+        return {t.box, r.coin() ? segment3{t.p, q} : segment3{q, t.p}};
+    }
+};
+template <>
+struct near_boundary<obb3, ray3> {
+    static std::pair<obb3, ray3> touching(rng& r) { // aimed at p from outside
+        const auto t = touching_obb(r);
+        const point3 o = t.p + t.o * double(r.integer(1, 200)) + int_vec(r, 40);
+        return {t.box, ray3{o, t.p - o}};
+    }
+};
+template <>
+struct near_boundary<line3, obb3> {
+    static std::pair<line3, obb3> touching(rng& r) { // through p, across the outward direction
+        const auto t = touching_obb(r);
+        vec3 d = cross(t.o, int_vec(r, 8));
+        if (d.x == 0 && d.y == 0 && d.z == 0) d = t.o;
+        return {line3{t.p, d}, t.box};
+    }
+};
+template <>
+struct near_boundary<obb3, triangle3> {
+    static std::pair<obb3, triangle3> touching(rng& r) { // a vertex at p, the rest outwards
+        const auto t = touching_obb(r);
+        for (;;) {
+            const triangle3 u{t.p, t.p + t.o * double(r.integer(1, 200)) + int_vec(r, 100), t.p + t.o * double(r.integer(1, 200)) + int_vec(r, 100)};
+            const vec3 n = cross(u.b - u.a, u.c - u.a);
+            if (dot(n, n) > 1e4) return {t.box, u};
+        }
+    }
+};
+template <>
+struct near_boundary<obb3, plane3> {
+    static std::pair<obb3, plane3> touching(rng& r) { // the supporting plane at p, normal o
+        const auto t = touching_obb(r);
+        return {t.box, plane3{t.o, dot(t.o, t.p - point3{0, 0, 0})}};
     }
 };
 

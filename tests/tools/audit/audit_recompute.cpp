@@ -7,9 +7,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <type_traits>
 import incidence;
 #include "../../../tools/audit/generators.hpp"
 #include "../../../tools/audit/methods.hpp"
+#include "../../support/lp_shapes.hpp"
 
 using namespace incidence;
 
@@ -105,6 +107,12 @@ int truth(const triangle3& t, const triangle3& u) {
     double a[3], b[3], c[3], d[3], e[3], f[3];
     arr(t.a, a), arr(t.b, b), arr(t.c, c), arr(u.a, d), arr(u.b, e), arr(u.c, f);
     return oracle::triangle_triangle(a, b, c, d, e, f);
+}
+// The OBB pairs: exact LP feasibility.
+template <class A, class B>
+    requires(std::is_same_v<A, obb3> || std::is_same_v<B, obb3>)
+int truth(const A& a, const B& b) {
+    return oracle::lp_intersect(support::lp(a), support::lp(b));
 }
 
 template <class Family>

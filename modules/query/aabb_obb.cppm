@@ -1,0 +1,26 @@
+// aabb3 against obb3 (closed boxes; a box of zero extent is a rectangle, a segment or a point, and
+// an obb3's axes are read exactly as given: it is the parallelepiped they span).
+// Semantics: touching at a corner, along an edge or on a face counts.
+// Method (exact tiers): the 15 separating axes of two boxes (three face normals of each, the nine
+// cross products of an axis of one with an axis of the other), the aabb3 as the zonotope with
+// centre (min + max) / 2 and the unit axes, so no rounded centre is ever compared. Each axis is one
+// sign of degree 4: |w . (2 c_b - 2 c_a)| against the sum of twice the projected radii
+// (see separating_axes for the flat cases).
+// Source: Gottschalk, Lin and Manocha, "OBBTree", SIGGRAPH 1996, section 5.
+// Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
+// magnitudes lie in [2^-500, 2^500], wrong only when some axis sign is within 2^-40 of its
+// permanent (the sets touch or nearly touch); tests/query/aabb_obb.cpp checks it.
+export module incidence.query:aabb_obb;
+import incidence.core;
+import incidence.arith;
+import incidence.shapes;
+import :separating_axes;
+
+export namespace incidence::pair {
+
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const aabb3& a, const obb3& b) {
+    return sat::well_formed(a) && sat::well_formed(b) && sat::zonotopes_intersect(k, sat::of(a), sat::of(b));
+}
+
+} // namespace incidence::pair

@@ -1,0 +1,226 @@
+// The separating-axis engine shared by the OBB pairs (box against box, segment, point, ray,
+// line and triangle). Each shape is a zonotope (a centre plus bounded generators: a box has its
+// three axes, a segment its direction, a point none), optionally with one unbounded direction
+// (a ray, a line), or a triangle (three vertices). Two closed convex polytopes are disjoint iff
+// some axis separates their projections; when the shapes together span space, the cross products
+// of every two generating directions (box axes, segment, ray or line directions, triangle edges)
+// are enough. Flat and lower-dimensional configurations (a box of zero extent, a box given with
+// dependent axes, a point against a segment) add the in-plane normals n x g, the generators
+// themselves, the offset normals (g x d) x g and the coordinate axes, so the test stays exact.
+// Every comparison is the sign of one polynomial: twice the distance between the projected
+// centres against the sum of twice the projected radii, |w . (2 c_b - 2 c_a)| - sum 2 h_i |w . g_i|,
+// with absolute values (see arith::abs) and no division; a lifted 1.0 balances the degrees.
+// Source: Gottschalk, Lin and Manocha, "OBBTree", SIGGRAPH 1996, section 5 (the separating axis
+// theorem and its 15 box-box axes); Ericson, Real-Time Collision Detection (2005), sections
+// 4.4.1 and 5.2.1 (the axis sets for box-triangle and box-segment); the flat cases follow from
+// the axes being the facet normals of the Minkowski difference (ibid., section 5.2.1).
+export module incidence.query:separating_axes;
+import incidence.core;
+import incidence.arith;
+import incidence.shapes;
+
+export namespace incidence::pair::sat {
+
+// The direction to - from, taken exactly in every number type.
+struct direction {
+    vec3 to;
+    vec3 from;
+};
+enum class reach : unsigned char { none, ray, line };
+
+// A zonotope: { (cp + cq) / 2 + sum_i t_i g_i : |t_i| <= (hp_i + hq_i) / 2 }, plus the unbounded
+// direction u (t >= 0 for a ray, any t for a line) when r != none.
+struct zonotope {
+    point3 cp, cq;
+    direction g[3];
+    double hp[3], hq[3];
+    int n = 0;
+    direction u{};
+    reach r = reach::none;
+};
+
+[[nodiscard]] constexpr zonotope of(const obb3& b) {
+    zonotope z{b.center, b.center, {}, {}, {}, 3, {}, reach::none};
+    for (unsigned i = 0; i < 3; ++i) {
+        z.g[i] = {b.axes[i], vec3{0, 0, 0}};
+        z.hp[i] = z.hq[i] = b.half_extents[i];
+    }
+    return z;
+}
+[[nodiscard]] constexpr zonotope of(const aabb3& b) {
+    return {b.min, b.max, {direction{{1, 0, 0}, {0, 0, 0}}, direction{{0, 1, 0}, {0, 0, 0}}, direction{{0, 0, 1}, {0, 0, 0}}},
+            {b.max.x, b.max.y, b.max.z}, {-b.min.x, -b.min.y, -b.min.z}, 3, {}, reach::none};
+}
+[[nodiscard]] constexpr zonotope of(const segment3& s) {
+    return {s.a, s.b, {direction{{s.b.x, s.b.y, s.b.z}, {s.a.x, s.a.y, s.a.z}}, {}, {}}, {1, 0, 0}, {0, 0, 0}, 1, {}, reach::none};
+}
+[[nodiscard]] constexpr zonotope of(const point3& p) { return {p, p, {}, {}, {}, 0, {}, reach::none}; }
+[[nodiscard]] constexpr zonotope of(const ray3& r) {
+    return {r.origin, r.origin, {}, {}, {}, 0, direction{r.direction, {0, 0, 0}}, reach::ray};
+}
+[[nodiscard]] constexpr zonotope of(const line3& l) {
+    return {l.origin, l.origin, {}, {}, {}, 0, direction{l.direction, {0, 0, 0}}, reach::line};
+}
+
+// A box's extents must be ordered numbers (NaN or a negative extent: an empty box).
+[[nodiscard]] constexpr bool well_formed(const obb3& b) {
+    return b.half_extents[0] >= 0.0 && b.half_extents[1] >= 0.0 && b.half_extents[2] >= 0.0;
+}
+[[nodiscard]] constexpr bool well_formed(const aabb3& b) {
+    return b.min.x <= b.max.x && b.min.y <= b.max.y && b.min.z <= b.max.z;
+}
+
+// |x| in any number type (found by argument-dependent lookup for the tests' own types).
+template <class T>
+[[nodiscard]] constexpr T magnitude(const T& x) {
+    using arith::abs;
+    return abs(x);
+}
+
+template <class L>
+[[nodiscard]] constexpr auto lift(L l, const direction& d) { return arith::lift(l, d.to) - arith::lift(l, d.from); }
+template <class L>
+[[nodiscard]] constexpr auto centre2(L l, const zonotope& z) { return arith::lift(l, z.cp) + arith::lift(l, z.cq); }
+// Twice the projected radius of z's bounded part along w (unused generators have zero extent).
+template <class L, class W>
+[[nodiscard]] constexpr auto radius2(L l, const zonotope& z, const W& w) {
+    auto term = [&](unsigned i) { return (l(z.hp[i]) + l(z.hq[i])) * magnitude(arith::dot(w, lift(l, z.g[i]))); };
+    return term(0) + term(1) + term(2);
+}
+
+// The generating directions of a pair, in one list: a's bounded ones, b's bounded ones, b's
+// unbounded one, a triangle's three edges.
+struct directions {
+    direction d[7];
+    bool live[7];
+    int n = 0;
+    int unbounded = -1; // the index of a ray's or line's direction
+
+    constexpr void add(const direction& x, bool is_live) {
+        d[n] = x;
+        live[n] = is_live;
+        ++n;
+    }
+};
+[[nodiscard]] constexpr bool same(const vec3& a, const vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+constexpr void add_generators(directions& ds, const zonotope& z) {
+    for (int i = 0; i < z.n; ++i) {
+        const auto u = static_cast<unsigned>(i);
+        ds.add(z.g[u], z.hp[u] != -z.hq[u] && !same(z.g[u].to, z.g[u].from));
+    }
+    if (z.r != reach::none) {
+        ds.unbounded = ds.n;
+        ds.add(z.u, !same(z.u.to, z.u.from));
+    }
+}
+
+// Candidate axes, each a generic function of the lift: w(L).
+template <class L>
+[[nodiscard]] constexpr auto axis_cross(L l, const direction& a, const direction& b) { return arith::cross(lift(l, a), lift(l, b)); }
+
+// Visit the axes until `separates(w, perpendicular)` says yes; true when one did. `perpendicular`
+// says the axis is perpendicular to the unbounded direction by construction (u x g, (g x u) x u),
+// where w . u is identically zero and must not be left to rounding. `offset(L)` is the difference
+// of a point of the second shape and a point of the first (any two points: it is only used when
+// every live direction is parallel, so both shapes lie on parallel lines).
+template <class K, class Separates, class Offset>
+[[nodiscard]] constexpr bool some_axis_separates(K& k, const directions& ds, bool skip_triangle_pairs, int first_edge,
+                                                 const Separates& separates, const Offset& offset) {
+    // 1. the cross products of two directions
+    for (int i = 0; i < ds.n; ++i)
+        for (int j = i + 1; j < ds.n; ++j) {
+            if (skip_triangle_pairs && i >= first_edge && !(i == first_edge && j == first_edge + 1)) continue;
+            const direction a = ds.d[i], b = ds.d[j];
+            if (separates([=](auto L) { return axis_cross(L, a, b); }, i == ds.unbounded || j == ds.unbounded)) return true;
+        }
+    // 2. If three live directions are independent, those axes were complete.
+    for (int i = 0; i < ds.n; ++i)
+        for (int j = i + 1; j < ds.n; ++j)
+            for (int m = j + 1; m < ds.n; ++m) {
+                if (!ds.live[i] || !ds.live[j] || !ds.live[m]) continue;
+                const direction a = ds.d[i], b = ds.d[j], c = ds.d[m];
+                if (k.sgn([=](auto L) { return arith::det3(lift(L, a), lift(L, b), lift(L, c)); }) != sign::zero) return false;
+            }
+    // 3. Flat configurations: in-plane normals (a x b) x c, the directions, (a x d) x a, the
+    //    coordinate axes.
+    for (int i = 0; i < ds.n; ++i)
+        for (int j = i + 1; j < ds.n; ++j)
+            for (int m = 0; m < ds.n; ++m) {
+                const direction a = ds.d[i], b = ds.d[j], c = ds.d[m];
+                if (separates([=](auto L) { return arith::cross(axis_cross(L, a, b), lift(L, c)); }, m == ds.unbounded)) return true;
+            }
+    for (int i = 0; i < ds.n; ++i) {
+        const direction a = ds.d[i];
+        if (separates([=](auto L) { return lift(L, a); }, false)) return true;
+        if (separates([=](auto L) { return arith::cross(arith::cross(lift(L, a), offset(L)), lift(L, a)); }, i == ds.unbounded))
+            return true;
+    }
+    for (int i = 0; i < 3; ++i) {
+        const vec3 e{i == 0 ? 1.0 : 0.0, i == 1 ? 1.0 : 0.0, i == 2 ? 1.0 : 0.0};
+        if (separates([=](auto L) { return arith::lift(L, e); }, false)) return true;
+    }
+    return false;
+}
+
+// Zonotope a (bounded) against zonotope b (bounded, or with a ray or line direction).
+template <class K>
+[[nodiscard]] constexpr bool zonotopes_intersect(K& k, const zonotope& a, const zonotope& b) {
+    directions ds;
+    add_generators(ds, a);
+    add_generators(ds, b);
+    auto separates = [&](auto axis, bool perpendicular) {
+        if (b.r != reach::none && !perpendicular) {
+            const direction u = b.u;
+            const sign s = k.sgn([=](auto L) { return arith::dot(axis(L), lift(L, u)); });
+            if (s != sign::zero) {
+                if (b.r == reach::line) return false;
+                // a ray reaching +infinity along w: separated iff it starts beyond a's far end
+                const sign t = k.sgn([=](auto L) {
+                    const auto w = axis(L);
+                    const auto gap = L(1.0) * arith::dot(w, centre2(L, b) - centre2(L, a));
+                    return s == sign::positive ? gap - radius2(L, a, w) : gap + radius2(L, a, w);
+                });
+                return t == s;
+            }
+        }
+        return k.sgn([=](auto L) {
+                   const auto w = axis(L);
+                   return L(1.0) * magnitude(arith::dot(w, centre2(L, b) - centre2(L, a))) - radius2(L, a, w) - radius2(L, b, w);
+               }) == sign::positive;
+    };
+    auto offset = [=](auto L) { return centre2(L, b) - centre2(L, a); };
+    return !some_axis_separates(k, ds, false, ds.n, separates, offset);
+}
+
+// Zonotope a (bounded) against the closed triangle t (a collinear triangle is its hull).
+template <class K>
+[[nodiscard]] constexpr bool zonotope_triangle_intersect(K& k, const zonotope& a, const triangle3& t) {
+    directions ds;
+    add_generators(ds, a);
+    const int first_edge = ds.n;
+    const point3 v[3] = {t.a, t.b, t.c};
+    for (int e = 0; e < 3; ++e) {
+        const point3 p = v[e], q = v[(e + 1) % 3];
+        ds.add(direction{{q.x, q.y, q.z}, {p.x, p.y, p.z}}, !(p.x == q.x && p.y == q.y && p.z == q.z));
+    }
+    auto separates = [&](auto axis, bool) {
+        // side of vertex x against a's slab along w: + beyond the far end, - before the near end
+        auto beyond = [&](point3 x, bool far) {
+            return k.sgn([=](auto L) {
+                const auto w = axis(L);
+                const auto gap = L(1.0) * arith::dot(w, (arith::lift(L, x) + arith::lift(L, x)) - centre2(L, a));
+                return far ? gap - radius2(L, a, w) : gap + radius2(L, a, w);
+            });
+        };
+        if (beyond(v[0], true) == sign::positive)
+            return beyond(v[1], true) == sign::positive && beyond(v[2], true) == sign::positive;
+        if (beyond(v[0], false) == sign::negative)
+            return beyond(v[1], false) == sign::negative && beyond(v[2], false) == sign::negative;
+        return false;
+    };
+    const point3 v0 = v[0];
+    auto offset = [=](auto L) { return (arith::lift(L, v0) + arith::lift(L, v0)) - centre2(L, a); };
+    return !some_axis_separates(k, ds, true, first_edge, separates, offset);
+}
+
+} // namespace incidence::pair::sat
