@@ -113,28 +113,28 @@ template <class A, class B>
 struct obb_case;
 template <>
 struct obb_case<incidence::obb3, incidence::obb3> {
-    static std::pair<incidence::obb3, incidence::obb3> near(rng& r) {
+    static std::pair<incidence::obb3, incidence::obb3> near(rng& r, bool any_scale = true) {
         const obb3 a = near_obb(r);
         obb3 b = near_obb(r);
         // b's own boundary point q, placed at a's boundary point p
         const point3 p = boundary_point(r, a);
         const point3 q = boundary_point(r, b);
         b.center = point3{b.center.x + (p.x - q.x), b.center.y + (p.y - q.y), b.center.z + (p.z - q.z)};
-        const auto tr = random_transform(r, true);
+        const auto tr = random_transform(r, true, any_scale);
         return {moved(tr, a), moved(tr, b)};
 }
-    static std::pair<incidence::obb3, incidence::obb3> random(rng& r) {
-        const auto tr = random_transform(r, false);
+    static std::pair<incidence::obb3, incidence::obb3> random(rng& r, bool any_scale = true) {
+        const auto tr = random_transform(r, false, any_scale);
         return {random_obb(r, tr), random_obb(r, tr)};
 }
 };
 
 template <>
 struct obb_case<incidence::aabb3, incidence::obb3> {
-    static std::pair<incidence::aabb3, incidence::obb3> near(rng& r) {
+    static std::pair<incidence::aabb3, incidence::obb3> near(rng& r, bool any_scale = true) {
         const obb3 o = near_obb(r);
         const point3 p = boundary_point(r, o);
-        const auto tr = random_transform(r, true);
+        const auto tr = random_transform(r, true, any_scale);
         double w[3], c[3];
         const double pc[3] = {p.x, p.y, p.z};
         for (int i = 0; i < 3; ++i) {
@@ -144,58 +144,58 @@ struct obb_case<incidence::aabb3, incidence::obb3> {
         const aabb3 b{moved(tr, point3{c[0] - w[0], c[1] - w[1], c[2] - w[2]}), moved(tr, point3{c[0] + w[0], c[1] + w[1], c[2] + w[2]})};
         return {ordered(b), moved(tr, o)};
 }
-    static std::pair<incidence::aabb3, incidence::obb3> random(rng& r) {
-        const auto tr = random_transform(r, false);
+    static std::pair<incidence::aabb3, incidence::obb3> random(rng& r, bool any_scale = true) {
+        const auto tr = random_transform(r, false, any_scale);
         return {ordered(aabb3{random_point(r, tr), random_point(r, tr)}), random_obb(r, tr)};
 }
 };
 
 template <>
 struct obb_case<incidence::obb3, incidence::point3> {
-    static std::pair<incidence::obb3, incidence::point3> near(rng& r) {
+    static std::pair<incidence::obb3, incidence::point3> near(rng& r, bool any_scale = true) {
         const obb3 o = near_obb(r);
         const point3 p = boundary_point(r, o);
-        const auto tr = random_transform(r, true);
+        const auto tr = random_transform(r, true, any_scale);
         return {moved(tr, o), moved(tr, p)};
 }
-    static std::pair<incidence::obb3, incidence::point3> random(rng& r) {
-        const auto tr = random_transform(r, false);
+    static std::pair<incidence::obb3, incidence::point3> random(rng& r, bool any_scale = true) {
+        const auto tr = random_transform(r, false, any_scale);
         return {random_obb(r, tr), random_point(r, tr)};
 }
 };
 
 template <>
 struct obb_case<incidence::obb3, incidence::segment3> {
-    static std::pair<incidence::obb3, incidence::segment3> near(rng& r) {
+    static std::pair<incidence::obb3, incidence::segment3> near(rng& r, bool any_scale = true) {
         const obb3 o = near_obb(r);
         const point3 p = boundary_point(r, o);
-        const auto tr = random_transform(r, true);
+        const auto tr = random_transform(r, true, any_scale);
         const vec3 v = small_vec(r);
         const int k = r.integer(0, 2);
         const point3 s0 = k == 2 ? point3{p.x - v.x, p.y - v.y, p.z - v.z} : p;
         const point3 s1 = k == 1 ? p : point3{p.x + v.x, p.y + v.y, p.z + v.z};
         return {moved(tr, o), segment3{moved(tr, s0), moved(tr, s1)}};
 }
-    static std::pair<incidence::obb3, incidence::segment3> random(rng& r) {
-        const auto tr = random_transform(r, false);
+    static std::pair<incidence::obb3, incidence::segment3> random(rng& r, bool any_scale = true) {
+        const auto tr = random_transform(r, false, any_scale);
         return {random_obb(r, tr), segment3{random_point(r, tr), random_point(r, tr)}};
 }
 };
 
 template <>
 struct obb_case<incidence::obb3, incidence::ray3> {
-    static std::pair<incidence::obb3, incidence::ray3> near(rng& r) {
+    static std::pair<incidence::obb3, incidence::ray3> near(rng& r, bool any_scale = true) {
         const obb3 o = near_obb(r);
         const point3 p = boundary_point(r, o);
-        const auto tr = random_transform(r, true);
+        const auto tr = random_transform(r, true, any_scale);
         const vec3 v = small_vec(r);
         const bool start_on = r.integer(0, 2) == 0;
         const point3 origin = start_on ? p : point3{p.x + v.x, p.y + v.y, p.z + v.z};
         const vec3 d = start_on ? v : vec3{-v.x, -v.y, -v.z};
         return {moved(tr, o), ray3{moved(tr, origin), moved_dir(tr, d)}};
 }
-    static std::pair<incidence::obb3, incidence::ray3> random(rng& r) {
-        const auto tr = random_transform(r, false);
+    static std::pair<incidence::obb3, incidence::ray3> random(rng& r, bool any_scale = true) {
+        const auto tr = random_transform(r, false, any_scale);
         const vec3 d{tr.scale_only(r.uniform(-1, 1)), tr.scale_only(r.uniform(-1, 1)), tr.scale_only(r.uniform(-1, 1))};
         return {random_obb(r, tr), ray3{random_point(r, tr), d}};
 }
@@ -203,15 +203,15 @@ struct obb_case<incidence::obb3, incidence::ray3> {
 
 template <>
 struct obb_case<incidence::line3, incidence::obb3> {
-    static std::pair<incidence::line3, incidence::obb3> near(rng& r) {
+    static std::pair<incidence::line3, incidence::obb3> near(rng& r, bool any_scale = true) {
         const obb3 o = near_obb(r);
         const point3 p = boundary_point(r, o);
-        const auto tr = random_transform(r, true);
+        const auto tr = random_transform(r, true, any_scale);
         const vec3 v = small_vec(r);
         return {line3{moved(tr, p), moved_dir(tr, v)}, moved(tr, o)};
 }
-    static std::pair<incidence::line3, incidence::obb3> random(rng& r) {
-        const auto tr = random_transform(r, false);
+    static std::pair<incidence::line3, incidence::obb3> random(rng& r, bool any_scale = true) {
+        const auto tr = random_transform(r, false, any_scale);
         const vec3 d{tr.scale_only(r.uniform(-1, 1)), tr.scale_only(r.uniform(-1, 1)), tr.scale_only(r.uniform(-1, 1))};
         return {line3{random_point(r, tr), d}, random_obb(r, tr)};
 }
@@ -219,34 +219,34 @@ struct obb_case<incidence::line3, incidence::obb3> {
 
 template <>
 struct obb_case<incidence::obb3, incidence::triangle3> {
-    static std::pair<incidence::obb3, incidence::triangle3> near(rng& r) {
+    static std::pair<incidence::obb3, incidence::triangle3> near(rng& r, bool any_scale = true) {
         const obb3 o = near_obb(r);
         const point3 p = boundary_point(r, o);
-        const auto tr = random_transform(r, true);
+        const auto tr = random_transform(r, true, any_scale);
         const vec3 v = small_vec(r), w = small_vec(r);
         const bool edge = r.coin(); // p a vertex, or the middle of an edge
         const point3 a = edge ? point3{p.x - v.x, p.y - v.y, p.z - v.z} : p;
         const point3 b{p.x + v.x, p.y + v.y, p.z + v.z}, c{p.x + w.x, p.y + w.y, p.z + w.z};
         return {moved(tr, o), triangle3{moved(tr, a), moved(tr, b), moved(tr, c)}};
 }
-    static std::pair<incidence::obb3, incidence::triangle3> random(rng& r) {
-        const auto tr = random_transform(r, false);
+    static std::pair<incidence::obb3, incidence::triangle3> random(rng& r, bool any_scale = true) {
+        const auto tr = random_transform(r, false, any_scale);
         return {random_obb(r, tr), triangle3{random_point(r, tr), random_point(r, tr), random_point(r, tr)}};
 }
 };
 
 template <>
 struct obb_case<incidence::obb3, incidence::plane3> {
-    static std::pair<incidence::obb3, incidence::plane3> near(rng& r) {
+    static std::pair<incidence::obb3, incidence::plane3> near(rng& r, bool any_scale = true) {
         const obb3 o = near_obb(r);
         const point3 p = boundary_point(r, o);
-        const auto tr = random_transform(r, true);
+        const auto tr = random_transform(r, true, any_scale);
         const vec3 n = small_vec(r);
         const point3 q = moved(tr, p);
         return {moved(tr, o), plane3{n, n.x * q.x + n.y * q.y + n.z * q.z}};
 }
-    static std::pair<incidence::obb3, incidence::plane3> random(rng& r) {
-        const auto tr = random_transform(r, false);
+    static std::pair<incidence::obb3, incidence::plane3> random(rng& r, bool any_scale = true) {
+        const auto tr = random_transform(r, false, any_scale);
         const vec3 n{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)};
         const point3 q = random_point(r, tr);
         return {random_obb(r, tr), plane3{n, n.x * q.x + n.y * q.y + n.z * q.z}};
