@@ -108,6 +108,18 @@ inline obb3 random_obb(rng& r, const transform& tr) {
 inline point3 random_point(rng& r, const transform& tr) { return {random_coord(r, tr, 0), random_coord(r, tr, 1), random_coord(r, tr, 2)}; }
 
 
+// The start of every near case: a box, a point of its boundary, and the transform to apply.
+struct near_box {
+    obb3 o;
+    point3 p;
+    transform tr;
+};
+inline near_box near_start(rng& r, bool any_scale) {
+    const obb3 o = near_obb(r);
+    const point3 p = boundary_point(r, o);
+    return {o, p, random_transform(r, true, any_scale)};
+}
+
 // The near-degenerate and random cases of each OBB pair (tests/query/<pair>.cpp, bench).
 template <class A, class B>
 struct obb_case;
@@ -132,9 +144,7 @@ struct obb_case<incidence::obb3, incidence::obb3> {
 template <>
 struct obb_case<incidence::aabb3, incidence::obb3> {
     static std::pair<incidence::aabb3, incidence::obb3> near(rng& r, bool any_scale = true) {
-        const obb3 o = near_obb(r);
-        const point3 p = boundary_point(r, o);
-        const auto tr = random_transform(r, true, any_scale);
+        const auto [o, p, tr] = near_start(r, any_scale);
         double w[3], c[3];
         const double pc[3] = {p.x, p.y, p.z};
         for (int i = 0; i < 3; ++i) {
@@ -153,9 +163,7 @@ struct obb_case<incidence::aabb3, incidence::obb3> {
 template <>
 struct obb_case<incidence::obb3, incidence::point3> {
     static std::pair<incidence::obb3, incidence::point3> near(rng& r, bool any_scale = true) {
-        const obb3 o = near_obb(r);
-        const point3 p = boundary_point(r, o);
-        const auto tr = random_transform(r, true, any_scale);
+        const auto [o, p, tr] = near_start(r, any_scale);
         return {moved(tr, o), moved(tr, p)};
 }
     static std::pair<incidence::obb3, incidence::point3> random(rng& r, bool any_scale = true) {
@@ -167,9 +175,7 @@ struct obb_case<incidence::obb3, incidence::point3> {
 template <>
 struct obb_case<incidence::obb3, incidence::segment3> {
     static std::pair<incidence::obb3, incidence::segment3> near(rng& r, bool any_scale = true) {
-        const obb3 o = near_obb(r);
-        const point3 p = boundary_point(r, o);
-        const auto tr = random_transform(r, true, any_scale);
+        const auto [o, p, tr] = near_start(r, any_scale);
         const vec3 v = small_vec(r);
         const int k = r.integer(0, 2);
         const point3 s0 = k == 2 ? point3{p.x - v.x, p.y - v.y, p.z - v.z} : p;
@@ -185,9 +191,7 @@ struct obb_case<incidence::obb3, incidence::segment3> {
 template <>
 struct obb_case<incidence::obb3, incidence::ray3> {
     static std::pair<incidence::obb3, incidence::ray3> near(rng& r, bool any_scale = true) {
-        const obb3 o = near_obb(r);
-        const point3 p = boundary_point(r, o);
-        const auto tr = random_transform(r, true, any_scale);
+        const auto [o, p, tr] = near_start(r, any_scale);
         const vec3 v = small_vec(r);
         const bool start_on = r.integer(0, 2) == 0;
         const point3 origin = start_on ? p : point3{p.x + v.x, p.y + v.y, p.z + v.z};
@@ -204,9 +208,7 @@ struct obb_case<incidence::obb3, incidence::ray3> {
 template <>
 struct obb_case<incidence::line3, incidence::obb3> {
     static std::pair<incidence::line3, incidence::obb3> near(rng& r, bool any_scale = true) {
-        const obb3 o = near_obb(r);
-        const point3 p = boundary_point(r, o);
-        const auto tr = random_transform(r, true, any_scale);
+        const auto [o, p, tr] = near_start(r, any_scale);
         const vec3 v = small_vec(r);
         return {line3{moved(tr, p), moved_dir(tr, v)}, moved(tr, o)};
 }
@@ -220,9 +222,7 @@ struct obb_case<incidence::line3, incidence::obb3> {
 template <>
 struct obb_case<incidence::obb3, incidence::triangle3> {
     static std::pair<incidence::obb3, incidence::triangle3> near(rng& r, bool any_scale = true) {
-        const obb3 o = near_obb(r);
-        const point3 p = boundary_point(r, o);
-        const auto tr = random_transform(r, true, any_scale);
+        const auto [o, p, tr] = near_start(r, any_scale);
         const vec3 v = small_vec(r), w = small_vec(r);
         const bool edge = r.coin(); // p a vertex, or the middle of an edge
         const point3 a = edge ? point3{p.x - v.x, p.y - v.y, p.z - v.z} : p;
@@ -238,9 +238,7 @@ struct obb_case<incidence::obb3, incidence::triangle3> {
 template <>
 struct obb_case<incidence::obb3, incidence::plane3> {
     static std::pair<incidence::obb3, incidence::plane3> near(rng& r, bool any_scale = true) {
-        const obb3 o = near_obb(r);
-        const point3 p = boundary_point(r, o);
-        const auto tr = random_transform(r, true, any_scale);
+        const auto [o, p, tr] = near_start(r, any_scale);
         const vec3 n = small_vec(r);
         const point3 q = moved(tr, p);
         return {moved(tr, o), plane3{n, n.x * q.x + n.y * q.y + n.z * q.z}};
