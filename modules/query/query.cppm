@@ -25,6 +25,7 @@ export import :aabb_line;
 export import :aabb_plane;
 export import :plane_segment;
 export import :plane_triangle;
+export import :separating_axes; // the engine, exported for its own test (tests/query/separating_axes.cpp)
 export import :aabb_obb;
 export import :obb_obb;
 export import :obb_point;

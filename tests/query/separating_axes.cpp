@@ -1,0 +1,57 @@
+// The separating-axis engine behind the OBB pairs (modules/query/separating_axes.cppm): the
+// box-box fast pass against the general path on the OBB tests' cases, both kernels; flat and
+// dependent-axis configurations that need the extra axes, against the exact LP oracle.
+#include <catch2/catch_test_macros.hpp>
+#include "../oracle/cgal_oracle.hpp"
+import incidence;
+#include "../support/testing.hpp"
+#include "../support/obb_cases.hpp"
+
+using namespace incidence;
+namespace sat = incidence::pair::sat;
+
+TEST_CASE("separating_axes: the box-box fast pass agrees with the general path", "[separating_axes]") {
+    support::rng r(support::seed() + 7);
+    long decided = 0, bad = 0, n = 0;
+    for (long i = 0; i < support::cases(20000); ++i) {
+        const auto [a, b] = (i % 2) ? support::obb_case<obb3, obb3>::near(r) : support::obb_case<obb3, obb3>::random(r);
+        const auto za = sat::of(a), zb = sat::of(b);
+        arith::filter_kernel f;
+        const int fast = sat::box_box_fast(f, za, zb);
+        arith::exact_kernel e;
+        const bool general = pair::intersects(e, a, b); // exact: the LP-checked answer of tests/query/obb_obb.cpp
+        ++n;
+        if (fast >= 0) {
+            ++decided;
+            if ((fast == 1) != general) ++bad;
+        }
+        arith::approx_kernel k;
+        const int approx = sat::box_box_fast(k, za, zb);
+        if (approx >= 0 && (approx == 1) != intersects<approximate>(a, b)) ++bad;
+    }
+    std::printf("[cases] separating_axes fast pass: %ld cases, %ld decided by the filter pass, %ld differ\n", n, decided, bad);
+    CHECK(decided > n / 4);
+    CHECK(bad == 0);
+}
+
+TEST_CASE("separating_axes: configurations that need the extra axes", "[separating_axes]") {
+    const std::array<vec3, 3> I{vec3{1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1}};
+    const std::array<vec3, 3> R{vec3{1, 1, 0}, vec3{-1, 1, 0}, vec3{0, 0, 1}};
+    const std::array<vec3, 3> dependent{vec3{1, 0, 0}, vec3{1, 0, 0}, vec3{0, 1, 0}}; // a flat parallelepiped
+    const obb3 cases[][2] = {
+        {obb3{{0, 0, 0}, I, {1, 1, 0}}, obb3{{3, 0, 0}, R, {0.75, 0.75, 0}}},  // coplanar rectangles, apart
+        {obb3{{0, 0, 0}, I, {1, 1, 0}}, obb3{{2.5, 0, 0}, R, {0.75, 0.75, 0}}}, // coplanar rectangles, touching
+        {obb3{{0, 0, 0}, I, {1, 0, 0}}, obb3{{3, 0, 0}, I, {1, 0, 0}}},        // collinear segments, apart
+        {obb3{{0, 0, 0}, I, {1, 0, 0}}, obb3{{2, 0, 0}, I, {1, 0, 0}}},        // collinear segments, touching
+        {obb3{{0, 0, 0}, I, {1, 0, 0}}, obb3{{0, 1, 0}, I, {1, 0, 0}}},        // parallel segments
+        {obb3{{0, 0, 0}, I, {0, 0, 0}}, obb3{{0, 0, 1e-300}, I, {0, 0, 0}}},   // two points
+        {obb3{{0, 0, 0}, dependent, {1, 1, 1}}, obb3{{0, 0, 0.5}, I, {1, 1, 0.25}}}, // dependent axes
+        {obb3{{0, 0, 0}, dependent, {1, 1, 1}}, obb3{{0, 3, 0}, I, {1, 1, 1}}},
+    };
+    for (const auto& c : cases) {
+        const bool truth = oracle::lp_intersect(support::lp(c[0]), support::lp(c[1]));
+        CHECK(intersects(c[0], c[1]) == truth);
+        CHECK(intersects(c[1], c[0]) == truth);
+        CHECK(intersects(c[0], c[1].center) == oracle::lp_intersect(support::lp(c[0]), support::lp(c[1].center)));
+    }
+}
