@@ -25,6 +25,7 @@ import incidence.core;
 import incidence.arith;
 import incidence.predicates;
 import incidence.shapes;
+import :segment_segment;
 
 export namespace incidence {
 
@@ -38,102 +39,6 @@ struct ray_triangle_hit {
 } // namespace incidence
 
 export namespace incidence::pair {
-
-enum class extent : unsigned char { ray, segment };
-
-// The linear object o + t d: t >= 0 for a ray, 0 <= t <= 1 for a segment (d = q - p, exact).
-struct linear3 {
-    point3 o;
-    vec3 d;   // ray direction (unused for a segment)
-    point3 q; // segment end (unused for a ray)
-    extent kind;
-
-    template <class L>
-    [[nodiscard]] constexpr auto O(L l) const { return arith::lift(l, o); }
-    template <class L>
-    [[nodiscard]] constexpr auto D(L l) const {
-        if (kind == extent::segment) return arith::lift(l, q) - arith::lift(l, o);
-        // Same expression type as the segment branch: d = (d - 0) with 0 exact.
-        return arith::lift(l, d) - arith::lift(l, vec3{0, 0, 0});
-    }
-    [[nodiscard]] constexpr bool is_point() const {
-        return kind == extent::segment ? o == q : (d.x == 0.0 && d.y == 0.0 && d.z == 0.0);
-    }
-};
-
-template <class T>
-[[nodiscard]] constexpr auto pick(const arith::v3<T>& v, int axis) {
-    return axis == 0 ? v.x : (axis == 1 ? v.y : v.z);
-}
-template <class T>
-[[nodiscard]] constexpr auto drop_axis(const arith::v3<T>& v, int axis) {
-    return axis == 0 ? arith::v2<T>{v.y, v.z} : (axis == 1 ? arith::v2<T>{v.z, v.x} : arith::v2<T>{v.x, v.y});
-}
-
-// 2D: does the linear object (projected along `axis`) meet the closed segment [p, q]?
-template <class K>
-[[nodiscard]] constexpr bool linear_segment_2d(K& k, const linear3& s, int axis, point3 p, point3 q) {
-    const sign sp = k.sgn([=](auto L) {
-        return arith::cross(drop_axis(s.D(L), axis), drop_axis(arith::lift(L, p) - s.O(L), axis));
-    });
-    const sign sq = k.sgn([=](auto L) {
-        return arith::cross(drop_axis(s.D(L), axis), drop_axis(arith::lift(L, q) - s.O(L), axis));
-    });
-    if (sp != sign::zero && sp == sq) return false; // the edge lies strictly on one side
-    if (sp == sign::zero && sq == sign::zero) {
-        // Collinear with the carrier line: 1D overlap of [0, d.d] (or [0, inf)) with [p.d, q.d].
-        const sign dp = k.sgn([=](auto L) { return arith::dot(arith::lift(L, p) - s.O(L), s.D(L)); });
-        const sign dq = k.sgn([=](auto L) { return arith::dot(arith::lift(L, q) - s.O(L), s.D(L)); });
-        if (dp == sign::negative && dq == sign::negative) return false;
-        if (s.kind == extent::ray) return true;
-        const sign ep = k.sgn([=](auto L) {
-            const auto D = s.D(L);
-            return arith::dot(arith::lift(L, p) - s.O(L), D) - arith::dot(D, D);
-        });
-        const sign eq = k.sgn([=](auto L) {
-            const auto D = s.D(L);
-            return arith::dot(arith::lift(L, q) - s.O(L), D) - arith::dot(D, D);
-        });
-        return !(ep == sign::positive && eq == sign::positive);
-    }
-    // Proper crossing of the carrier line at t = cross(p - o, q - p) / cross(d, q - p).
-    const sign den = k.sgn([=](auto L) {
-        return arith::cross(drop_axis(s.D(L), axis), drop_axis(arith::lift(L, q) - arith::lift(L, p), axis));
-    });
-    const sign num = k.sgn([=](auto L) {
-        return arith::cross(drop_axis(arith::lift(L, p) - s.O(L), axis),
-                            drop_axis(arith::lift(L, q) - arith::lift(L, p), axis));
-    });
-    if (num * den == sign::negative) return false; // t < 0
-    if (s.kind == extent::ray) return true;
-    const sign over = k.sgn([=](auto L) { // den - num: t <= 1 iff (den - num) * den >= 0
-        const auto pq = drop_axis(arith::lift(L, q) - arith::lift(L, p), axis);
-        return arith::cross(drop_axis(s.D(L), axis), pq) - arith::cross(drop_axis(arith::lift(L, p) - s.O(L), axis), pq);
-    });
-    return over * den != sign::negative;
-}
-
-// 3D: the linear object against the closed segment [p, q] (for degenerate triangles).
-template <class K>
-[[nodiscard]] constexpr bool linear_segment_3d(K& k, const linear3& s, point3 p, point3 q) {
-    const sign cop = k.sgn([=](auto L) {
-        return arith::det3(s.D(L), arith::lift(L, p) - s.O(L), arith::lift(L, q) - s.O(L));
-    });
-    if (cop != sign::zero) return false;
-    for (int axis = 0; axis < 3; ++axis) {
-        const sign m = k.sgn([=](auto L) {
-            return pick(arith::cross(s.D(L), arith::lift(L, q) - arith::lift(L, p)), axis);
-        });
-        if (m != sign::zero) return linear_segment_2d(k, s, axis, p, q);
-    }
-    // d parallel to q - p (or p == q): the segment must lie on the carrier line.
-    for (int axis = 0; axis < 3; ++axis) {
-        const sign m = k.sgn([=](auto L) { return pick(arith::cross(s.D(L), arith::lift(L, p) - s.O(L)), axis); });
-        if (m != sign::zero) return false;
-    }
-    // On the line: reuse the 2D collinear branch along any axis (both cross products vanish).
-    return linear_segment_2d(k, s, 0, p, q);
-}
 
 template <class K>
 [[nodiscard]] constexpr bool point_in_triangle(K& k, point3 x, const triangle3& t);
@@ -155,8 +60,8 @@ template <class K>
         };
         if (w(b, c) == -nd || w(c, a) == -nd || w(a, b) == -nd) return false;
         const sign num = k.sgn([=](auto L) { return arith::dot(n_of(L), arith::lift(L, a) - s.O(L)); });
-        if (num == -nd) return false; // t < 0
-        if (s.kind == extent::ray) return true;
+        if (s.bounded_below() && num == -nd) return false; // t < 0
+        if (!s.bounded_above()) return true;
         const sign over = k.sgn([=](auto L) { // n.d - num = n.(q - a)
             return arith::dot(n_of(L), s.O(L) + s.D(L) - arith::lift(L, a));
         });
@@ -169,11 +74,12 @@ template <class K>
         const sign num = k.sgn([=](auto L) { return arith::dot(n_of(L), arith::lift(L, a) - s.O(L)); });
         if (num != sign::zero) return false;
         if (point_in_triangle(k, s.o, t)) return true;
-        return linear_segment_2d(k, s, axis, a, b) || linear_segment_2d(k, s, axis, b, c) ||
-               linear_segment_2d(k, s, axis, c, a);
+        return linear_linear_2d(k, s, as_linear(segment3{a, b}), axis) || linear_linear_2d(k, s, as_linear(segment3{b, c}), axis) ||
+               linear_linear_2d(k, s, as_linear(segment3{c, a}), axis);
     }
     // Degenerate triangle: the union of its edges is its convex hull.
-    return linear_segment_3d(k, s, a, b) || linear_segment_3d(k, s, b, c) || linear_segment_3d(k, s, c, a);
+    return linear_linear(k, s, as_linear(segment3{a, b})) || linear_linear(k, s, as_linear(segment3{b, c})) ||
+           linear_linear(k, s, as_linear(segment3{c, a}));
 }
 
 // Closed triangle (or its hull when degenerate) contains the point x.

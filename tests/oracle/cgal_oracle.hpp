@@ -70,6 +70,24 @@ struct convex_set {
 bool lp_intersect(const convex_set& a, const convex_set& b);
 std::optional<bool> lp_intersect_verified(const convex_set& a, const convex_set& b);
 
+// A point, segment, ray, line, plane or triangle (cgal_flat.cpp), for the pairs among them: v holds
+// a point's 3 values, a segment's end points, a ray's or line's origin and direction, a plane's
+// normal and offset (n . x = offset), a triangle's vertices. Degenerate shapes are their point
+// sets: a segment with equal ends, a ray or line with a zero direction is a Point_3, a collinear
+// triangle is the Segment_3 between its two farthest vertices (or a point), a plane with a zero
+// normal is everything when its offset is 0 and empty otherwise. flat_intersect decides with
+// CGAL's do_intersect / has_on over Epeck (CGAL::intersection for a ray against a ray or a line,
+// see cgal_flat.cpp); flat_intersect_epick is CGAL's do_intersect over Epick (a peer, for timing).
+struct flat {
+    enum kind_t { point, segment, ray, line, plane, triangle } kind;
+    double v[9];
+};
+bool flat_intersect(const flat& a, const flat& b);
+bool flat_intersect_epick(const flat& a, const flat& b);
+// CGAL's do_intersect itself, also for the ray-ray and line-ray pairs where it is wrong (the
+// fixtures show it).
+bool flat_do_intersect_cgal(const flat& a, const flat& b);
+
 // Is `x` the correctly rounded (nearest, ties to even) value of the exact quantity?
 bool is_rounded_ray_triangle_t(const double o[3], const double d[3], const double a[3], const double b[3],
                                const double c[3], double t);

@@ -1,0 +1,23 @@
+// point3 against segment3.
+// Semantics: A point and a closed segment: the point lies between the end points, both included.
+// Method (exact tiers): the linear pairs' shared body, linear_linear in segment_segment.cppm
+// (skew test det(D, E, w), then the coplanar crossing's parameter bounds as signs of products,
+// or the collinear overlap along D); every sign of degree <= 4.
+// Source: Schneider and Eberly, Geometric Tools for Computer Graphics (2003), section 11.1.
+// Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
+// magnitudes lie in [2^-500, 2^500], wrong only when a deciding sign is within 2^-40 of its
+// permanent (tests/query/point_segment.cpp).
+export module incidence.query:point_segment;
+import incidence.core;
+import incidence.arith;
+import incidence.shapes;
+import :segment_segment;
+
+export namespace incidence::pair {
+
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const point3& p, const segment3& s) {
+    return linear_linear(k, as_linear(p), as_linear(s));
+}
+
+} // namespace incidence::pair

@@ -1,0 +1,190 @@
+// segment3 against segment3, and the body every pair of linear objects shares: points, segments,
+// rays and lines against each other (line_line, line_point, line_ray, line_segment, point_point,
+// point_ray, point_segment, ray_ray, ray_segment, segment_segment) and the linear object of
+// ray_triangle, segment_triangle and line_triangle.
+// Semantics: closed sets. A segment includes its end points, a ray its origin; a segment with
+// equal end points, a ray or a line with a zero direction, is its one point. Touching at an end
+// point counts; collinear overlaps (even in one point) count.
+// Method (exact tiers): signs only, as CGAL's Segment_3/Segment_3 do_intersect. For s = O + t D
+// and r = P + u E (D = q - o taken exactly inside each predicate for a segment), w = P - O:
+//   a point against a point: the three coordinate differences are zero;
+//   det(D, E, w) != 0: skew, no;
+//   D x E != 0 (coplanar, not parallel): drop an axis where (D x E)_i != 0 (injective on the
+//     common plane); with c = cross2(D, E), t = cross2(w, E) / c and u = cross2(w, D) / c, each
+//     bound is a sign: t >= 0 iff cross2(w, E) c >= 0, t <= 1 iff (c - cross2(w, E)) c >= 0;
+//   D x E == 0 (parallel, or r a point): D x w == 0 (on s's line), then the 1D overlap of the
+//     positions along D, (x - O) . D: s spans [0, D . D] (a ray [0, inf), a line everything),
+//     r starts at w . D and runs towards sign(E . D).
+// Every sign is of a homogeneous polynomial of degree <= 4.
+// Source: the coplanar reduction of Schneider and Eberly, Geometric Tools for Computer Graphics
+// (2003), section 11.1 (linear components), with the parameter comparisons written as signs of
+// products instead of quotients; the 2D crossing as in O'Rourke, Computational Geometry in C,
+// 2nd ed. (1998), section 1.5.
+// Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
+// magnitudes lie in [2^-500, 2^500], wrong only when a deciding sign is within 2^-40 of its
+// permanent (tests/query/segment_segment.cpp and the other linear pairs' tests).
+export module incidence.query:segment_segment;
+import incidence.core;
+import incidence.arith;
+import incidence.shapes;
+
+export namespace incidence::pair {
+
+enum class extent : unsigned char { ray, segment, line };
+
+// The linear object o + t d: t >= 0 for a ray, 0 <= t <= 1 for a segment (d = q - o, exact),
+// every t for a line.
+struct linear3 {
+    point3 o;
+    vec3 d;   // ray or line direction (unused for a segment)
+    point3 q; // segment end (unused for a ray or a line)
+    extent kind;
+
+    template <class L>
+    [[nodiscard]] constexpr auto O(L l) const { return arith::lift(l, o); }
+    template <class L>
+    [[nodiscard]] constexpr auto D(L l) const {
+        if (kind == extent::segment) return arith::lift(l, q) - arith::lift(l, o);
+        // Same expression type as the segment branch: d = (d - 0) with 0 exact.
+        return arith::lift(l, d) - arith::lift(l, vec3{0, 0, 0});
+    }
+    [[nodiscard]] constexpr bool is_point() const {
+        return kind == extent::segment ? o == q : (d.x == 0.0 && d.y == 0.0 && d.z == 0.0);
+    }
+    [[nodiscard]] constexpr bool bounded_below() const { return kind != extent::line; } // t >= 0
+    [[nodiscard]] constexpr bool bounded_above() const { return kind == extent::segment; } // t <= 1
+};
+
+[[nodiscard]] constexpr linear3 as_linear(const segment3& s) { return {s.a, vec3{0, 0, 0}, s.b, extent::segment}; }
+[[nodiscard]] constexpr linear3 as_linear(const ray3& r) { return {r.origin, r.direction, r.origin, extent::ray}; }
+[[nodiscard]] constexpr linear3 as_linear(const line3& l) { return {l.origin, l.direction, l.origin, extent::line}; }
+[[nodiscard]] constexpr linear3 as_linear(const point3& p) { return {p, vec3{0, 0, 0}, p, extent::segment}; }
+
+template <class T>
+[[nodiscard]] constexpr auto pick(const arith::v3<T>& v, int axis) {
+    return axis == 0 ? v.x : (axis == 1 ? v.y : v.z);
+}
+// The projection dropping `axis`, in cyclic order, so cross2 of two projections is (a x b)_axis.
+template <class T>
+[[nodiscard]] constexpr auto drop_axis(const arith::v3<T>& v, int axis) {
+    return axis == 0 ? arith::v2<T>{v.y, v.z} : (axis == 1 ? arith::v2<T>{v.z, v.x} : arith::v2<T>{v.x, v.y});
+}
+
+// s and r lie on one line, s not a point: do their position ranges along D overlap?
+template <class K>
+[[nodiscard]] constexpr bool collinear_overlap(K& k, const linear3& s, const linear3& r) {
+    // Positions of r's end points: (x - O) . D against 0 (s's start) and against D . D (s's end).
+    auto from_start = [&](point3 x) { return k.sgn([=](auto L) { return arith::dot(arith::lift(L, x) - s.O(L), s.D(L)); }); };
+    auto from_end = [&](point3 x) {
+        return k.sgn([=](auto L) {
+            const auto D = s.D(L);
+            return arith::dot(arith::lift(L, x) - s.O(L), D) - arith::dot(D, D);
+        });
+    };
+    // Which way r runs along D (zero when r is a point).
+    const sign dir = r.is_point() ? sign::zero : k.sgn([=](auto L) { return arith::dot(r.D(L), s.D(L)); });
+    const bool r_segment = r.kind == extent::segment && dir != sign::zero;
+    const bool up = dir != sign::zero && (r.kind == extent::line || (r.kind == extent::ray && dir == sign::positive));
+    const bool down = dir != sign::zero && (r.kind == extent::line || (r.kind == extent::ray && dir == sign::negative));
+    // Some point of r at a position >= 0 (s's start), unless s has none.
+    const bool reaches_start =
+        !s.bounded_below() || up || from_start(r.o) != sign::negative || (r_segment && from_start(r.q) != sign::negative);
+    if (!reaches_start) return false;
+    // Some point of r at a position <= D . D (s's end), unless s has none.
+    return !s.bounded_above() || down || from_end(r.o) != sign::positive || (r_segment && from_end(r.q) != sign::positive);
+}
+
+// s and r lie in a plane on which dropping `axis` is injective, and cross2(D, E) != 0 there:
+// the crossing's parameters t and u are checked against each object's bounds.
+template <class K>
+[[nodiscard]] constexpr bool crossing_2d(K& k, const linear3& s, const linear3& r, int axis, sign c) {
+    // t c = cross2(w, E), u c = cross2(w, D); the upper bounds compare them with c itself.
+    auto lower = [&](bool of_s) {
+        return k.sgn([=](auto L) {
+            const auto w = drop_axis(r.O(L) - s.O(L), axis);
+            return arith::cross(w, drop_axis(of_s ? r.D(L) : s.D(L), axis));
+        });
+    };
+    auto upper = [&](bool of_s) {
+        return k.sgn([=](auto L) {
+            const auto D = drop_axis(s.D(L), axis), E = drop_axis(r.D(L), axis);
+            const auto w = drop_axis(r.O(L) - s.O(L), axis);
+            return arith::cross(D, E) - arith::cross(w, of_s ? E : D);
+        });
+    };
+    if (s.bounded_below() && lower(true) == -c) return false;  // t < 0
+    if (s.bounded_above() && upper(true) == -c) return false;  // t > 1
+    if (r.bounded_below() && lower(false) == -c) return false; // u < 0
+    if (r.bounded_above() && upper(false) == -c) return false; // u > 1
+    return true;
+}
+
+// Two linear objects in a plane on which dropping `axis` is injective (the triangle pairs' 2D
+// step): a crossing, or the collinear overlap.
+template <class K>
+[[nodiscard]] constexpr bool linear_linear_2d(K& k, const linear3& s, const linear3& r, int axis) {
+    const sign c = k.sgn([=](auto L) { return arith::cross(drop_axis(s.D(L), axis), drop_axis(r.D(L), axis)); });
+    if (c != sign::zero) return crossing_2d(k, s, r, axis, c);
+    // Parallel in the plane: r must lie on s's line.
+    if (k.sgn([=](auto L) { return arith::cross(drop_axis(s.D(L), axis), drop_axis(r.O(L) - s.O(L), axis)); }) != sign::zero)
+        return false;
+    return collinear_overlap(k, s, r);
+}
+
+// Pairs of one shape type run in one canonical order (the lexicographically smaller shape
+// first), so that every tier, plain double included, gives (a, b) and (b, a) the same answer.
+[[nodiscard]] constexpr int lex_compare(const double* a, const double* b, int n) {
+    for (int i = 0; i < n; ++i) {
+        if (a[i] < b[i]) return -1;
+        if (a[i] > b[i]) return 1;
+    }
+    return 0;
+}
+[[nodiscard]] constexpr bool before(point3 a, point3 b) {
+    const double x[3] = {a.x, a.y, a.z}, y[3] = {b.x, b.y, b.z};
+    return lex_compare(x, y, 3) < 0;
+}
+[[nodiscard]] constexpr bool before(point3 a, vec3 u, point3 b, vec3 v) {
+    const double x[6] = {a.x, a.y, a.z, u.x, u.y, u.z}, y[6] = {b.x, b.y, b.z, v.x, v.y, v.z};
+    return lex_compare(x, y, 6) < 0;
+}
+[[nodiscard]] constexpr bool before(const segment3& s, const segment3& t) {
+    return before(s.a, vec3{s.b.x, s.b.y, s.b.z}, t.a, vec3{t.b.x, t.b.y, t.b.z});
+}
+[[nodiscard]] constexpr bool before(const ray3& s, const ray3& t) { return before(s.origin, s.direction, t.origin, t.direction); }
+[[nodiscard]] constexpr bool before(const line3& s, const line3& t) { return before(s.origin, s.direction, t.origin, t.direction); }
+
+// Do the closed linear objects s and r meet?
+template <class K>
+[[nodiscard]] constexpr bool linear_linear(K& k, linear3 s, linear3 r) {
+    if (s.is_point()) {
+        if (r.is_point()) {
+            const point3 a = s.o, b = r.o;
+            return k.sgn([=](auto L) { return L(a.x) - L(b.x); }) == sign::zero &&
+                   k.sgn([=](auto L) { return L(a.y) - L(b.y); }) == sign::zero &&
+                   k.sgn([=](auto L) { return L(a.z) - L(b.z); }) == sign::zero;
+        }
+        const linear3 t = s;
+        s = r;
+        r = t;
+    }
+    if (!r.is_point()) {
+        if (k.sgn([=](auto L) { return arith::det3(s.D(L), r.D(L), r.O(L) - s.O(L)); }) != sign::zero) return false; // skew
+        for (int axis = 0; axis < 3; ++axis) {
+            const sign c = k.sgn([=](auto L) { return pick(arith::cross(s.D(L), r.D(L)), axis); });
+            if (c != sign::zero) return crossing_2d(k, s, r, axis, c);
+        }
+    }
+    // Parallel, or r a point: r must lie on s's line.
+    for (int axis = 0; axis < 3; ++axis)
+        if (k.sgn([=](auto L) { return pick(arith::cross(s.D(L), r.O(L) - s.O(L)), axis); }) != sign::zero) return false;
+    return collinear_overlap(k, s, r);
+}
+
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const segment3& s, const segment3& t) {
+    if (before(t, s)) return linear_linear(k, as_linear(t), as_linear(s));
+    return linear_linear(k, as_linear(s), as_linear(t));
+}
+
+} // namespace incidence::pair

@@ -1,0 +1,302 @@
+// Cases for the pairs among points, lines, rays, segments, planes and triangles, the oracle that
+// decides them (CGAL Epeck through oracle::flat), and the checks every such pair's test runs.
+// Include after check.hpp.
+//
+// Near-degenerate: both shapes are built in small dyadic coordinates around one point X, in one
+// of three arrangements, then moved by one random exact-or-nudged scale and translation:
+//   meet      each shape has X at a chosen place: a segment's end, its interior, or just past its
+//             end; a ray's origin, a point ahead of it, or behind it; a line through it; a
+//             triangle's vertex, an edge point, an interior point or a point just outside; a plane
+//             through it; so touching, crossing and near-missing pairs;
+//   parallel  both along one direction d (or -d, 2d): collinear with overlapping, touching or
+//             separated ranges, or side by side in a plane; a plane containing d;
+//   coplanar  the second shape lies in the first one's plane (a line in a triangle's plane, two
+//             triangles in one plane).
+// Random: coordinates in [-1, 1] at a random scale 2^-500..2^500, half of them in one plane
+// z = c (every shape, so pairs of lines can meet), unnudged.
+#pragma once
+#include <cmath>
+#include <optional>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace support {
+
+// --- the oracle ------------------------------------------------------------------------------
+inline oracle::flat to_flat(const incidence::point3& p) { return {oracle::flat::point, {p.x, p.y, p.z}}; }
+inline oracle::flat to_flat(const incidence::segment3& s) {
+    return {oracle::flat::segment, {s.a.x, s.a.y, s.a.z, s.b.x, s.b.y, s.b.z}};
+}
+inline oracle::flat to_flat(const incidence::ray3& r) {
+    return {oracle::flat::ray, {r.origin.x, r.origin.y, r.origin.z, r.direction.x, r.direction.y, r.direction.z}};
+}
+inline oracle::flat to_flat(const incidence::line3& l) {
+    return {oracle::flat::line, {l.origin.x, l.origin.y, l.origin.z, l.direction.x, l.direction.y, l.direction.z}};
+}
+inline oracle::flat to_flat(const incidence::plane3& p) { return {oracle::flat::plane, {p.normal.x, p.normal.y, p.normal.z, p.offset}}; }
+inline oracle::flat to_flat(const incidence::triangle3& t) {
+    return {oracle::flat::triangle, {t.a.x, t.a.y, t.a.z, t.b.x, t.b.y, t.b.z, t.c.x, t.c.y, t.c.z}};
+}
+template <class A, class B>
+bool flat_truth(const A& a, const B& b) { return oracle::flat_intersect(to_flat(a), to_flat(b)); }
+
+inline std::string shape_str(const incidence::point3& p) { return "point " + str(p); }
+inline std::string shape_str(const incidence::segment3& s) { return "segment " + str(s.a) + str(s.b); }
+inline std::string shape_str(const incidence::ray3& r) { return "ray " + str(r.origin) + str(r.direction); }
+inline std::string shape_str(const incidence::line3& l) { return "line " + str(l.origin) + str(l.direction); }
+inline std::string shape_str(const incidence::plane3& p) { return "plane " + str(p.normal) + " " + hex(p.offset); }
+inline std::string shape_str(const incidence::triangle3& t) { return "triangle " + str(t.a) + str(t.b) + str(t.c); }
+
+// --- shapes in small coordinates, then moved -------------------------------------------------
+// A plane is kept as its normal and a point on it until the transform has moved that point.
+struct plane_proto {
+    incidence::vec3 n;
+    incidence::point3 x;
+};
+template <class S>
+struct proto_of {
+    using type = S;
+};
+template <>
+struct proto_of<incidence::plane3> {
+    using type = plane_proto;
+};
+
+inline incidence::point3 moved(const incidence::point3& p, transform& tr) { return {tr.apply(p.x, 0), tr.apply(p.y, 1), tr.apply(p.z, 2)}; }
+inline incidence::vec3 moved_dir(const incidence::vec3& d, transform& tr) { return {tr.dir(d.x), tr.dir(d.y), tr.dir(d.z)}; }
+inline incidence::point3 realise(const incidence::point3& p, transform& tr) { return moved(p, tr); }
+inline incidence::segment3 realise(const incidence::segment3& s, transform& tr) { return {moved(s.a, tr), moved(s.b, tr)}; }
+inline incidence::ray3 realise(const incidence::ray3& r, transform& tr) { return {moved(r.origin, tr), moved_dir(r.direction, tr)}; }
+inline incidence::line3 realise(const incidence::line3& l, transform& tr) { return {moved(l.origin, tr), moved_dir(l.direction, tr)}; }
+inline incidence::triangle3 realise(const incidence::triangle3& t, transform& tr) { return {moved(t.a, tr), moved(t.b, tr), moved(t.c, tr)}; }
+inline incidence::plane3 realise(const plane_proto& p, transform& tr) {
+    const incidence::point3 x = moved(p.x, tr);
+    transform unscaled = tr; // a normal is not scaled with the coordinates (n . x would overflow)
+    unscaled.k = 0;
+    const incidence::vec3 n = moved_dir(p.n, unscaled); // a nudged normal tilts the plane slightly
+    return {n, n.x * x.x + n.y * x.y + n.z * x.z};
+}
+
+inline incidence::vec3 small_dir(rng& r) {
+    for (;;) {
+        const incidence::vec3 d{double(r.integer(-4, 4)), double(r.integer(-4, 4)), double(r.integer(-4, 4))};
+        if (!(d.x == 0 && d.y == 0 && d.z == 0)) return d;
+    }
+}
+inline incidence::point3 small_point(rng& r) { return {small(r), small(r), small(r)}; }
+inline double step(rng& r) { return r.integer(1, 8) * 0.25; }
+
+// The shape of type S with X at a random place of its own (its end, interior or just past it),
+// running along d (a plane: containing d when `contain`, else with a random normal).
+inline incidence::point3 shape_at(rng&, incidence::point3 X, incidence::vec3, bool) { return X; }
+inline incidence::segment3 segment_at(rng& r, incidence::point3 X, incidence::vec3 d) {
+    const double f = step(r), g = step(r);
+    incidence::segment3 s;
+    switch (r.integer(0, 3)) {
+    case 0: s = {X, X + d * f}; break;            // starts at X
+    case 1: s = {X - d * f, X + d * g}; break;    // passes through X
+    case 2: s = {X + d * f, X + d * (f + g)}; break; // X just before its start
+    default: s = {X, X}; break;                   // a point
+    }
+    return r.coin() ? s : incidence::segment3{s.b, s.a};
+}
+inline incidence::ray3 ray_at(rng& r, incidence::point3 X, incidence::vec3 d) {
+    switch (r.integer(0, 3)) {
+    case 0: return {X, d};                  // origin at X
+    case 1: return {X - d * step(r), d};    // X ahead
+    case 2: return {X + d * step(r), d};    // X behind
+    default: return {X, {0, 0, 0}};         // a point
+    }
+}
+inline incidence::line3 line_at(rng& r, incidence::point3 X, incidence::vec3 d) {
+    if (r.integer(0, 7) == 0) return {X, {0, 0, 0}}; // a point
+    return {X - d * step(r), d};
+}
+inline plane_proto plane_at(rng& r, incidence::point3 X, incidence::vec3 d, bool contain) {
+    incidence::vec3 n = small_dir(r);
+    if (contain) {
+        n = cross(d, n);
+        if (n.x == 0 && n.y == 0 && n.z == 0) n = cross(d, incidence::vec3{1, 2, 3});
+    }
+    return {n, X};
+}
+inline incidence::triangle3 triangle_at(rng& r, incidence::point3 X, incidence::vec3 d) {
+    // vertices a, b, c with X = a + s (b - a) + u (c - a) at a vertex, an edge, inside or outside
+    const incidence::vec3 e1 = r.coin() ? d : small_dir(r), e2 = small_dir(r);
+    static constexpr double su[][2] = {{0, 0}, {0.5, 0}, {0.25, 0.25}, {0.5, 0.5}, {1, 0}, {0.75, 0.5}, {-0.25, 0.5}};
+    const auto& w = su[r.integer(0, 6)];
+    const incidence::point3 a = X - e1 * w[0] - e2 * w[1];
+    const incidence::triangle3 t{a, a + e1, a + e2};
+    switch (r.integer(0, 2)) {
+    case 0: return t;
+    case 1: return {t.b, t.c, t.a};
+    default: return {t.a, t.c, t.b};
+    }
+}
+
+template <class S>
+typename proto_of<S>::type place(rng& r, incidence::point3 X, incidence::vec3 d, bool contain) {
+    using namespace incidence;
+    if constexpr (std::is_same_v<S, point3>) return shape_at(r, X, d, contain);
+    else if constexpr (std::is_same_v<S, segment3>) return segment_at(r, X, d);
+    else if constexpr (std::is_same_v<S, ray3>) return ray_at(r, X, d);
+    else if constexpr (std::is_same_v<S, line3>) return line_at(r, X, d);
+    else if constexpr (std::is_same_v<S, plane3>) return plane_at(r, X, d, contain);
+    else return triangle_at(r, X, d);
+}
+
+template <class A, class B>
+std::pair<A, B> flat_near(rng& r) {
+    using namespace incidence;
+    const point3 X = small_point(r);
+    const vec3 d = small_dir(r);
+    typename proto_of<A>::type a{};
+    typename proto_of<B>::type b{};
+    switch (r.integer(0, 2)) {
+    case 0: // meet at X, each along its own direction
+        a = place<A>(r, X, d, false);
+        b = place<B>(r, X, r.integer(0, 3) == 0 ? d : small_dir(r), false);
+        break;
+    case 1: { // parallel: b along d (or -d, 2d), collinear or beside a in a common plane
+        a = place<A>(r, X, d, true);
+        const double k = r.integer(0, 2) == 0 ? -1.0 : (r.coin() ? 1.0 : 2.0);
+        const vec3 side = r.coin() ? vec3{0, 0, 0} : cross(d, small_dir(r)) * (r.integer(1, 2) * 0.25);
+        b = place<B>(r, X + d * (r.integer(-6, 6) * 0.25) + side, d * k, true);
+        if constexpr (std::is_same_v<A, plane3> && std::is_same_v<B, plane3>) b.n = a.n * k; // parallel planes
+        break;
+    }
+    default: { // coplanar: b at another point of a plane through X that contains d
+        const vec3 e = small_dir(r);
+        a = place<A>(r, X, d, true);
+        b = place<B>(r, X + d * (r.integer(-4, 4) * 0.25) + e * (r.integer(-4, 4) * 0.25), r.coin() ? e : d + e, true);
+        break;
+    }
+    }
+    transform tr = random_transform(r, true);
+    return {realise(a, tr), realise(b, tr)};
+}
+
+// Random shapes; every point and direction in the plane z = c for half of the cases.
+template <class S>
+typename proto_of<S>::type random_shape(rng& r, bool in_plane, double c) {
+    using namespace incidence;
+    auto p = [&] { return point3{r.uniform(-1, 1), r.uniform(-1, 1), in_plane ? c : r.uniform(-1, 1)}; };
+    auto v = [&] { return vec3{r.uniform(-1, 1), r.uniform(-1, 1), in_plane ? 0.0 : r.uniform(-1, 1)}; };
+    if constexpr (std::is_same_v<S, point3>) return p();
+    else if constexpr (std::is_same_v<S, segment3>) return segment3{p(), p()};
+    else if constexpr (std::is_same_v<S, ray3>) return ray3{p(), v()};
+    else if constexpr (std::is_same_v<S, line3>) return line3{p(), v()};
+    else if constexpr (std::is_same_v<S, plane3>) return plane_proto{in_plane && r.coin() ? vec3{0, 0, 1} : v() + vec3{0, 0, r.uniform(-1, 1)}, p()};
+    else return triangle3{p(), p(), p()};
+}
+template <class A, class B>
+std::pair<A, B> flat_random(rng& r, bool any_scale = true) {
+    const bool in_plane = r.coin();
+    const double c = r.uniform(-1, 1);
+    const auto a = random_shape<A>(r, in_plane, c);
+    const auto b = random_shape<B>(r, in_plane, c);
+    transform tr = random_transform(r, false, any_scale);
+    return {realise(a, tr), realise(b, tr)};
+}
+
+// --- shapes that are the same point set ------------------------------------------------------
+// Exact rewrites (reversed, rotated, negated, doubled), used to check that the answer depends on
+// the point set alone.
+inline std::vector<incidence::point3> same_set(const incidence::point3& p) { return {p}; }
+inline std::vector<incidence::segment3> same_set(const incidence::segment3& s) { return {{s.b, s.a}}; }
+inline std::vector<incidence::ray3> same_set(const incidence::ray3& r) { return {{r.origin, r.direction * 2.0}}; }
+inline std::vector<incidence::line3> same_set(const incidence::line3& l) { return {{l.origin, l.direction * -1.0}, {l.origin, l.direction * 2.0}}; }
+inline std::vector<incidence::plane3> same_set(const incidence::plane3& p) { return {{p.normal * -1.0, -p.offset}, {p.normal * 2.0, p.offset * 2.0}}; }
+inline std::vector<incidence::triangle3> same_set(const incidence::triangle3& t) { return {{t.b, t.c, t.a}, {t.a, t.c, t.b}}; }
+
+// Translated by v (a plane's offset moves by n . v); std::nullopt unless every coordinate
+// moved exactly.
+inline bool exact_add(double x, double v, double& out) {
+    out = x + v;
+    return out - v == x && out - x == v;
+}
+inline std::optional<incidence::point3> shifted(const incidence::point3& p, incidence::vec3 v) {
+    incidence::point3 q;
+    if (exact_add(p.x, v.x, q.x) && exact_add(p.y, v.y, q.y) && exact_add(p.z, v.z, q.z)) return q;
+    return std::nullopt;
+}
+inline std::optional<incidence::point3> translated(const incidence::point3& p, incidence::vec3 v) { return shifted(p, v); }
+inline std::optional<incidence::segment3> translated(const incidence::segment3& s, incidence::vec3 v) {
+    const auto a = shifted(s.a, v), b = shifted(s.b, v);
+    if (a && b) return incidence::segment3{*a, *b};
+    return std::nullopt;
+}
+inline std::optional<incidence::ray3> translated(const incidence::ray3& r, incidence::vec3 v) {
+    if (const auto o = shifted(r.origin, v)) return incidence::ray3{*o, r.direction};
+    return std::nullopt;
+}
+inline std::optional<incidence::line3> translated(const incidence::line3& l, incidence::vec3 v) {
+    if (const auto o = shifted(l.origin, v)) return incidence::line3{*o, l.direction};
+    return std::nullopt;
+}
+inline std::optional<incidence::triangle3> translated(const incidence::triangle3& t, incidence::vec3 v) {
+    const auto a = shifted(t.a, v), b = shifted(t.b, v), c = shifted(t.c, v);
+    if (a && b && c) return incidence::triangle3{*a, *b, *c};
+    return std::nullopt;
+}
+inline std::optional<incidence::plane3> translated(const incidence::plane3& p, incidence::vec3 v) {
+    // offset + n . v, exact when each product and sum is
+    const double terms[3] = {p.normal.x * v.x, p.normal.y * v.y, p.normal.z * v.z};
+    const double comps[3][2] = {{p.normal.x, v.x}, {p.normal.y, v.y}, {p.normal.z, v.z}};
+    double o = p.offset;
+    for (int i = 0; i < 3; ++i) {
+        if (std::fma(comps[i][0], comps[i][1], -terms[i]) != 0.0) return std::nullopt;
+        double next;
+        if (!exact_add(o, terms[i], next)) return std::nullopt;
+        o = next;
+    }
+    return incidence::plane3{p.normal, o};
+}
+
+// --- the checks every flat pair runs ---------------------------------------------------------
+// The oracle on `n` random and `n` near-degenerate cases, with every tier contract.
+template <class A, class B>
+void flat_oracle(const std::string& name, long n, double approx_bound) {
+    auto describe = [](const A& a, const B& b) { return shape_str(a) + " " + shape_str(b); };
+    // an offset n . x that overflowed (random shapes far out at 2^500): outside the oracle's domain
+    auto skip = [](const A& a, const B& b) {
+        const auto fa = to_flat(a), fb = to_flat(b);
+        for (double x : fa.v) if (!std::isfinite(x)) return true;
+        for (double x : fb.v) if (!std::isfinite(x)) return true;
+        return false;
+    };
+    auto truth = [](const A& a, const B& b) { return flat_truth(a, b); };
+    run_oracle((name + " random").c_str(), n, approx_bound, [](rng& r) { return flat_random<A, B>(r); }, truth, skip, describe);
+    run_oracle((name + " near-degenerate").c_str(), n, approx_bound, [](rng& r) { return flat_near<A, B>(r); }, truth, skip, describe);
+}
+
+// The same answer for every rewrite of either shape and for exact translations of both.
+template <class A, class B>
+void flat_symmetries(const std::string& name, long n) {
+    using namespace incidence;
+    rng r(seed() + 71);
+    long checked = 0, bad = 0, yes = 0;
+    for (long i = 0; i < n; ++i) {
+        const auto [a, b] = (i % 2) ? flat_near<A, B>(r) : flat_random<A, B>(r);
+        const bool e = intersects(a, b);
+        yes += e;
+        auto same = [&](bool x) {
+            ++checked;
+            if (x != e && ++bad <= 5) std::printf("  %s differs: %s %s\n", name.c_str(), shape_str(a).c_str(), shape_str(b).c_str());
+        };
+        for (const auto& a2 : same_set(a)) same(intersects(a2, b));
+        for (const auto& b2 : same_set(b)) same(intersects(a, b2));
+        const vec3 v{std::ldexp(double(r.integer(-64, 64)), r.integer(-4, 20)), std::ldexp(double(r.integer(-64, 64)), r.integer(-4, 20)),
+                     std::ldexp(double(r.integer(-64, 64)), r.integer(-4, 20))};
+        const auto at = translated(a, v);
+        const auto bt = translated(b, v);
+        if (at && bt) same(intersects(*at, *bt));
+    }
+    std::printf("[cases] %s rewrites and exact translations: %ld checked (%ld pairs intersect), %ld differ\n", name.c_str(), checked, yes, bad);
+    CHECK(bad == 0);
+    CHECK(yes > 0);
+}
+
+} // namespace support
