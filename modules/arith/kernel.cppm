@@ -97,27 +97,36 @@ struct lift_expansion {
 struct exact_double {
     double v;
     bool exact;
+    bool finite = true; // no NaN or infinite input below this node
 };
 // Once an operation is inexact the value no longer matters: {0, false}, computing nothing that
-// could overflow (constant evaluation refuses a NaN).
+// could overflow (constant evaluation refuses a NaN). An exact zero factor still makes a product
+// exactly zero, whatever the other factor's rounding, as long as that factor's inputs are finite
+// (its true value is then a finite real): coplanar inputs (equal z, zero z-components) make many
+// terms exactly zero while their other factors round.
 [[nodiscard]] constexpr exact_double operator+(exact_double a, exact_double b) {
-    if (!a.exact || !b.exact || !(abs(a.v) < 0x1p1021 && abs(b.v) < 0x1p1021)) return {0.0, false};
+    const bool fin = a.finite && b.finite;
+    if (!a.exact || !b.exact || !(abs(a.v) < 0x1p1021 && abs(b.v) < 0x1p1021)) return {0.0, false, fin};
     const auto s = two_sum(a.v, b.v);
-    return {s.hi, s.lo == 0.0};
+    return {s.hi, s.lo == 0.0, fin};
 }
-[[nodiscard]] constexpr exact_double operator-(exact_double a) { return {-a.v, a.exact}; }
+[[nodiscard]] constexpr exact_double operator-(exact_double a) { return {-a.v, a.exact, a.finite}; }
 [[nodiscard]] constexpr exact_double operator-(exact_double a, exact_double b) { return a + (-b); }
-[[nodiscard]] constexpr exact_double abs(exact_double a) { return {abs(a.v), a.exact}; }
+[[nodiscard]] constexpr exact_double abs(exact_double a) { return {abs(a.v), a.exact, a.finite}; }
 [[nodiscard]] constexpr exact_double operator*(exact_double a, exact_double b) {
-    if (!a.exact || !b.exact) return {0.0, false};
-    if (a.v == 0.0 || b.v == 0.0) return {0.0, true};
+    const bool fin = a.finite && b.finite;
+    if (fin && ((a.exact && a.v == 0.0) || (b.exact && b.v == 0.0))) return {0.0, true, true};
+    if (!a.exact || !b.exact) return {0.0, false, fin};
     const int e = exponent_of(a.v) + exponent_of(b.v); // |a b| in [2^e, 2^(e+2))
-    if (e > 1020 || e < -968 || !(abs(a.v) < 0x1p995 && abs(b.v) < 0x1p995)) return {0.0, false};
+    if (e > 1020 || e < -968 || !(abs(a.v) < 0x1p995 && abs(b.v) < 0x1p995)) return {0.0, false, true};
     const auto p = two_product(a.v, b.v);
-    return {p.hi, p.lo == 0.0};
+    return {p.hi, p.lo == 0.0, true};
 }
 struct lift_exact_double {
-    [[nodiscard]] constexpr exact_double operator()(double x) const { return {x, abs(x) <= 0x1.fffffffffffffp1023}; }
+    [[nodiscard]] constexpr exact_double operator()(double x) const {
+        const bool fin = abs(x) <= 0x1.fffffffffffffp1023;
+        return {x, fin, fin};
+    }
 };
 struct lift_dyadic {
     [[nodiscard]] constexpr dyadic operator()(double x) const { return to_dyadic(x); }
