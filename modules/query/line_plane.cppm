@@ -24,7 +24,7 @@ export namespace incidence::pair {
 template <class K>
 [[nodiscard]] constexpr bool plane_linear(K& k, const plane3& pl, const linear3& s) {
     const sign s0 = plane_side(k, pl, s.o);
-    if (s0 == sign::zero) return true;
+    if (s0 == sign::zero) return s.kind == extent::segment ? finite(s.q) : finite(s.d); // the rest unread
     if (s.is_point()) return false;
     if (s.kind == extent::segment) return plane_side(k, pl, s.q) != s0;
     const vec3 n = pl.normal;

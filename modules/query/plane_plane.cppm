@@ -26,6 +26,8 @@ template <class K>
     const plane3& q = swap ? p0 : q0;
     const vec3 n = p.normal, m = q.normal;
     const double op = p.offset, oq = q.offset;
+    // Crossing normals decide without the offsets: a NaN or infinite input is checked here.
+    if (!finite(n) || !finite(m) || !finite(op) || !finite(oq)) return false;
     auto zero = [](vec3 v) { return v.x == 0.0 && v.y == 0.0 && v.z == 0.0; };
     auto offset_zero = [&](double o) { return k.sgn([=](auto L) { return L(o); }) == sign::zero; };
     if (zero(n) || zero(m)) {

@@ -11,15 +11,14 @@ export module incidence.query:plane_segment;
 import incidence.core;
 import incidence.arith;
 import incidence.shapes;
-import :aabb_plane;
+import :segment_segment;
+import :line_plane;
 
 export namespace incidence::pair {
 
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const plane3& pl, const segment3& s) {
-    const sign sa = plane_side(k, pl, s.a);
-    if (sa == sign::zero) return true;
-    return plane_side(k, pl, s.b) != sa;
+    return plane_linear(k, pl, as_linear(s)); // line_plane.cppm: the body every linear object shares
 }
 
 } // namespace incidence::pair

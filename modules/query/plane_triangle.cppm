@@ -12,15 +12,17 @@ import incidence.core;
 import incidence.arith;
 import incidence.shapes;
 import :aabb_plane;
+import :segment_segment;
 
 export namespace incidence::pair {
 
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const plane3& pl, const triangle3& t) {
+    // An early yes leaves vertices unread: a NaN or infinite one makes no triangle.
     const sign sa = plane_side(k, pl, t.a);
-    if (sa == sign::zero) return true;
+    if (sa == sign::zero) return finite(t.b) && finite(t.c);
     const sign sb = plane_side(k, pl, t.b);
-    if (sb != sa) return true;
+    if (sb != sa) return finite(t.c);
     return plane_side(k, pl, t.c) != sa;
 }
 

@@ -55,6 +55,14 @@ struct linear3 {
     [[nodiscard]] constexpr bool bounded_above() const { return kind == extent::segment; } // t <= 1
 };
 
+// Finite, by comparisons only (so also in constant evaluation, where inf - inf is ill-formed).
+// Bodies that can decide without reading every input (a plane crossed by a line through a
+// point on it needs no direction) check the unread inputs with it: a NaN or infinite input is
+// no shape, and the exact tier answers no for it.
+[[nodiscard]] constexpr bool finite(double x) { return x >= -0x1.fffffffffffffp1023 && x <= 0x1.fffffffffffffp1023; }
+[[nodiscard]] constexpr bool finite(vec3 v) { return finite(v.x) && finite(v.y) && finite(v.z); }
+[[nodiscard]] constexpr bool finite(point3 p) { return finite(p.x) && finite(p.y) && finite(p.z); }
+
 [[nodiscard]] constexpr linear3 as_linear(const segment3& s) { return {s.a, vec3{0, 0, 0}, s.b, extent::segment}; }
 [[nodiscard]] constexpr linear3 as_linear(const ray3& r) { return {r.origin, r.direction, r.origin, extent::ray}; }
 [[nodiscard]] constexpr linear3 as_linear(const line3& l) { return {l.origin, l.direction, l.origin, extent::line}; }

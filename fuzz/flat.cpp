@@ -1,0 +1,57 @@
+// The flat pairs: points, lines, rays, segments, planes and triangles against each other (every
+// ordered pair of the six kinds, 36 in all). Byte 0 picks the first shape's kind, byte 1 the
+// second's, then 9 doubles each (a shape reads the ones it needs: a point 3, a segment, ray or
+// line 6, a plane 4 (normal, offset), a triangle 9). Differential against CGAL Epeck
+// (oracle::flat): the exact tier agrees, conservative never misses, aggressive never lies,
+// classify is never wrong, both argument orders agree; on NaN or infinite input every tier must
+// finish and the exact tier says no. Any finding aborts.
+#include "../tests/oracle/cgal_oracle.hpp"
+#include "replay.hpp"
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+import incidence;
+#include "contracts.hpp"
+#include "../tests/support/flat_shapes.hpp"
+
+using namespace incidence;
+
+namespace {
+template <class F>
+void with_shape(int kind, const double* v, F f) {
+    switch (kind) {
+    case 0: f(point3{v[0], v[1], v[2]}); break;
+    case 1: f(segment3{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}}); break;
+    case 2: f(ray3{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}}); break;
+    case 3: f(line3{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}}); break;
+    case 4: f(plane3{{v[0], v[1], v[2]}, v[3]}); break;
+    default: f(triangle3{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}, {v[6], v[7], v[8]}}); break;
+    }
+}
+constexpr int used[] = {3, 6, 6, 6, 4, 9};
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    if (size < 2) return 0;
+    const int ka = data[0] % 6, kb = data[1] % 6;
+    double v[18] = {};
+    std::memcpy(v, data + 2, size - 2 < sizeof v ? size - 2 : sizeof v);
+    bool finite = true;
+    for (int i = 0; i < used[ka]; ++i) finite = finite && std::isfinite(v[i]);
+    for (int i = 0; i < used[kb]; ++i) finite = finite && std::isfinite(v[9 + i]);
+    with_shape(ka, v, [&](const auto& a) {
+        with_shape(kb, v + 9, [&](const auto& b) {
+            // Every tier must finish on any bits.
+            (void)intersects<approximate>(a, b);
+            (void)intersects<conservative>(b, a);
+            (void)intersects<aggressive>(a, b);
+            (void)classify(b, a);
+            if (!finite) {
+                if (intersects<exact>(a, b)) std::abort(); // NaN or infinite input: no
+                return;
+            }
+            contracts(a, b, support::flat_truth(a, b));
+        });
+    });
+    return 0;
+}

@@ -1,0 +1,30 @@
+// Each flat shape (point, segment, ray, line, plane, triangle) as the oracle's oracle::flat, and
+// the CGAL Epeck answer for a pair of them (tests/oracle/cgal_flat.cpp). Include after
+// `import incidence;` and the CGAL oracle header.
+#pragma once
+#include <type_traits>
+
+namespace support {
+
+template <class S>
+concept flat_shape = std::is_same_v<S, incidence::point3> || std::is_same_v<S, incidence::segment3> || std::is_same_v<S, incidence::ray3> ||
+                     std::is_same_v<S, incidence::line3> || std::is_same_v<S, incidence::plane3> || std::is_same_v<S, incidence::triangle3>;
+
+inline oracle::flat to_flat(const incidence::point3& p) { return {oracle::flat::point, {p.x, p.y, p.z}}; }
+inline oracle::flat to_flat(const incidence::segment3& s) {
+    return {oracle::flat::segment, {s.a.x, s.a.y, s.a.z, s.b.x, s.b.y, s.b.z}};
+}
+inline oracle::flat to_flat(const incidence::ray3& r) {
+    return {oracle::flat::ray, {r.origin.x, r.origin.y, r.origin.z, r.direction.x, r.direction.y, r.direction.z}};
+}
+inline oracle::flat to_flat(const incidence::line3& l) {
+    return {oracle::flat::line, {l.origin.x, l.origin.y, l.origin.z, l.direction.x, l.direction.y, l.direction.z}};
+}
+inline oracle::flat to_flat(const incidence::plane3& p) { return {oracle::flat::plane, {p.normal.x, p.normal.y, p.normal.z, p.offset}}; }
+inline oracle::flat to_flat(const incidence::triangle3& t) {
+    return {oracle::flat::triangle, {t.a.x, t.a.y, t.a.z, t.b.x, t.b.y, t.b.z, t.c.x, t.c.y, t.c.z}};
+}
+template <class A, class B>
+bool flat_truth(const A& a, const B& b) { return oracle::flat_intersect(to_flat(a), to_flat(b)); }
+
+} // namespace support
