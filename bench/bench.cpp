@@ -16,6 +16,7 @@
 import incidence;
 #include "../tests/support/testing.hpp"
 #include "../tests/support/obb_cases.hpp"
+#include "../tests/support/flat_cases.hpp"
 
 using namespace incidence;
 
@@ -194,6 +195,22 @@ std::vector<std::pair<A, B>> obb_tiers(const std::string& pair, bool near) {
     tiers(pair, dist, cs, truth, [](auto tier, const std::pair<A, B>& c) { return intersects<decltype(tier)>(c.first, c.second); });
     return cs;
 }
+// A flat pair (points, lines, rays, segments, planes, triangles) on the tests' generators
+// (tests/support/flat_cases.hpp) at scale 1, CGAL Epeck as truth, and CGAL Epick's do_intersect.
+template <class A, class B>
+void flat_tiers(const std::string& pair, bool near) {
+    const std::string dist = near ? "near_degenerate" : "random";
+    support::rng r(20261122 + (near ? 1 : 0));
+    std::vector<std::pair<A, B>> cs;
+    while (cs.size() < set_size) cs.push_back(near ? support::flat_near<A, B>(r, false) : support::flat_random<A, B>(r, false));
+    auto truth = [](const std::pair<A, B>& c) { return support::flat_truth(c.first, c.second); };
+    tiers(pair, dist, cs, truth, [](auto tier, const std::pair<A, B>& c) { return intersects<decltype(tier)>(c.first, c.second); });
+    std::vector<bool> t;
+    for (const auto& c : cs) t.push_back(truth(c));
+    reg("cgal_epick/intersects/" + pair + "/" + dist, cs, t, check::approximate, [](const std::pair<A, B>& c) {
+        return oracle::flat_intersect_epick(support::to_flat(c.first), support::to_flat(c.second));
+    });
+}
 void obb_arrays(const obb3& b, double* c, double* a, double* h) {
     arr(b.center, c);
     for (unsigned i = 0; i < 3; ++i) arr(b.axes[i], a + 3 * i), h[i] = b.half_extents[i];
@@ -221,6 +238,22 @@ void register_all() {
             (void)obb_tiers<obb3, triangle3>("obb_triangle", near);
             (void)obb_tiers<obb3, plane3>("obb_plane", near);
         }
+        flat_tiers<segment3, segment3>("segment_segment", near);
+        flat_tiers<line3, line3>("line_line", near);
+        flat_tiers<line3, point3>("line_point", near);
+        flat_tiers<line3, ray3>("line_ray", near);
+        flat_tiers<line3, segment3>("line_segment", near);
+        flat_tiers<point3, point3>("point_point", near);
+        flat_tiers<point3, ray3>("point_ray", near);
+        flat_tiers<point3, segment3>("point_segment", near);
+        flat_tiers<ray3, ray3>("ray_ray", near);
+        flat_tiers<ray3, segment3>("ray_segment", near);
+        flat_tiers<line3, triangle3>("line_triangle", near);
+        flat_tiers<point3, triangle3>("point_triangle", near);
+        flat_tiers<plane3, point3>("plane_point", near);
+        flat_tiers<line3, plane3>("line_plane", near);
+        flat_tiers<plane3, ray3>("plane_ray", near);
+        flat_tiers<plane3, plane3>("plane_plane", near);
         {
             const auto cs = ray_triangle_set(near);
             auto truth = [](const rt& c) {

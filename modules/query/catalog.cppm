@@ -95,6 +95,22 @@ inline constexpr std::tuple families{
     family<line3, obb3, 0>{"line_obb", "obb", "signs in double", {}},
     family<obb3, triangle3, 0>{"obb_triangle", "obb", "signs in double", {}},
     family<obb3, plane3, 0>{"obb_plane", "obb", "signs in double", {}},
+    family<segment3, segment3, 0>{"segment_segment", "flat", "signs in double", {}},
+    family<line3, line3, 0>{"line_line", "flat", "signs in double", {}},
+    family<line3, point3, 0>{"line_point", "flat", "signs in double", {}},
+    family<line3, ray3, 0>{"line_ray", "flat", "signs in double", {}},
+    family<line3, segment3, 0>{"line_segment", "flat", "signs in double", {}},
+    family<point3, point3, 0>{"point_point", "flat", "signs in double", {}},
+    family<point3, ray3, 0>{"point_ray", "flat", "signs in double", {}},
+    family<point3, segment3, 0>{"point_segment", "flat", "signs in double", {}},
+    family<ray3, ray3, 0>{"ray_ray", "flat", "signs in double", {}},
+    family<ray3, segment3, 0>{"ray_segment", "flat", "signs in double", {}},
+    family<line3, triangle3, 0>{"line_triangle", "flat", "signs in double", {}},
+    family<point3, triangle3, 0>{"point_triangle", "flat", "signs in double", {}},
+    family<plane3, point3, 0>{"plane_point", "flat", "signs in double", {}},
+    family<line3, plane3, 0>{"line_plane", "flat", "signs in double", {}},
+    family<plane3, ray3, 0>{"plane_ray", "flat", "signs in double", {}},
+    family<plane3, plane3, 0>{"plane_plane", "flat", "signs in double", {}},
 };
 
 inline constexpr std::size_t family_count = std::tuple_size_v<decltype(families)>;

@@ -55,10 +55,36 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
         yes += orient3d(p(), p(), p(), p()) == sign::zero;
         yes += insphere(p(), p(), p(), p(), p()) == sign::zero;
         n += 30;
+        // the flat pairs: every combination of point, line, ray, segment, plane and triangle
+        const line3 line{p(), v()};
+        const plane3 pl{v(), special(r)};
+        const point3 q = p();
+        every_tier(seg, seg, yes);
+        every_tier(ray, ray, yes);
+        every_tier(line, line, yes);
+        every_tier(line, ray, yes);
+        every_tier(seg, line, yes);
+        every_tier(ray, seg, yes);
+        every_tier(q, q, yes);
+        every_tier(q, line, yes);
+        every_tier(ray, q, yes);
+        every_tier(q, seg, yes);
+        every_tier(q, t, yes);
+        every_tier(line, t, yes);
+        every_tier(pl, q, yes);
+        every_tier(line, pl, yes);
+        every_tier(pl, ray, yes);
+        every_tier(pl, pl, yes);
+        n += 16 * 5;
     }
     std::printf("[cases] bad input: %ld query calls on special values completed (%ld yes)\n", n, yes);
     // The exact tier says no for NaN input.
     CHECK_FALSE(intersects(ray3{{nan_, 0, 0}, {1, 0, 0}}, triangle3{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}));
     CHECK(classify(ray3{{nan_, 0, 0}, {1, 0, 0}}, triangle3{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}) == certainty::uncertain);
     CHECK_FALSE(intersects(sphere3{{inf_, 0, 0}, 1}, sphere3{{0, 0, 0}, 1}));
+    CHECK_FALSE(intersects(segment3{{nan_, 0, 0}, {1, 0, 0}}, segment3{{0, 0, 0}, {1, 0, 0}}));
+    CHECK_FALSE(intersects(point3{inf_, 0, 0}, point3{inf_, 0, 0}));
+    CHECK_FALSE(intersects(line3{{0, 0, 0}, {inf_, 0, 0}}, plane3{{1, 0, 0}, 1}));
+    CHECK_FALSE(intersects(plane3{{0, 0, 0}, nan_}, plane3{{0, 0, 1}, 0}));
+    CHECK(classify(line3{{nan_, 0, 0}, {1, 0, 0}}, line3{{0, 0, 0}, {0, 1, 0}}) == certainty::uncertain);
 }

@@ -7,7 +7,7 @@
 import incidence;
 #include "../support/testing.hpp"
 #include "../support/check.hpp"
-#include "../support/flat_cases.hpp"
+#include "../support/flat_checks.hpp"
 
 using namespace incidence;
 

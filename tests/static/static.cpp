@@ -97,6 +97,32 @@ static_assert(intersection(B, ray3{{-1, 0.5, 0.5}, {2, 0, 0}})->t_exit == 1.0);
 // point + point must not compile; point - point is a vector.
 template <class A, class B>
 concept addable = requires(A a, B b) { a + b; };
+// the flat pairs: points, lines, rays, segments, planes and triangles against each other
+constexpr segment3 G{{0, 0, 0}, {2, 0, 0}};
+static_assert(intersects(G, segment3{{2, 0, 0}, {3, 5, 0}}));                     // end to end
+static_assert(!intersects(G, segment3{{0x1.0000000000001p1, 0, 0}, {3, 0, 0}}));  // collinear, one ulp apart
+static_assert(intersects(G, segment3{{1, -1, 0}, {1, 1, 0}}));                    // crossing
+static_assert(!intersects(G, segment3{{1, -1, tiny}, {1, 1, tiny}}));             // skew by a subnormal
+static_assert(intersects(line3{{0, 0, 0}, {1, 1, 1}}, line3{{huge, huge, 0}, {0, 0, 1}}));
+static_assert(!intersects(line3{{0, 0, 0}, {1, 0, 0}}, line3{{0, 1, 0}, {2, 0, 0}})); // parallel
+static_assert(intersects(line3{{1, 1, 1}, {1, 2, 3}}, point3{-1, -3, -5}));
+static_assert(intersects(line3{{0, 0, 0}, {1, 0, 0}}, ray3{{3, 0, 0}, {0, 1, 5}}));   // ray starts on the line
+static_assert(!intersects(line3{{0, 0, 0}, {1, 0, 0}}, ray3{{3, 2, 0}, {0, 1, 0}}));  // heads away
+static_assert(intersects(line3{{0, 0, 0}, {1, 1, 0}}, segment3{{0, 2, 0}, {1, 1, 0}}));
+static_assert(intersects(point3{0, -0.0, 0}, point3{-0.0, 0, 0}));
+static_assert(!intersects(point3{-1, -3, -5}, ray3{{1, 1, 1}, {1, 2, 3}}));          // behind the origin
+static_assert(intersects(point3{4, 2, 6}, G) == false && intersects(point3{2, 0, 0}, G));
+static_assert(!intersects(ray3{{1, 0, 0}, {1, 0, 0}}, ray3{{0, 1, 0}, {0, 1, 0}}));   // lines cross behind both
+static_assert(intersects(ray3{{0, 0, 0}, {1, 0, 0}}, ray3{{5, 0, 0}, {-1, 0, 0}}));   // collinear, facing
+static_assert(intersects(ray3{{0, 0, 0}, {1, 1, 0}}, segment3{{0, 0, 0}, {0, -4, 0}}));
+static_assert(intersects(line3{{0.5, 0, 5}, {0, 0, -1}}, T));                       // through an edge
+static_assert(!intersects(line3{{0.5, 0x1.0000000000001p-1, 5}, {0, 0, -1}}, T));
+static_assert(intersects(point3{0.5, 0.5, 0}, T) && !intersects(point3{0.5, 0.5, tiny}, T));
+static_assert(intersects(plane3{{1, 2, 3}, 6}, point3{1, 1, 1}) && !intersects(plane3{{1, 2, 3}, 6}, point3{1, 1, 0x1.0000000000001p0}));
+static_assert(intersects(line3{{0, 0, 0}, {1, 0, tiny}}, plane3{{0, 0, 1}, 2}));    // nearly parallel still crosses
+static_assert(!intersects(plane3{{0, 0, 1}, 2}, ray3{{0, 0, 0}, {1, 1, -1}}));      // heads away
+static_assert(intersects(plane3{{0, 0, 1}, 2}, plane3{{0, 0, -3}, -6}));           // the same plane
+static_assert(!intersects(plane3{{0, 0, 1}, 2}, plane3{{0, 0, 3}, 0x1.8000000000001p2}));
 static_assert(!addable<point3, point3>);
 static_assert(addable<point3, vec3>);
 static_assert(__is_same(decltype(point3{} - point3{}), vec3));

@@ -1,6 +1,5 @@
-// Cases for the pairs among points, lines, rays, segments, planes and triangles, the oracle that
-// decides them (CGAL Epeck through oracle::flat), and the checks every such pair's test runs.
-// Include after check.hpp.
+// Cases for the pairs among points, lines, rays, segments, planes and triangles (the tests'
+// checks are in flat_checks.hpp). Include after testing.hpp and the CGAL oracle header.
 //
 // Near-degenerate: both shapes are built in small dyadic coordinates around one point X, in one
 // of three arrangements, then moved by one random exact-or-nudged scale and translation:
@@ -21,33 +20,9 @@
 #include <type_traits>
 #include <utility>
 #include <vector>
+#include "flat_shapes.hpp"
 
 namespace support {
-
-// --- the oracle ------------------------------------------------------------------------------
-inline oracle::flat to_flat(const incidence::point3& p) { return {oracle::flat::point, {p.x, p.y, p.z}}; }
-inline oracle::flat to_flat(const incidence::segment3& s) {
-    return {oracle::flat::segment, {s.a.x, s.a.y, s.a.z, s.b.x, s.b.y, s.b.z}};
-}
-inline oracle::flat to_flat(const incidence::ray3& r) {
-    return {oracle::flat::ray, {r.origin.x, r.origin.y, r.origin.z, r.direction.x, r.direction.y, r.direction.z}};
-}
-inline oracle::flat to_flat(const incidence::line3& l) {
-    return {oracle::flat::line, {l.origin.x, l.origin.y, l.origin.z, l.direction.x, l.direction.y, l.direction.z}};
-}
-inline oracle::flat to_flat(const incidence::plane3& p) { return {oracle::flat::plane, {p.normal.x, p.normal.y, p.normal.z, p.offset}}; }
-inline oracle::flat to_flat(const incidence::triangle3& t) {
-    return {oracle::flat::triangle, {t.a.x, t.a.y, t.a.z, t.b.x, t.b.y, t.b.z, t.c.x, t.c.y, t.c.z}};
-}
-template <class A, class B>
-bool flat_truth(const A& a, const B& b) { return oracle::flat_intersect(to_flat(a), to_flat(b)); }
-
-inline std::string shape_str(const incidence::point3& p) { return "point " + str(p); }
-inline std::string shape_str(const incidence::segment3& s) { return "segment " + str(s.a) + str(s.b); }
-inline std::string shape_str(const incidence::ray3& r) { return "ray " + str(r.origin) + str(r.direction); }
-inline std::string shape_str(const incidence::line3& l) { return "line " + str(l.origin) + str(l.direction); }
-inline std::string shape_str(const incidence::plane3& p) { return "plane " + str(p.normal) + " " + hex(p.offset); }
-inline std::string shape_str(const incidence::triangle3& t) { return "triangle " + str(t.a) + str(t.b) + str(t.c); }
 
 // --- shapes in small coordinates, then moved -------------------------------------------------
 // A plane is kept as its normal and a point on it until the transform has moved that point.
@@ -147,8 +122,9 @@ typename proto_of<S>::type place(rng& r, incidence::point3 X, incidence::vec3 d,
     else return triangle_at(r, X, d);
 }
 
+// any_scale false: scale 1, no far translation (the benchmarks' sets).
 template <class A, class B>
-std::pair<A, B> flat_near(rng& r) {
+std::pair<A, B> flat_near(rng& r, bool any_scale = true) {
     using namespace incidence;
     const point3 X = small_point(r);
     const vec3 d = small_dir(r);
@@ -174,7 +150,7 @@ std::pair<A, B> flat_near(rng& r) {
         break;
     }
     }
-    transform tr = random_transform(r, true);
+    transform tr = random_transform(r, true, any_scale);
     return {realise(a, tr), realise(b, tr)};
 }
 
@@ -253,50 +229,6 @@ inline std::optional<incidence::plane3> translated(const incidence::plane3& p, i
         o = next;
     }
     return incidence::plane3{p.normal, o};
-}
-
-// --- the checks every flat pair runs ---------------------------------------------------------
-// The oracle on `n` random and `n` near-degenerate cases, with every tier contract.
-template <class A, class B>
-void flat_oracle(const std::string& name, long n, double approx_bound) {
-    auto describe = [](const A& a, const B& b) { return shape_str(a) + " " + shape_str(b); };
-    // an offset n . x that overflowed (random shapes far out at 2^500): outside the oracle's domain
-    auto skip = [](const A& a, const B& b) {
-        const auto fa = to_flat(a), fb = to_flat(b);
-        for (double x : fa.v) if (!std::isfinite(x)) return true;
-        for (double x : fb.v) if (!std::isfinite(x)) return true;
-        return false;
-    };
-    auto truth = [](const A& a, const B& b) { return flat_truth(a, b); };
-    run_oracle((name + " random").c_str(), n, approx_bound, [](rng& r) { return flat_random<A, B>(r); }, truth, skip, describe);
-    run_oracle((name + " near-degenerate").c_str(), n, approx_bound, [](rng& r) { return flat_near<A, B>(r); }, truth, skip, describe);
-}
-
-// The same answer for every rewrite of either shape and for exact translations of both.
-template <class A, class B>
-void flat_symmetries(const std::string& name, long n) {
-    using namespace incidence;
-    rng r(seed() + 71);
-    long checked = 0, bad = 0, yes = 0;
-    for (long i = 0; i < n; ++i) {
-        const auto [a, b] = (i % 2) ? flat_near<A, B>(r) : flat_random<A, B>(r);
-        const bool e = intersects(a, b);
-        yes += e;
-        auto same = [&](bool x) {
-            ++checked;
-            if (x != e && ++bad <= 5) std::printf("  %s differs: %s %s\n", name.c_str(), shape_str(a).c_str(), shape_str(b).c_str());
-        };
-        for (const auto& a2 : same_set(a)) same(intersects(a2, b));
-        for (const auto& b2 : same_set(b)) same(intersects(a, b2));
-        const vec3 v{std::ldexp(double(r.integer(-64, 64)), r.integer(-4, 20)), std::ldexp(double(r.integer(-64, 64)), r.integer(-4, 20)),
-                     std::ldexp(double(r.integer(-64, 64)), r.integer(-4, 20))};
-        const auto at = translated(a, v);
-        const auto bt = translated(b, v);
-        if (at && bt) same(intersects(*at, *bt));
-    }
-    std::printf("[cases] %s rewrites and exact translations: %ld checked (%ld pairs intersect), %ld differ\n", name.c_str(), checked, yes, bad);
-    CHECK(bad == 0);
-    CHECK(yes > 0);
 }
 
 } // namespace support

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <type_traits>
 #include <utility>
 #include "rng.hpp"
 
@@ -411,6 +412,38 @@ struct near_boundary<obb3, plane3> {
     static std::pair<obb3, plane3> touching(rng& r) { // the supporting plane at p, normal o
         const auto t = touching_obb(r);
         return {t.box, plane3{t.o, dot(t.o, t.p - point3{0, 0, 0})}};
+    }
+};
+
+// The flat pairs (points, lines, rays, segments, planes, triangles): both shapes through one
+// integer point X, each with X on its own boundary (a segment's end, a ray's origin or a point it
+// is aimed at, a line through it, a plane through it, a triangle's vertex or edge point), so the
+// pair touches exactly at X; a move of 2^-k takes them apart (or, for a plane, across).
+template <class S>
+concept flat_shape = std::is_same_v<S, point3> || std::is_same_v<S, segment3> || std::is_same_v<S, ray3> ||
+                     std::is_same_v<S, line3> || std::is_same_v<S, plane3> || std::is_same_v<S, triangle3>;
+template <class S>
+S through(rng& r, point3 X) {
+    const vec3 d = int_vec(r, 300);
+    if constexpr (std::is_same_v<S, point3>) return X;
+    else if constexpr (std::is_same_v<S, segment3>) return r.coin() ? segment3{X, X + d} : segment3{X + d, X};
+    else if constexpr (std::is_same_v<S, ray3>) return r.coin() ? ray3{X, d} : ray3{X - d, d};
+    else if constexpr (std::is_same_v<S, line3>) return line3{X - d * double(r.integer(0, 3)), d};
+    else if constexpr (std::is_same_v<S, plane3>) {
+        const vec3 n = int_vec(r, 6);
+        return plane3{n, dot(n, X - point3{0, 0, 0})};
+    } else {
+        const triangle3 t = int_triangle(r);
+        return moved(t, X - boundary_point(t, r));
+    }
+}
+template <class A, class B>
+    requires(flat_shape<A> && flat_shape<B>)
+struct near_boundary<A, B> {
+    static std::pair<A, B> touching(rng& r) {
+        const point3 X = int_point(r, 400);
+        const A a = through<A>(r, X);
+        return {a, through<B>(r, X)};
     }
 };
 

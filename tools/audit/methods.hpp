@@ -4,6 +4,7 @@
 #pragma once
 #include <string>
 #include <vector>
+#include "../../tests/support/flat_shapes.hpp"
 
 namespace audit {
 
@@ -79,6 +80,13 @@ inline bool epick(const aabb3& b, const point3& p) {
     double q[3], mn[3], mx[3];
     arr(p, q), arr(b.min, mn), arr(b.max, mx);
     return oracle::point_in_box_epick(q, mn, mx);
+}
+// The other flat pairs (points, lines, rays, segments, planes, triangles): CGAL's do_intersect
+// over Epick, as a user would call it (tests/oracle/cgal_flat.cpp).
+template <class A, class B>
+    requires(support::flat_shape<A> && support::flat_shape<B>)
+bool epick(const A& a, const B& b) {
+    return oracle::flat_intersect_epick(support::to_flat(a), support::to_flat(b));
 }
 template <class A, class B>
 concept has_epick = requires(const A& a, const B& b) { epick(a, b); };

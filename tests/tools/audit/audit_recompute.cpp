@@ -115,6 +115,13 @@ int truth(const A& a, const B& b) {
     return oracle::lp_intersect(support::lp(a), support::lp(b));
 }
 
+// The other flat pairs: CGAL Epeck (tests/oracle/cgal_flat.cpp).
+template <class A, class B>
+    requires(support::flat_shape<A> && support::flat_shape<B>)
+int truth(const A& a, const B& b) {
+    return support::flat_truth(a, b);
+}
+
 template <class Family>
 void recompute(const Family& fam, std::uint64_t seed, long cases, unsigned index, int level) {
     using A = typename Family::first_type;
