@@ -254,6 +254,16 @@ void register_all() {
         flat_tiers<line3, plane3>("line_plane", near);
         flat_tiers<plane3, ray3>("plane_ray", near);
         flat_tiers<plane3, plane3>("plane_plane", near);
+        flat_tiers<segment2, segment2>("segment2_segment2", near);
+        flat_tiers<line2, line2>("line2_line2", near);
+        flat_tiers<line2, point2>("line2_point2", near);
+        flat_tiers<line2, ray2>("line2_ray2", near);
+        flat_tiers<line2, segment2>("line2_segment2", near);
+        flat_tiers<point2, point2>("point2_point2", near);
+        flat_tiers<point2, ray2>("point2_ray2", near);
+        flat_tiers<point2, segment2>("point2_segment2", near);
+        flat_tiers<ray2, ray2>("ray2_ray2", near);
+        flat_tiers<ray2, segment2>("ray2_segment2", near);
         {
             const auto cs = ray_triangle_set(near);
             auto truth = [](const rt& c) {

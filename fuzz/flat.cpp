@@ -1,7 +1,8 @@
 // The flat pairs: points, lines, rays, segments, planes and triangles against each other (every
-// ordered pair of the six kinds, 36 in all). Byte 0 picks the first shape's kind, byte 1 the
-// second's, then 9 doubles each (a shape reads the ones it needs: a point 3, a segment, ray or
-// line 6, a plane 4 (normal, offset), a triangle 9). Differential against CGAL Epeck
+// ordered pair of the six kinds, 36 in all), and points, segments, rays and lines in the plane
+// (16 more). Byte 0 picks the first shape's kind (the plane's when its top bit is set), byte 1
+// the second's, then 9 doubles each (a shape reads the ones it needs: a point 3, a segment, ray
+// or line 6, a plane 4 (normal, offset), a triangle 9; in the plane a point 2, the others 4). Differential against CGAL Epeck
 // (oracle::flat): the exact tier agrees, conservative never misses, aggressive never lies,
 // classify is never wrong, both argument orders agree; on NaN or infinite input every tier must
 // finish and the exact tier says no. Any finding aborts.
@@ -28,30 +29,48 @@ void with_shape(int kind, const double* v, F f) {
     default: f(triangle3{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}, {v[6], v[7], v[8]}}); break;
     }
 }
+template <class F>
+void with_shape2(int kind, const double* v, F f) {
+    switch (kind) {
+    case 0: f(point2{v[0], v[1]}); break;
+    case 1: f(segment2{{v[0], v[1]}, {v[2], v[3]}}); break;
+    case 2: f(ray2{{v[0], v[1]}, {v[2], v[3]}}); break;
+    default: f(line2{{v[0], v[1]}, {v[2], v[3]}}); break;
+    }
+}
 constexpr int used[] = {3, 6, 6, 6, 4, 9};
+constexpr int used2[] = {2, 4, 4, 4};
+
+// Every tier must finish on any bits; on finite input the contracts hold against the oracle.
+template <class A, class B>
+void check(const A& a, const B& b, bool finite) {
+    (void)intersects<approximate>(a, b);
+    (void)intersects<conservative>(b, a);
+    (void)intersects<aggressive>(a, b);
+    (void)classify(b, a);
+    if (!finite) {
+        if (intersects<exact>(a, b)) std::abort(); // NaN or infinite input: no
+        return;
+    }
+    contracts(a, b, support::flat_truth(a, b));
+}
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     if (size < 2) return 0;
-    const int ka = data[0] % 6, kb = data[1] % 6;
     double v[18] = {};
     std::memcpy(v, data + 2, size - 2 < sizeof v ? size - 2 : sizeof v);
     bool finite = true;
+    if (data[0] & 0x80) { // in the plane
+        const int ka = data[0] % 4, kb = data[1] % 4;
+        for (int i = 0; i < used2[ka]; ++i) finite = finite && std::isfinite(v[i]);
+        for (int i = 0; i < used2[kb]; ++i) finite = finite && std::isfinite(v[9 + i]);
+        with_shape2(ka, v, [&](const auto& a) { with_shape2(kb, v + 9, [&](const auto& b) { check(a, b, finite); }); });
+        return 0;
+    }
+    const int ka = data[0] % 6, kb = data[1] % 6;
     for (int i = 0; i < used[ka]; ++i) finite = finite && std::isfinite(v[i]);
     for (int i = 0; i < used[kb]; ++i) finite = finite && std::isfinite(v[9 + i]);
-    with_shape(ka, v, [&](const auto& a) {
-        with_shape(kb, v + 9, [&](const auto& b) {
-            // Every tier must finish on any bits.
-            (void)intersects<approximate>(a, b);
-            (void)intersects<conservative>(b, a);
-            (void)intersects<aggressive>(a, b);
-            (void)classify(b, a);
-            if (!finite) {
-                if (intersects<exact>(a, b)) std::abort(); // NaN or infinite input: no
-                return;
-            }
-            contracts(a, b, support::flat_truth(a, b));
-        });
-    });
+    with_shape(ka, v, [&](const auto& a) { with_shape(kb, v + 9, [&](const auto& b) { check(a, b, finite); }); });
     return 0;
 }

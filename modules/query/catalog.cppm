@@ -111,6 +111,16 @@ inline constexpr std::tuple families{
     family<line3, plane3, 0>{"line_plane", "flat", "signs in double", {}},
     family<plane3, ray3, 0>{"plane_ray", "flat", "signs in double", {}},
     family<plane3, plane3, 0>{"plane_plane", "flat", "signs in double", {}},
+    family<segment2, segment2, 0>{"segment2_segment2", "flat", "signs in double", {}},
+    family<line2, line2, 0>{"line2_line2", "flat", "signs in double", {}},
+    family<line2, point2, 0>{"line2_point2", "flat", "signs in double", {}},
+    family<line2, ray2, 0>{"line2_ray2", "flat", "signs in double", {}},
+    family<line2, segment2, 0>{"line2_segment2", "flat", "signs in double", {}},
+    family<point2, point2, 0>{"point2_point2", "flat", "signs in double", {}},
+    family<point2, ray2, 0>{"point2_ray2", "flat", "signs in double", {}},
+    family<point2, segment2, 0>{"point2_segment2", "flat", "signs in double", {}},
+    family<ray2, ray2, 0>{"ray2_ray2", "flat", "signs in double", {}},
+    family<ray2, segment2, 0>{"ray2_segment2", "flat", "signs in double", {}},
 };
 
 inline constexpr std::size_t family_count = std::tuple_size_v<decltype(families)>;

@@ -33,11 +33,12 @@ export namespace incidence::pair {
 enum class extent : unsigned char { ray, segment, line };
 
 // The linear object o + t d: t >= 0 for a ray, 0 <= t <= 1 for a segment (d = q - o, exact),
-// every t for a line.
-struct linear3 {
-    point3 o;
-    vec3 d;   // ray or line direction (unused for a segment)
-    point3 q; // segment end (unused for a ray or a line)
+// every t for a line; in 3D (linear3) or in the plane (linear2).
+template <class Point, class Vec>
+struct basic_linear {
+    Point o;
+    Vec d;   // ray or line direction (unused for a segment)
+    Point q; // segment end (unused for a ray or a line)
     extent kind;
 
     template <class L>
@@ -46,14 +47,14 @@ struct linear3 {
     [[nodiscard]] constexpr auto D(L l) const {
         if (kind == extent::segment) return arith::lift(l, q) - arith::lift(l, o);
         // Same expression type as the segment branch: d = (d - 0) with 0 exact.
-        return arith::lift(l, d) - arith::lift(l, vec3{0, 0, 0});
+        return arith::lift(l, d) - arith::lift(l, Vec{});
     }
-    [[nodiscard]] constexpr bool is_point() const {
-        return kind == extent::segment ? o == q : (d.x == 0.0 && d.y == 0.0 && d.z == 0.0);
-    }
+    [[nodiscard]] constexpr bool is_point() const { return kind == extent::segment ? o == q : d == Vec{}; }
     [[nodiscard]] constexpr bool bounded_below() const { return kind != extent::line; } // t >= 0
     [[nodiscard]] constexpr bool bounded_above() const { return kind == extent::segment; } // t <= 1
 };
+using linear3 = basic_linear<point3, vec3>;
+using linear2 = basic_linear<point2, vec2>;
 
 // Finite, by comparisons only (so also in constant evaluation, where inf - inf is ill-formed).
 // Bodies that can decide without reading every input (a plane crossed by a line through a
@@ -62,11 +63,17 @@ struct linear3 {
 [[nodiscard]] constexpr bool finite(double x) { return x >= -0x1.fffffffffffffp1023 && x <= 0x1.fffffffffffffp1023; }
 [[nodiscard]] constexpr bool finite(vec3 v) { return finite(v.x) && finite(v.y) && finite(v.z); }
 [[nodiscard]] constexpr bool finite(point3 p) { return finite(p.x) && finite(p.y) && finite(p.z); }
+[[nodiscard]] constexpr bool finite(vec2 v) { return finite(v.x) && finite(v.y); }
+[[nodiscard]] constexpr bool finite(point2 p) { return finite(p.x) && finite(p.y); }
 
 [[nodiscard]] constexpr linear3 as_linear(const segment3& s) { return {s.a, vec3{0, 0, 0}, s.b, extent::segment}; }
 [[nodiscard]] constexpr linear3 as_linear(const ray3& r) { return {r.origin, r.direction, r.origin, extent::ray}; }
 [[nodiscard]] constexpr linear3 as_linear(const line3& l) { return {l.origin, l.direction, l.origin, extent::line}; }
 [[nodiscard]] constexpr linear3 as_linear(const point3& p) { return {p, vec3{0, 0, 0}, p, extent::segment}; }
+[[nodiscard]] constexpr linear2 as_linear(const segment2& s) { return {s.a, vec2{0, 0}, s.b, extent::segment}; }
+[[nodiscard]] constexpr linear2 as_linear(const ray2& r) { return {r.origin, r.direction, r.origin, extent::ray}; }
+[[nodiscard]] constexpr linear2 as_linear(const line2& l) { return {l.origin, l.direction, l.origin, extent::line}; }
+[[nodiscard]] constexpr linear2 as_linear(const point2& p) { return {p, vec2{0, 0}, p, extent::segment}; }
 
 template <class T>
 [[nodiscard]] constexpr auto pick(const arith::v3<T>& v, int axis) {
@@ -78,12 +85,19 @@ template <class T>
     return axis == 0 ? arith::v2<T>{v.y, v.z} : (axis == 1 ? arith::v2<T>{v.z, v.x} : arith::v2<T>{v.x, v.y});
 }
 
+// In the plane there is nothing to drop: the identity projection.
+template <class T>
+[[nodiscard]] constexpr auto drop_axis(const arith::v2<T>& v, int) {
+    return v;
+}
+
 // s and r lie on one line, s not a point: do their position ranges along D overlap?
-template <class K>
-[[nodiscard]] constexpr bool collinear_overlap(K& k, const linear3& s, const linear3& r) {
+template <class K, class Lin>
+[[nodiscard]] constexpr bool collinear_overlap(K& k, const Lin& s, const Lin& r) {
     // Positions of r's end points: (x - O) . D against 0 (s's start) and against D . D (s's end).
-    auto from_start = [&](point3 x) { return k.sgn([=](auto L) { return arith::dot(arith::lift(L, x) - s.O(L), s.D(L)); }); };
-    auto from_end = [&](point3 x) {
+    using Point = decltype(s.o);
+    auto from_start = [&](Point x) { return k.sgn([=](auto L) { return arith::dot(arith::lift(L, x) - s.O(L), s.D(L)); }); };
+    auto from_end = [&](Point x) {
         return k.sgn([=](auto L) {
             const auto D = s.D(L);
             return arith::dot(arith::lift(L, x) - s.O(L), D) - arith::dot(D, D);
@@ -104,8 +118,8 @@ template <class K>
 
 // s and r lie in a plane on which dropping `axis` is injective, and cross2(D, E) != 0 there:
 // the crossing's parameters t and u are checked against each object's bounds.
-template <class K>
-[[nodiscard]] constexpr bool crossing_2d(K& k, const linear3& s, const linear3& r, int axis, sign c) {
+template <class K, class Lin>
+[[nodiscard]] constexpr bool crossing_2d(K& k, const Lin& s, const Lin& r, int axis, sign c) {
     // t c = cross2(w, E), u c = cross2(w, D); the upper bounds compare them with c itself.
     auto lower = [&](bool of_s) {
         return k.sgn([=](auto L) {
@@ -120,6 +134,7 @@ template <class K>
             return arith::cross(D, E) - arith::cross(w, of_s ? E : D);
         });
     };
+    if (!s.bounded_below() && !r.bounded_below()) return finite(s.o) && finite(r.o); // two lines cross; origins unread
     if (s.bounded_below() && lower(true) == -c) return false;  // t < 0
     if (s.bounded_above() && upper(true) == -c) return false;  // t > 1
     if (r.bounded_below() && lower(false) == -c) return false; // u < 0
@@ -129,8 +144,8 @@ template <class K>
 
 // Two linear objects in a plane on which dropping `axis` is injective (the triangle pairs' 2D
 // step): a crossing, or the collinear overlap.
-template <class K>
-[[nodiscard]] constexpr bool linear_linear_2d(K& k, const linear3& s, const linear3& r, int axis) {
+template <class K, class Lin>
+[[nodiscard]] constexpr bool linear_linear_2d(K& k, const Lin& s, const Lin& r, int axis) {
     const sign c = k.sgn([=](auto L) { return arith::cross(drop_axis(s.D(L), axis), drop_axis(r.D(L), axis)); });
     if (c != sign::zero) return crossing_2d(k, s, r, axis, c);
     // Parallel in the plane: r must lie on s's line.
@@ -161,6 +176,14 @@ template <class K>
 }
 [[nodiscard]] constexpr bool before(const ray3& s, const ray3& t) { return before(s.origin, s.direction, t.origin, t.direction); }
 [[nodiscard]] constexpr bool before(const line3& s, const line3& t) { return before(s.origin, s.direction, t.origin, t.direction); }
+[[nodiscard]] constexpr bool before(point2 a, vec2 u, point2 b, vec2 v) {
+    const double x[4] = {a.x, a.y, u.x, u.y}, y[4] = {b.x, b.y, v.x, v.y};
+    return lex_compare(x, y, 4) < 0;
+}
+[[nodiscard]] constexpr bool before(point2 a, point2 b) { return before(a, vec2{0, 0}, b, vec2{0, 0}); }
+[[nodiscard]] constexpr bool before(const segment2& s, const segment2& t) { return before(s.a, vec2{s.b.x, s.b.y}, t.a, vec2{t.b.x, t.b.y}); }
+[[nodiscard]] constexpr bool before(const ray2& s, const ray2& t) { return before(s.origin, s.direction, t.origin, t.direction); }
+[[nodiscard]] constexpr bool before(const line2& s, const line2& t) { return before(s.origin, s.direction, t.origin, t.direction); }
 
 // Do the closed linear objects s and r meet?
 template <class K>
@@ -186,6 +209,24 @@ template <class K>
     // Parallel, or r a point: r must lie on s's line.
     for (int axis = 0; axis < 3; ++axis)
         if (k.sgn([=](auto L) { return pick(arith::cross(s.D(L), r.O(L) - s.O(L)), axis); }) != sign::zero) return false;
+    return collinear_overlap(k, s, r);
+}
+
+// The same in the plane: a crossing (cross2(D, E) != 0), or r on s's line and the 1D overlap.
+template <class K>
+[[nodiscard]] constexpr bool linear_linear(K& k, linear2 s, linear2 r) {
+    if (s.is_point()) {
+        if (r.is_point()) {
+            const point2 a = s.o, b = r.o;
+            return k.sgn([=](auto L) { return L(a.x) - L(b.x); }) == sign::zero &&
+                   k.sgn([=](auto L) { return L(a.y) - L(b.y); }) == sign::zero;
+        }
+        const linear2 t = s;
+        s = r;
+        r = t;
+    }
+    if (!r.is_point()) return linear_linear_2d(k, s, r, 0);
+    if (k.sgn([=](auto L) { return arith::cross(s.D(L), r.O(L) - s.O(L)); }) != sign::zero) return false;
     return collinear_overlap(k, s, r);
 }
 

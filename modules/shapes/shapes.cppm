@@ -9,3 +9,6 @@ export import :aabb3;
 export import :triangle3;
 export import :kdop;
 export import :obb3;
+export import :ray2;
+export import :line2;
+export import :segment2;

@@ -6,6 +6,8 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/intersections.h>
+#include <optional>
+#include <utility>
 #include <variant>
 
 namespace oracle {
@@ -94,7 +96,101 @@ bool meets(const object<Kern>& x, const object<Kern>& y) {
         x, y);
 }
 
+template <class Kern>
+using object2 = std::variant<typename Kern::Point_2, typename Kern::Segment_2, typename Kern::Ray_2, typename Kern::Line_2>;
+
+template <class Kern>
+object2<Kern> to_cgal(const flat2& f) {
+    using P = typename Kern::Point_2;
+    using V = typename Kern::Vector_2;
+    const double* v = f.v;
+    const P a(v[0], v[1]);
+    if (f.kind == flat2::point) return a;
+    if (f.kind == flat2::segment) {
+        const P b(v[2], v[3]);
+        if (a == b) return a;
+        return typename Kern::Segment_2(a, b);
+    }
+    const V d(v[2], v[3]);
+    if (d == CGAL::NULL_VECTOR) return a;
+    if (f.kind == flat2::ray) return typename Kern::Ray_2(a, d);
+    return typename Kern::Line_2(a, d);
+}
+
+// CGAL 5.5's 2D do_intersect for Line_2 and Ray_2 against Line_2, Ray_2 or Segment_2 goes
+// through Line_2_Line_2_pair, which gives up ("no intersection") when CGAL_NTS is_finite fails on
+// b1 c2 - b2 c1; with Epeck that test reads the double approximation, which overflows once the
+// coordinates pass about 2^340, so crossing lines "miss" (tests/query/line2_line2.cpp keeps one).
+// Those pairs are decided here with exact rationals instead: the parameters of the crossing as
+// quotients by Cramer's rule, or the 1D overlap of parameter intervals along a common line.
+using Q = std::decay_t<decltype(CGAL::exact(std::declval<CGAL::Exact_predicates_exact_constructions_kernel::FT>()))>;
+struct rational_linear {
+    Q px, py, vx, vy; // p + s v
+    bool lo, hi;      // s >= 0, s <= 1 (a point has v = 0)
+};
+rational_linear rational(const flat2& f) {
+    const double* v = f.v;
+    rational_linear r{Q(v[0]), Q(v[1]), Q(0), Q(0), true, true};
+    if (f.kind == flat2::segment) r.vx = Q(v[2]) - Q(v[0]), r.vy = Q(v[3]) - Q(v[1]);
+    else if (f.kind != flat2::point) r.vx = Q(v[2]), r.vy = Q(v[3]), r.hi = false, r.lo = f.kind == flat2::ray;
+    if (r.vx == 0 && r.vy == 0) r.lo = r.hi = true; // a point: s = 0
+    return r;
+}
+bool in_range(const Q& s, const rational_linear& r) { return (!r.lo || s >= 0) && (!r.hi || s <= 1); }
+bool rational_meets(const flat2& fa, const flat2& fb) {
+    rational_linear a = rational(fa), b = rational(fb);
+    const Q wx = b.px - a.px, wy = b.py - a.py;
+    const Q det = a.vx * b.vy - a.vy * b.vx;
+    if (det != 0) return in_range((wx * b.vy - wy * b.vx) / det, a) && in_range((wx * a.vy - wy * a.vx) / det, b);
+    if (a.vx == 0 && a.vy == 0) std::swap(a, b);
+    if (a.vx == 0 && a.vy == 0) return a.px == b.px && a.py == b.py; // two points
+    const Q wx2 = b.px - a.px, wy2 = b.py - a.py;
+    if (a.vx * wy2 - a.vy * wx2 != 0) return false; // parallel, not on one line
+    // Positions along a.v, in units of a.v: a covers [0, 1], [0, inf) or everything; b covers
+    // (w . v + s (b.v . v)) / (v . v) for s in b's range.
+    const Q vv = a.vx * a.vx + a.vy * a.vy, start = (wx2 * a.vx + wy2 * a.vy) / vv, rate = (b.vx * a.vx + b.vy * a.vy) / vv;
+    // b's interval [blo, bhi] over s in [slo, shi] (an absent end: unbounded)
+    const std::optional<Q> slo = b.lo ? std::optional<Q>(Q(0)) : std::nullopt, shi = b.hi ? std::optional<Q>(Q(1)) : std::nullopt;
+    auto at = [&](const std::optional<Q>& t) { return t ? std::optional<Q>(start + *t * rate) : std::nullopt; };
+    std::optional<Q> blo = start, bhi = start;
+    if (rate > 0) blo = at(slo), bhi = at(shi);
+    if (rate < 0) blo = at(shi), bhi = at(slo);
+    const bool reaches_a_start = !a.lo || !bhi || *bhi >= 0;
+    const bool reaches_a_end = !a.hi || !blo || *blo <= 1;
+    return reaches_a_start && reaches_a_end;
+}
+
+template <class Kern>
+bool meets(const object2<Kern>& x, const object2<Kern>& y) {
+    using P = typename Kern::Point_2;
+    return std::visit(
+        [](const auto& a, const auto& b) -> bool {
+            using A = std::decay_t<decltype(a)>;
+            using B = std::decay_t<decltype(b)>;
+            if constexpr (std::is_same_v<A, P> && std::is_same_v<B, P>) return a == b;
+            else if constexpr (std::is_same_v<A, P>) return b.has_on(a);
+            else if constexpr (std::is_same_v<B, P>) return a.has_on(b);
+            else return CGAL::do_intersect(a, b);
+        },
+        x, y);
+}
+
 } // namespace
+
+bool flat_intersect(const flat2& a, const flat2& b) {
+    using K = CGAL::Exact_predicates_exact_constructions_kernel;
+    const bool unbounded = a.kind == flat2::ray || a.kind == flat2::line || b.kind == flat2::ray || b.kind == flat2::line;
+    if (unbounded && a.kind != flat2::point && b.kind != flat2::point) return rational_meets(a, b);
+    return meets<K>(to_cgal<K>(a), to_cgal<K>(b));
+}
+bool flat_do_intersect_cgal(const flat2& a, const flat2& b) {
+    using K = CGAL::Exact_predicates_exact_constructions_kernel;
+    return meets<K>(to_cgal<K>(a), to_cgal<K>(b));
+}
+bool flat_intersect_epick(const flat2& a, const flat2& b) {
+    using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+    return meets<K>(to_cgal<K>(a), to_cgal<K>(b));
+}
 
 bool flat_intersect(const flat& a, const flat& b) {
     using K = CGAL::Exact_predicates_exact_constructions_kernel;

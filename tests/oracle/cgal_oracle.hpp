@@ -87,6 +87,18 @@ bool flat_intersect_epick(const flat& a, const flat& b);
 // CGAL's do_intersect itself, also for the ray-ray and line-ray pairs where it is wrong (the
 // fixtures show it).
 bool flat_do_intersect_cgal(const flat& a, const flat& b);
+// The same in the plane: a point, segment, ray or line (v: a point's 2 values, a segment's end
+// points, a ray's or line's origin and direction; degenerate ones are Point_2), CGAL's 2D
+// do_intersect / has_on over Epeck (exact rationals where a line or a ray meets a line, ray or
+// segment: CGAL's answer is wrong there for large coordinates, see cgal_flat.cpp), and CGAL's
+// do_intersect over Epick for timing.
+struct flat2 {
+    enum kind_t { point, segment, ray, line } kind;
+    double v[4];
+};
+bool flat_intersect(const flat2& a, const flat2& b);
+bool flat_intersect_epick(const flat2& a, const flat2& b);
+bool flat_do_intersect_cgal(const flat2& a, const flat2& b); // do_intersect itself (wrong past 2^340, cgal_flat.cpp)
 
 // Is `x` the correctly rounded (nearest, ties to even) value of the exact quantity?
 bool is_rounded_ray_triangle_t(const double o[3], const double d[3], const double a[3], const double b[3],

@@ -76,6 +76,24 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
         every_tier(pl, ray, yes);
         every_tier(pl, pl, yes);
         n += 16 * 5;
+        // in the plane
+        auto p2 = [&] { return point2{special(r), special(r)}; };
+        auto v2 = [&] { return vec2{special(r), special(r)}; };
+        const segment2 s2{p2(), p2()};
+        const ray2 r2{p2(), v2()};
+        const line2 l2{p2(), v2()};
+        const point2 q2 = p2();
+        every_tier(s2, s2, yes);
+        every_tier(r2, r2, yes);
+        every_tier(l2, l2, yes);
+        every_tier(l2, r2, yes);
+        every_tier(s2, l2, yes);
+        every_tier(r2, s2, yes);
+        every_tier(q2, q2, yes);
+        every_tier(q2, l2, yes);
+        every_tier(r2, q2, yes);
+        every_tier(q2, s2, yes);
+        n += 10 * 5;
     }
     std::printf("[cases] bad input: %ld query calls on special values completed (%ld yes)\n", n, yes);
     // The exact tier says no for NaN input.
@@ -84,6 +102,8 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
     CHECK_FALSE(intersects(sphere3{{inf_, 0, 0}, 1}, sphere3{{0, 0, 0}, 1}));
     CHECK_FALSE(intersects(segment3{{nan_, 0, 0}, {1, 0, 0}}, segment3{{0, 0, 0}, {1, 0, 0}}));
     CHECK_FALSE(intersects(point3{inf_, 0, 0}, point3{inf_, 0, 0}));
+    CHECK_FALSE(intersects(segment2{{nan_, 0}, {1, 0}}, segment2{{0, 0}, {1, 0}}));
+    CHECK_FALSE(intersects(line2{{0, 0}, {inf_, 1}}, point2{0, 0}));
     CHECK_FALSE(intersects(line3{{0, 0, 0}, {inf_, 0, 0}}, plane3{{1, 0, 0}, 1}));
     CHECK_FALSE(intersects(plane3{{0, 0, 0}, nan_}, plane3{{0, 0, 1}, 0}));
     CHECK(classify(line3{{nan_, 0, 0}, {1, 0, 0}}, line3{{0, 0, 0}, {0, 1, 0}}) == certainty::uncertain);

@@ -123,6 +123,20 @@ static_assert(intersects(line3{{0, 0, 0}, {1, 0, tiny}}, plane3{{0, 0, 1}, 2}));
 static_assert(!intersects(plane3{{0, 0, 1}, 2}, ray3{{0, 0, 0}, {1, 1, -1}}));      // heads away
 static_assert(intersects(plane3{{0, 0, 1}, 2}, plane3{{0, 0, -3}, -6}));           // the same plane
 static_assert(!intersects(plane3{{0, 0, 1}, 2}, plane3{{0, 0, 3}, 0x1.8000000000001p2}));
+// the same in the plane
+static_assert(intersects(segment2{{0, 0}, {2, 0}}, segment2{{2, 0}, {3, 5}}));
+static_assert(!intersects(segment2{{0, 0}, {2, 0}}, segment2{{0x1.0000000000001p1, 0}, {3, 0}}));
+static_assert(intersects(segment2{{0.1, 0.1}, {0.3, 0.3}}, segment2{{0.1, 0.3}, {0.3, 0.1}}));
+static_assert(!intersects(ray2{{1, 0}, {1, 0}}, ray2{{0, 1}, {0, 1}}));
+static_assert(intersects(line2{{10, 0}, {1, 0}}, ray2{{5, 1}, {0, -1}}));
+static_assert(intersects(line2{{0, 0}, {1, 0}}, line2{{0, 1}, {1, tiny}}));
+static_assert(!intersects(line2{{0, 0}, {1, 0}}, line2{{0, 1}, {2, 0}}));
+static_assert(intersects(point2{2, 1}, segment2{{0, 0}, {4, 2}}) && !intersects(point2{6, 3}, segment2{{0, 0}, {4, 2}}));
+static_assert(intersects(point2{1, 1}, ray2{{1, 1}, {1, 2}}) && !intersects(point2{-1, -3}, ray2{{1, 1}, {1, 2}}));
+static_assert(intersects(line2{{1, 1}, {1, 2}}, point2{-1, -3}));
+static_assert(intersects(point2{0, -0.0}, point2{-0.0, 0}));
+static_assert(intersects(line2{{0, 0}, {1, 1}}, segment2{{0, 2}, {1, 1}}));
+static_assert(!intersects(ray2{{0, 0}, {1, 1}}, segment2{{-1, -1}, {-0.5, -0.5}}));
 static_assert(!addable<point3, point3>);
 static_assert(addable<point3, vec3>);
 static_assert(__is_same(decltype(point3{} - point3{}), vec3));

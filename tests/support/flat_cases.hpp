@@ -66,28 +66,32 @@ inline double step(rng& r) { return r.integer(1, 8) * 0.25; }
 // The shape of type S with X at a random place of its own (its end, interior or just past it),
 // running along d (a plane: containing d when `contain`, else with a random normal).
 inline incidence::point3 shape_at(rng&, incidence::point3 X, incidence::vec3, bool) { return X; }
-inline incidence::segment3 segment_at(rng& r, incidence::point3 X, incidence::vec3 d) {
+// (templates over the dimension: Seg, Ray and Line are segment3/ray3/line3 or their 2D kinds)
+template <class Seg, class P, class V>
+Seg segment_at(rng& r, P X, V d) {
     const double f = step(r), g = step(r);
-    incidence::segment3 s;
+    Seg s;
     switch (r.integer(0, 3)) {
-    case 0: s = {X, X + d * f}; break;            // starts at X
-    case 1: s = {X - d * f, X + d * g}; break;    // passes through X
-    case 2: s = {X + d * f, X + d * (f + g)}; break; // X just before its start
-    default: s = {X, X}; break;                   // a point
+    case 0: s = {X, X + f * d}; break;             // starts at X
+    case 1: s = {X - f * d, X + g * d}; break;     // passes through X
+    case 2: s = {X + f * d, X + (f + g) * d}; break; // X just before its start
+    default: s = {X, X}; break;                    // a point
     }
-    return r.coin() ? s : incidence::segment3{s.b, s.a};
+    return r.coin() ? s : Seg{s.b, s.a};
 }
-inline incidence::ray3 ray_at(rng& r, incidence::point3 X, incidence::vec3 d) {
+template <class Ray, class P, class V>
+Ray ray_at(rng& r, P X, V d) {
     switch (r.integer(0, 3)) {
     case 0: return {X, d};                  // origin at X
-    case 1: return {X - d * step(r), d};    // X ahead
-    case 2: return {X + d * step(r), d};    // X behind
-    default: return {X, {0, 0, 0}};         // a point
+    case 1: return {X - step(r) * d, d};    // X ahead
+    case 2: return {X + step(r) * d, d};    // X behind
+    default: return {X, V{}};               // a point
     }
 }
-inline incidence::line3 line_at(rng& r, incidence::point3 X, incidence::vec3 d) {
-    if (r.integer(0, 7) == 0) return {X, {0, 0, 0}}; // a point
-    return {X - d * step(r), d};
+template <class Line, class P, class V>
+Line line_at(rng& r, P X, V d) {
+    if (r.integer(0, 7) == 0) return {X, V{}}; // a point
+    return {X - step(r) * d, d};
 }
 inline plane_proto plane_at(rng& r, incidence::point3 X, incidence::vec3 d, bool contain) {
     incidence::vec3 n = small_dir(r);
@@ -115,17 +119,68 @@ template <class S>
 typename proto_of<S>::type place(rng& r, incidence::point3 X, incidence::vec3 d, bool contain) {
     using namespace incidence;
     if constexpr (std::is_same_v<S, point3>) return shape_at(r, X, d, contain);
-    else if constexpr (std::is_same_v<S, segment3>) return segment_at(r, X, d);
-    else if constexpr (std::is_same_v<S, ray3>) return ray_at(r, X, d);
-    else if constexpr (std::is_same_v<S, line3>) return line_at(r, X, d);
+    else if constexpr (std::is_same_v<S, segment3>) return segment_at<segment3>(r, X, d);
+    else if constexpr (std::is_same_v<S, ray3>) return ray_at<ray3>(r, X, d);
+    else if constexpr (std::is_same_v<S, line3>) return line_at<line3>(r, X, d);
     else if constexpr (std::is_same_v<S, plane3>) return plane_at(r, X, d, contain);
     else return triangle_at(r, X, d);
+}
+
+// --- in the plane: the same arrangements (meet at X, parallel or collinear) --------------------
+inline incidence::point2 moved(const incidence::point2& p, transform& tr) { return {tr.apply(p.x, 0), tr.apply(p.y, 1)}; }
+inline incidence::vec2 moved_dir(const incidence::vec2& d, transform& tr) { return {tr.dir(d.x), tr.dir(d.y)}; }
+inline incidence::point2 realise(const incidence::point2& p, transform& tr) { return moved(p, tr); }
+inline incidence::segment2 realise(const incidence::segment2& s, transform& tr) { return {moved(s.a, tr), moved(s.b, tr)}; }
+inline incidence::ray2 realise(const incidence::ray2& r, transform& tr) { return {moved(r.origin, tr), moved_dir(r.direction, tr)}; }
+inline incidence::line2 realise(const incidence::line2& l, transform& tr) { return {moved(l.origin, tr), moved_dir(l.direction, tr)}; }
+inline incidence::vec2 small_dir2(rng& r) {
+    for (;;) {
+        const incidence::vec2 d{double(r.integer(-4, 4)), double(r.integer(-4, 4))};
+        if (!(d.x == 0 && d.y == 0)) return d;
+    }
+}
+template <class S>
+S place2(rng& r, incidence::point2 X, incidence::vec2 d) {
+    using namespace incidence;
+    if constexpr (std::is_same_v<S, point2>) return X;
+    else if constexpr (std::is_same_v<S, segment2>) return segment_at<segment2>(r, X, d);
+    else if constexpr (std::is_same_v<S, ray2>) return ray_at<ray2>(r, X, d);
+    else return line_at<line2>(r, X, d);
+}
+template <class A, class B>
+std::pair<A, B> flat_near2(rng& r, bool any_scale) {
+    using namespace incidence;
+    const point2 X{small(r), small(r)};
+    const vec2 d = small_dir2(r);
+    const A a = place2<A>(r, X, d);
+    B b;
+    if (r.coin()) { // meet at X
+        b = place2<B>(r, X, r.integer(0, 3) == 0 ? d : small_dir2(r));
+    } else { // parallel: along d (or -d, 2d), on a's line or beside it
+        const double k = r.integer(0, 2) == 0 ? -1.0 : (r.coin() ? 1.0 : 2.0);
+        const vec2 side = r.coin() ? vec2{0, 0} : (r.integer(1, 2) * 0.25) * vec2{-d.y, d.x};
+        b = place2<B>(r, X + (r.integer(-6, 6) * 0.25) * d + side, k * d);
+    }
+    transform tr = random_transform(r, true, any_scale);
+    return {realise(a, tr), realise(b, tr)};
+}
+template <class S>
+S random_shape2(rng& r) {
+    using namespace incidence;
+    auto p = [&] { return point2{r.uniform(-1, 1), r.uniform(-1, 1)}; };
+    auto v = [&] { return vec2{r.uniform(-1, 1), r.uniform(-1, 1)}; };
+    if constexpr (std::is_same_v<S, point2>) return p();
+    else if constexpr (std::is_same_v<S, segment2>) return segment2{p(), p()};
+    else if constexpr (std::is_same_v<S, ray2>) return ray2{p(), v()};
+    else return line2{p(), v()};
 }
 
 // any_scale false: scale 1, no far translation (the benchmarks' sets).
 template <class A, class B>
 std::pair<A, B> flat_near(rng& r, bool any_scale = true) {
     using namespace incidence;
+    if constexpr (flat2_shape<A>) return flat_near2<A, B>(r, any_scale);
+    else {
     const point3 X = small_point(r);
     const vec3 d = small_dir(r);
     typename proto_of<A>::type a{};
@@ -152,6 +207,7 @@ std::pair<A, B> flat_near(rng& r, bool any_scale = true) {
     }
     transform tr = random_transform(r, true, any_scale);
     return {realise(a, tr), realise(b, tr)};
+    }
 }
 
 // Random shapes; every point and direction in the plane z = c for half of the cases.
@@ -169,12 +225,19 @@ typename proto_of<S>::type random_shape(rng& r, bool in_plane, double c) {
 }
 template <class A, class B>
 std::pair<A, B> flat_random(rng& r, bool any_scale = true) {
-    const bool in_plane = r.coin();
-    const double c = r.uniform(-1, 1);
-    const auto a = random_shape<A>(r, in_plane, c);
-    const auto b = random_shape<B>(r, in_plane, c);
-    transform tr = random_transform(r, false, any_scale);
-    return {realise(a, tr), realise(b, tr)};
+    if constexpr (flat2_shape<A>) {
+        const A a = random_shape2<A>(r);
+        const B b = random_shape2<B>(r);
+        transform tr = random_transform(r, false, any_scale);
+        return {realise(a, tr), realise(b, tr)};
+    } else {
+        const bool in_plane = r.coin();
+        const double c = r.uniform(-1, 1);
+        const auto a = random_shape<A>(r, in_plane, c);
+        const auto b = random_shape<B>(r, in_plane, c);
+        transform tr = random_transform(r, false, any_scale);
+        return {realise(a, tr), realise(b, tr)};
+    }
 }
 
 // --- shapes that are the same point set ------------------------------------------------------
@@ -186,6 +249,10 @@ inline std::vector<incidence::ray3> same_set(const incidence::ray3& r) { return 
 inline std::vector<incidence::line3> same_set(const incidence::line3& l) { return {{l.origin, l.direction * -1.0}, {l.origin, l.direction * 2.0}}; }
 inline std::vector<incidence::plane3> same_set(const incidence::plane3& p) { return {{p.normal * -1.0, -p.offset}, {p.normal * 2.0, p.offset * 2.0}}; }
 inline std::vector<incidence::triangle3> same_set(const incidence::triangle3& t) { return {{t.b, t.c, t.a}, {t.a, t.c, t.b}}; }
+inline std::vector<incidence::point2> same_set(const incidence::point2& p) { return {p}; }
+inline std::vector<incidence::segment2> same_set(const incidence::segment2& s) { return {{s.b, s.a}}; }
+inline std::vector<incidence::ray2> same_set(const incidence::ray2& r) { return {{r.origin, 2.0 * r.direction}}; }
+inline std::vector<incidence::line2> same_set(const incidence::line2& l) { return {{l.origin, -1.0 * l.direction}, {l.origin, 2.0 * l.direction}}; }
 
 // Translated by v (a plane's offset moves by n . v); std::nullopt unless every coordinate
 // moved exactly.
@@ -215,6 +282,25 @@ inline std::optional<incidence::line3> translated(const incidence::line3& l, inc
 inline std::optional<incidence::triangle3> translated(const incidence::triangle3& t, incidence::vec3 v) {
     const auto a = shifted(t.a, v), b = shifted(t.b, v), c = shifted(t.c, v);
     if (a && b && c) return incidence::triangle3{*a, *b, *c};
+    return std::nullopt;
+}
+// In the plane: by (v.x, v.y).
+inline std::optional<incidence::point2> translated(const incidence::point2& p, incidence::vec3 v) {
+    incidence::point2 q;
+    if (exact_add(p.x, v.x, q.x) && exact_add(p.y, v.y, q.y)) return q;
+    return std::nullopt;
+}
+inline std::optional<incidence::segment2> translated(const incidence::segment2& s, incidence::vec3 v) {
+    const auto a = translated(s.a, v), b = translated(s.b, v);
+    if (a && b) return incidence::segment2{*a, *b};
+    return std::nullopt;
+}
+inline std::optional<incidence::ray2> translated(const incidence::ray2& r, incidence::vec3 v) {
+    if (const auto o = translated(r.origin, v)) return incidence::ray2{*o, r.direction};
+    return std::nullopt;
+}
+inline std::optional<incidence::line2> translated(const incidence::line2& l, incidence::vec3 v) {
+    if (const auto o = translated(l.origin, v)) return incidence::line2{*o, l.direction};
     return std::nullopt;
 }
 inline std::optional<incidence::plane3> translated(const incidence::plane3& p, incidence::vec3 v) {

@@ -13,6 +13,12 @@ inline std::string shape_str(const incidence::segment3& s) { return "segment " +
 inline std::string shape_str(const incidence::ray3& r) { return "ray " + str(r.origin) + str(r.direction); }
 inline std::string shape_str(const incidence::line3& l) { return "line " + str(l.origin) + str(l.direction); }
 inline std::string shape_str(const incidence::plane3& p) { return "plane " + str(p.normal) + " " + hex(p.offset); }
+inline std::string str(incidence::point2 q) { return "(" + hex(q.x) + "," + hex(q.y) + ")"; }
+inline std::string str(incidence::vec2 q) { return "(" + hex(q.x) + "," + hex(q.y) + ")"; }
+inline std::string shape_str(const incidence::point2& p) { return "point2 " + str(p); }
+inline std::string shape_str(const incidence::segment2& s) { return "segment2 " + str(s.a) + str(s.b); }
+inline std::string shape_str(const incidence::ray2& r) { return "ray2 " + str(r.origin) + str(r.direction); }
+inline std::string shape_str(const incidence::line2& l) { return "line2 " + str(l.origin) + str(l.direction); }
 inline std::string shape_str(const incidence::triangle3& t) { return "triangle " + str(t.a) + str(t.b) + str(t.c); }
 
 // --- the checks every flat pair runs ---------------------------------------------------------

@@ -1,4 +1,5 @@
-// Each flat shape (point, segment, ray, line, plane, triangle) as the oracle's oracle::flat, and
+// Each flat shape (point, segment, ray, line, plane, triangle; and point2, segment2, ray2, line2 in
+// the plane) as the oracle's oracle::flat (flat2), and
 // the CGAL Epeck answer for a pair of them (tests/oracle/cgal_flat.cpp). Include after
 // `import incidence;` and the CGAL oracle header.
 #pragma once
@@ -24,6 +25,15 @@ inline oracle::flat to_flat(const incidence::plane3& p) { return {oracle::flat::
 inline oracle::flat to_flat(const incidence::triangle3& t) {
     return {oracle::flat::triangle, {t.a.x, t.a.y, t.a.z, t.b.x, t.b.y, t.b.z, t.c.x, t.c.y, t.c.z}};
 }
+template <class S>
+concept flat2_shape = std::is_same_v<S, incidence::point2> || std::is_same_v<S, incidence::segment2> ||
+                      std::is_same_v<S, incidence::ray2> || std::is_same_v<S, incidence::line2>;
+
+inline oracle::flat2 to_flat(const incidence::point2& p) { return {oracle::flat2::point, {p.x, p.y}}; }
+inline oracle::flat2 to_flat(const incidence::segment2& s) { return {oracle::flat2::segment, {s.a.x, s.a.y, s.b.x, s.b.y}}; }
+inline oracle::flat2 to_flat(const incidence::ray2& r) { return {oracle::flat2::ray, {r.origin.x, r.origin.y, r.direction.x, r.direction.y}}; }
+inline oracle::flat2 to_flat(const incidence::line2& l) { return {oracle::flat2::line, {l.origin.x, l.origin.y, l.direction.x, l.direction.y}}; }
+
 template <class A, class B>
 bool flat_truth(const A& a, const B& b) { return oracle::flat_intersect(to_flat(a), to_flat(b)); }
 

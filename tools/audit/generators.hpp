@@ -45,6 +45,11 @@ inline line3 moved(line3 l, vec3 v) { return {l.origin + v, l.direction}; }
 inline plane3 moved(plane3 p, vec3 v) { return {p.normal, p.offset + dot(p.normal, v)}; }
 inline triangle3 moved(triangle3 t, vec3 v) { return {t.a + v, t.b + v, t.c + v}; }
 inline obb3 moved(obb3 b, vec3 v) { return {b.center + v, b.axes, b.half_extents}; }
+// The plane's shapes move by (v.x, v.y).
+inline point2 moved(point2 p, vec3 v) { return {p.x + v.x, p.y + v.y}; }
+inline segment2 moved(segment2 s, vec3 v) { return {moved(s.a, v), moved(s.b, v)}; }
+inline ray2 moved(ray2 r, vec3 v) { return {moved(r.origin, v), r.direction}; }
+inline line2 moved(line2 l, vec3 v) { return {moved(l.origin, v), l.direction}; }
 
 // Every shape is an aggregate of doubles: scaling and ulp moves act on its fields.
 template <class S>
@@ -437,6 +442,27 @@ S through(rng& r, point3 X) {
         return moved(t, X - boundary_point(t, r));
     }
 }
+// In the plane: the same, through one integer point X.
+template <class S>
+concept flat2_shape = std::is_same_v<S, point2> || std::is_same_v<S, segment2> || std::is_same_v<S, ray2> || std::is_same_v<S, line2>;
+template <class S>
+S through2(rng& r, point2 X) {
+    vec2 d{double(r.integer(-300, 300)), double(r.integer(-300, 300))};
+    if (d.x == 0 && d.y == 0) d = {1, 0};
+    if constexpr (std::is_same_v<S, point2>) return X;
+    else if constexpr (std::is_same_v<S, segment2>) return r.coin() ? segment2{X, X + d} : segment2{X + d, X};
+    else if constexpr (std::is_same_v<S, ray2>) return r.coin() ? ray2{X, d} : ray2{X - d, d};
+    else return line2{X - double(r.integer(0, 3)) * d, d};
+}
+template <class A, class B>
+    requires(flat2_shape<A> && flat2_shape<B>)
+struct near_boundary<A, B> {
+    static std::pair<A, B> touching(rng& r) {
+        const point2 X{double(r.integer(-400, 400)), double(r.integer(-400, 400))};
+        const A a = through2<A>(r, X);
+        return {a, through2<B>(r, X)};
+    }
+};
 template <class A, class B>
     requires(flat_shape<A> && flat_shape<B>)
 struct near_boundary<A, B> {

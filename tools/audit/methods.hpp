@@ -89,6 +89,11 @@ bool epick(const A& a, const B& b) {
     return oracle::flat_intersect_epick(support::to_flat(a), support::to_flat(b));
 }
 template <class A, class B>
+    requires(support::flat2_shape<A> && support::flat2_shape<B>)
+bool epick(const A& a, const B& b) {
+    return oracle::flat_intersect_epick(support::to_flat(a), support::to_flat(b));
+}
+template <class A, class B>
 concept has_epick = requires(const A& a, const B& b) { epick(a, b); };
 // CGAL's triangle predicates require non-degenerate triangles.
 inline bool epick_accepts(const triangle3& t) {

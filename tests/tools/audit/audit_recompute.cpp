@@ -117,7 +117,7 @@ int truth(const A& a, const B& b) {
 
 // The other flat pairs: CGAL Epeck (tests/oracle/cgal_flat.cpp).
 template <class A, class B>
-    requires(support::flat_shape<A> && support::flat_shape<B>)
+    requires((support::flat_shape<A> && support::flat_shape<B>) || (support::flat2_shape<A> && support::flat2_shape<B>))
 int truth(const A& a, const B& b) {
     return support::flat_truth(a, b);
 }

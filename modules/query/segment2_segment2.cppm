@@ -1,0 +1,26 @@
+// segment2 against segment2.
+// Semantics: Two closed segments in the plane; touching at an end point and collinear overlaps (even in one point) count.
+// Method (exact tiers): the linear pairs' shared body in the plane, linear_linear(linear2) in
+// segment_segment.cppm: with c = cross(D, E) != 0 the crossing's parameters t and u are checked
+// against each object's bounds as signs of products (t c = cross(w, E), u c = cross(w, D)); with
+// c == 0, cross(D, w) == 0 (on one line) and the 1D overlap along D. Every sign of degree <= 2.
+// Source: O'Rourke, Computational Geometry in C, 2nd ed. (1998), section 1.5 (segment
+// intersection from orientations), extended to rays and lines by their parameter bounds.
+// Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
+// magnitudes lie in [2^-500, 2^500], wrong only when a deciding sign is within 2^-48 of its
+// permanent (tests/query/segment2_segment2.cpp).
+export module incidence.query:segment2_segment2;
+import incidence.core;
+import incidence.arith;
+import incidence.shapes;
+import :segment_segment;
+
+export namespace incidence::pair {
+
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const segment2& s, const segment2& t) {
+    if (before(t, s)) return linear_linear(k, as_linear(t), as_linear(s));
+    return linear_linear(k, as_linear(s), as_linear(t));
+}
+
+} // namespace incidence::pair
