@@ -1,7 +1,8 @@
 // segment3 against segment3, and the body every pair of linear objects shares: points, segments,
 // rays and lines against each other (line_line, line_point, line_ray, line_segment, point_point,
-// point_ray, point_segment, ray_ray, ray_segment, segment_segment) and the linear object of
-// ray_triangle, segment_triangle and line_triangle.
+// point_ray, point_segment, ray_ray, ray_segment, segment_segment), the linear object of
+// ray_triangle, segment_triangle and line_triangle, and the same ten pairs in the plane
+// (line2_line2 ... segment2_segment2, where the projection below is the identity).
 // Semantics: closed sets. A segment includes its end points, a ray its origin; a segment with
 // equal end points, a ray or a line with a zero direction, is its one point. Touching at an end
 // point counts; collinear overlaps (even in one point) count.
@@ -15,7 +16,8 @@
 //   D x E == 0 (parallel, or r a point): D x w == 0 (on s's line), then the 1D overlap of the
 //     positions along D, (x - O) . D: s spans [0, D . D] (a ray [0, inf), a line everything),
 //     r starts at w . D and runs towards sign(E . D).
-// Every sign is of a homogeneous polynomial of degree <= 4.
+// Every sign is of a homogeneous polynomial of degree <= 4 (<= 2 in the plane). Two lines that
+// cross decide without their origins, which are then checked to be finite (see finite()).
 // Source: the coplanar reduction of Schneider and Eberly, Geometric Tools for Computer Graphics
 // (2003), section 11.1 (linear components), with the parameter comparisons written as signs of
 // products instead of quotients; the 2D crossing as in O'Rourke, Computational Geometry in C,
