@@ -20,6 +20,7 @@ export module incidence.query:aabb_triangle;
 import incidence.core;
 import incidence.arith;
 import incidence.shapes;
+import :segment_segment;
 import :triangle_triangle;
 
 export namespace incidence::pair {
@@ -39,6 +40,9 @@ template <class K>
     using namespace box_triangle_detail;
     for (int i = 0; i < 3; ++i)
         if (!(at(b.min, i) <= at(b.max, i))) return false; // inverted or NaN box
+    // The box is read only through comparisons when the triangle is a point (no normal, no
+    // edge axes): an infinite bound must still give no.
+    if (!finite(b.min) || !finite(b.max)) return false;
     const point3 v[3] = {t.a, t.b, t.c};
     // The box's face normals: comparisons of coordinates.
     for (int i = 0; i < 3; ++i) {
