@@ -17,6 +17,7 @@ enum class errc : unsigned char {
     out_of_range,        // a derived value (a sum, a radius) overflows binary64
     not_orthonormal,     // OBB axes far from unit length or from perpendicular
     too_large,           // the input exceeds a construction's stated size limit
+    degenerate_tetrahedron, // the four vertices are coplanar (exactly)
 };
 
 struct error {
@@ -34,6 +35,7 @@ struct error {
         case errc::out_of_range: return "a derived value (a coordinate sum or a radius) overflows binary64";
         case errc::not_orthonormal: return "the box axes are far from orthonormal (unit length and perpendicular within 1e-6)";
         case errc::too_large: return "the input exceeds the construction's size limit (see its documentation)";
+        case errc::degenerate_tetrahedron: return "the tetrahedron's vertices are coplanar (zero volume)";
         }
         return "unknown error";
     }

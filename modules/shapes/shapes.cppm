@@ -12,3 +12,4 @@ export import :obb3;
 export import :ray2;
 export import :line2;
 export import :segment2;
+export import :tetrahedron3;

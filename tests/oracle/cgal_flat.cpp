@@ -7,6 +7,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/intersections.h>
 #include <optional>
+#include <stdexcept>
 #include <utility>
 #include <variant>
 
@@ -15,10 +16,12 @@ namespace {
 
 struct everything {};
 struct nothing {};
+struct lp_only {}; // a coplanar tetrahedron or a flat box: the LP oracle decides
 
 template <class Kern>
 using object = std::variant<typename Kern::Point_3, typename Kern::Segment_3, typename Kern::Ray_3, typename Kern::Line_3,
-                            typename Kern::Plane_3, typename Kern::Triangle_3, everything, nothing>;
+                            typename Kern::Plane_3, typename Kern::Triangle_3, typename Kern::Tetrahedron_3,
+                            typename Kern::Iso_cuboid_3, everything, nothing, lp_only>;
 
 template <class Kern>
 object<Kern> to_cgal(const flat& f) {
@@ -60,6 +63,16 @@ object<Kern> to_cgal(const flat& f) {
         if (p == q) return p;
         return typename Kern::Segment_3(p, q);
     }
+    case flat::tetrahedron: {
+        const P b(v[3], v[4], v[5]), c(v[6], v[7], v[8]), d(v[9], v[10], v[11]);
+        if (CGAL::coplanar(a, b, c, d)) return lp_only{};
+        return typename Kern::Tetrahedron_3(a, b, c, d);
+    }
+    case flat::box: {
+        if (!(v[0] <= v[3] && v[1] <= v[4] && v[2] <= v[5])) return nothing{};
+        if (!(v[0] < v[3] && v[1] < v[4] && v[2] < v[5])) return lp_only{};
+        return typename Kern::Iso_cuboid_3(a, P(v[3], v[4], v[5]));
+    }
     }
     return nothing{};
 }
@@ -76,6 +89,9 @@ constexpr bool ray_with_line_or_ray =
     (std::is_same_v<A, typename Kern::Ray_3> && (std::is_same_v<B, typename Kern::Ray_3> || std::is_same_v<B, typename Kern::Line_3>)) ||
     (std::is_same_v<B, typename Kern::Ray_3> && std::is_same_v<A, typename Kern::Line_3>);
 
+template <class Kern, class S>
+constexpr bool solid = std::is_same_v<S, typename Kern::Tetrahedron_3> || std::is_same_v<S, typename Kern::Iso_cuboid_3>;
+
 // meets<Kern, true>: the oracle (CGAL::intersection for the two pairs above); meets<Kern, false>:
 // do_intersect everywhere, as a user of CGAL would call it.
 template <class Kern, bool Oracle>
@@ -87,7 +103,10 @@ bool meets(const object<Kern>& x, const object<Kern>& y) {
             using B = std::decay_t<decltype(b)>;
             if constexpr (std::is_same_v<A, nothing> || std::is_same_v<B, nothing>) return false;
             else if constexpr (std::is_same_v<A, everything> || std::is_same_v<B, everything>) return true;
+            else if constexpr (std::is_same_v<A, lp_only> || std::is_same_v<B, lp_only>) throw std::logic_error("meets: an LP-only shape");
             else if constexpr (std::is_same_v<A, P> && std::is_same_v<B, P>) return a == b;
+            else if constexpr (std::is_same_v<A, P> && solid<Kern, B>) return !b.has_on_unbounded_side(a);
+            else if constexpr (std::is_same_v<B, P> && solid<Kern, A>) return !a.has_on_unbounded_side(b);
             else if constexpr (std::is_same_v<A, P>) return b.has_on(a);
             else if constexpr (std::is_same_v<B, P>) return a.has_on(b);
             else if constexpr (Oracle && ray_with_line_or_ray<Kern, A, B>) return bool(CGAL::intersection(a, b));
@@ -192,17 +211,101 @@ bool flat_intersect_epick(const flat2& a, const flat2& b) {
     return meets<K>(to_cgal<K>(a), to_cgal<K>(b));
 }
 
+convex_set lp_set(const flat& f) {
+    const double* v = f.v;
+    auto pt = [&](int i) { return std::array<double, 3>{v[i], v[i + 1], v[i + 2]}; };
+    convex_set s;
+    switch (f.kind) {
+    case flat::point: s.points = {pt(0)}; break;
+    case flat::segment: s.points = {pt(0), pt(3)}; break;
+    case flat::ray: s.points = {pt(0)}, s.generators = {{pt(3), true, false, 0, 0}}; break;
+    case flat::line: s.points = {pt(0)}, s.generators = {{pt(3), false, false, 0, 0}}; break;
+    case flat::plane:
+        if (v[0] == 0 && v[1] == 0 && v[2] == 0) throw std::logic_error("lp_set: a plane with a zero normal");
+        s.plane = true, s.normal = pt(0), s.offset = v[3];
+        break;
+    case flat::triangle: s.points = {pt(0), pt(3), pt(6)}; break;
+    case flat::tetrahedron: s.points = {pt(0), pt(3), pt(6), pt(9)}; break;
+    case flat::box:
+        s.points = {{0, 0, 0}};
+        for (int k = 0; k < 3; ++k) {
+            std::array<double, 3> e{0, 0, 0};
+            e[static_cast<unsigned>(k)] = 1;
+            s.generators.push_back({e, true, true, v[k], v[k + 3]});
+        }
+        break;
+    }
+    return s;
+}
+
 bool flat_intersect(const flat& a, const flat& b) {
     using K = CGAL::Exact_predicates_exact_constructions_kernel;
-    return meets<K, true>(to_cgal<K>(a), to_cgal<K>(b));
+    const auto x = to_cgal<K>(a), y = to_cgal<K>(b);
+    if (std::holds_alternative<nothing>(x) || std::holds_alternative<nothing>(y)) return false;
+    if (std::holds_alternative<everything>(x) || std::holds_alternative<everything>(y)) return true;
+    if (std::holds_alternative<lp_only>(x) || std::holds_alternative<lp_only>(y)) return lp_intersect(lp_set(a), lp_set(b));
+    return meets<K, true>(x, y);
 }
-bool flat_do_intersect_cgal(const flat& a, const flat& b) {
-    using K = CGAL::Exact_predicates_exact_constructions_kernel;
-    return meets<K, false>(to_cgal<K>(a), to_cgal<K>(b));
+
+bool flat_contains(const flat& a, const flat& b) {
+    int n = 0;
+    switch (b.kind) {
+    case flat::point: n = 1; break;
+    case flat::segment: n = 2; break;
+    case flat::triangle: n = 3; break;
+    case flat::tetrahedron: n = 4; break;
+    case flat::box: {
+        if (!(b.v[0] <= b.v[3] && b.v[1] <= b.v[4] && b.v[2] <= b.v[5])) throw std::logic_error("flat_contains: an inverted box");
+        for (int i = 0; i < 8; ++i) {
+            const flat p{flat::point, {b.v[(i & 1) ? 3 : 0], b.v[(i & 2) ? 4 : 1], b.v[(i & 4) ? 5 : 2]}};
+            if (!flat_intersect(a, p)) return false;
+        }
+        return true;
+    }
+    default: throw std::logic_error("flat_contains: an unbounded shape");
+    }
+    for (int i = 0; i < n; ++i) {
+        const flat p{flat::point, {b.v[3 * i], b.v[3 * i + 1], b.v[3 * i + 2]}};
+        if (!flat_intersect(a, p)) return false;
+    }
+    return true;
 }
-bool flat_intersect_epick(const flat& a, const flat& b) {
-    using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-    return meets<K, false>(to_cgal<K>(a), to_cgal<K>(b));
+// As a CGAL user would call it: do_intersect on the CGAL objects; a coplanar tetrahedron is the
+// union of its four faces (Triangle_3, or their own degenerate point sets), a flat box still an
+// Iso_cuboid_3.
+template <class K>
+bool user_meets(const flat& a, const flat& b) {
+    auto faces = [](const flat& t) {
+        const int idx[4][3] = {{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}};
+        std::array<flat, 4> f{};
+        for (int i = 0; i < 4; ++i) {
+            f[static_cast<unsigned>(i)].kind = flat::triangle;
+            for (int j = 0; j < 3; ++j)
+                for (int c = 0; c < 3; ++c) f[static_cast<unsigned>(i)].v[3 * j + c] = t.v[3 * idx[i][j] + c];
+        }
+        return f;
+    };
+    auto to_object = [](const flat& f) -> object<K> {
+        if (f.kind == flat::box && f.v[0] <= f.v[3] && f.v[1] <= f.v[4] && f.v[2] <= f.v[5])
+            return typename K::Iso_cuboid_3(typename K::Point_3(f.v[0], f.v[1], f.v[2]), typename K::Point_3(f.v[3], f.v[4], f.v[5]));
+        return to_cgal<K>(f);
+    };
+    const auto x = to_object(a);
+    if (std::holds_alternative<lp_only>(x)) {
+        for (const flat& f : faces(a))
+            if (user_meets<K>(f, b)) return true;
+        return false;
+    }
+    const auto y = to_object(b);
+    if (std::holds_alternative<lp_only>(y)) {
+        for (const flat& f : faces(b))
+            if (user_meets<K>(a, f)) return true;
+        return false;
+    }
+    return meets<K, false>(x, y);
 }
+
+bool flat_do_intersect_cgal(const flat& a, const flat& b) { return user_meets<CGAL::Exact_predicates_exact_constructions_kernel>(a, b); }
+bool flat_intersect_epick(const flat& a, const flat& b) { return user_meets<CGAL::Exact_predicates_inexact_constructions_kernel>(a, b); }
 
 } // namespace oracle

@@ -78,10 +78,18 @@ std::optional<bool> lp_intersect_verified(const convex_set& a, const convex_set&
 // normal is everything when its offset is 0 and empty otherwise. flat_intersect decides with
 // CGAL's do_intersect / has_on over Epeck (CGAL::intersection for a ray against a ray or a line,
 // see cgal_flat.cpp); flat_intersect_epick is CGAL's do_intersect over Epick (a peer, for timing).
+// Solids too: a tetrahedron (v: its four vertices; coplanar ones are their hull) and a box (v: min
+// then max; an inverted box is empty). A solid tetrahedron is CGAL's Tetrahedron_3 and a solid box
+// its Iso_cuboid_3; a coplanar tetrahedron or a flat box is decided by the exact LP oracle instead
+// (lp_intersect on the point sets), since CGAL's solid predicates assume full dimension.
 struct flat {
-    enum kind_t { point, segment, ray, line, plane, triangle } kind;
-    double v[9];
+    enum kind_t { point, segment, ray, line, plane, triangle, tetrahedron, box } kind;
+    double v[12];
 };
+// The same shape as the LP oracle's convex set (a plane with a zero normal has no such form).
+convex_set lp_set(const flat& f);
+// Is every point of b in a? (b a point, segment, triangle, tetrahedron or box: its vertices.)
+bool flat_contains(const flat& a, const flat& b);
 bool flat_intersect(const flat& a, const flat& b);
 bool flat_intersect_epick(const flat& a, const flat& b);
 // CGAL's do_intersect itself, also for the ray-ray and line-ray pairs where it is wrong (the

@@ -1,4 +1,5 @@
-// Cases for the pairs among points, lines, rays, segments, planes and triangles (the tests'
+// Cases for the pairs among points, lines, rays, segments, planes, triangles, tetrahedra and
+// boxes (the tests'
 // checks are in flat_checks.hpp). Include after testing.hpp and the CGAL oracle header.
 //
 // Near-degenerate: both shapes are built in small dyadic coordinates around one point X, in one
@@ -14,6 +15,7 @@
 // Random: coordinates in [-1, 1] at a random scale 2^-500..2^500, half of them in one plane
 // z = c (every shape, so pairs of lines can meet), unnudged.
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -46,6 +48,10 @@ inline incidence::segment3 realise(const incidence::segment3& s, transform& tr) 
 inline incidence::ray3 realise(const incidence::ray3& r, transform& tr) { return {moved(r.origin, tr), moved_dir(r.direction, tr)}; }
 inline incidence::line3 realise(const incidence::line3& l, transform& tr) { return {moved(l.origin, tr), moved_dir(l.direction, tr)}; }
 inline incidence::triangle3 realise(const incidence::triangle3& t, transform& tr) { return {moved(t.a, tr), moved(t.b, tr), moved(t.c, tr)}; }
+inline incidence::tetrahedron3 realise(const incidence::tetrahedron3& t, transform& tr) {
+    return {moved(t.a, tr), moved(t.b, tr), moved(t.c, tr), moved(t.d, tr)};
+}
+inline incidence::aabb3 realise(const incidence::aabb3& b, transform& tr) { return ordered(incidence::aabb3{moved(b.min, tr), moved(b.max, tr)}); }
 inline incidence::plane3 realise(const plane_proto& p, transform& tr) {
     const incidence::point3 x = moved(p.x, tr);
     transform unscaled = tr; // a normal is not scaled with the coordinates (n . x would overflow)
@@ -115,6 +121,36 @@ inline incidence::triangle3 triangle_at(rng& r, incidence::point3 X, incidence::
     }
 }
 
+// A tetrahedron a, a + e1, a + e2, a + e3 with X = a + w1 e1 + w2 e2 + w3 e3 at a vertex, an edge
+// point, a face point, inside, or just outside; e1 = d and e2 in a face with it when `contain`;
+// one in twelve is coplanar (e3 in the plane of e1 and e2).
+inline incidence::tetrahedron3 tetrahedron_at(rng& r, incidence::point3 X, incidence::vec3 d, bool contain) {
+    using incidence::vec3;
+    const vec3 e1 = contain || r.coin() ? d : small_dir(r), e2 = small_dir(r);
+    vec3 e3 = small_dir(r);
+    if (r.integer(0, 11) == 0) e3 = r.coin() ? e1 + e2 : e1 * 2.0 - e2 * 0.5;
+    static constexpr double w[][3] = {{0, 0, 0},      {1, 0, 0},         {0.5, 0, 0},     {0.5, 0.5, 0},  {0.25, 0.25, 0},
+                                      {0.25, 0.25, 0.5}, {0.25, 0.25, 0.25}, {-0.25, 0.5, 0}, {0.5, 0.5, 0.25}, {0.75, 0.5, 0}};
+    const auto& c = w[r.integer(0, 9)];
+    const incidence::point3 a = X - e1 * c[0] - e2 * c[1] - e3 * c[2];
+    incidence::point3 v[4] = {a, a + e1, a + e2, a + e3};
+    for (int i = 3; i > 0; --i) std::swap(v[i], v[r.integer(0, i)]); // any vertex order
+    return {v[0], v[1], v[2], v[3]};
+}
+// A box with X at a corner, an edge or face point, inside, or just outside; flat boxes (zero
+// width on an axis) included.
+inline incidence::aabb3 box_at(rng& r, incidence::point3 X) {
+    const double x[3] = {X.x, X.y, X.z};
+    double lo[3], hi[3];
+    for (int i = 0; i < 3; ++i) {
+        const double w = r.integer(0, 4) * 0.5;
+        static constexpr double s[] = {-1, 1, -1, 1, 0, 0.5, -1.5, 1.5};
+        const double c = x[i] - s[r.integer(0, 7)] * w;
+        lo[i] = c - w, hi[i] = c + w;
+    }
+    return {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
+}
+
 template <class S>
 typename proto_of<S>::type place(rng& r, incidence::point3 X, incidence::vec3 d, bool contain) {
     using namespace incidence;
@@ -123,6 +159,8 @@ typename proto_of<S>::type place(rng& r, incidence::point3 X, incidence::vec3 d,
     else if constexpr (std::is_same_v<S, ray3>) return ray_at<ray3>(r, X, d);
     else if constexpr (std::is_same_v<S, line3>) return line_at<line3>(r, X, d);
     else if constexpr (std::is_same_v<S, plane3>) return plane_at(r, X, d, contain);
+    else if constexpr (std::is_same_v<S, tetrahedron3>) return tetrahedron_at(r, X, d, contain);
+    else if constexpr (std::is_same_v<S, aabb3>) return box_at(r, X);
     else return triangle_at(r, X, d);
 }
 
@@ -221,7 +259,14 @@ typename proto_of<S>::type random_shape(rng& r, bool in_plane, double c) {
     else if constexpr (std::is_same_v<S, ray3>) return ray3{p(), v()};
     else if constexpr (std::is_same_v<S, line3>) return line3{p(), v()};
     else if constexpr (std::is_same_v<S, plane3>) return plane_proto{in_plane && r.coin() ? vec3{0, 0, 1} : v() + vec3{0, 0, r.uniform(-1, 1)}, p()};
-    else return triangle3{p(), p(), p()};
+    else if constexpr (std::is_same_v<S, tetrahedron3>) { // in the plane: a face in it
+        const point3 q0 = p(), q1 = p(), q2 = p();
+        return tetrahedron3{q0, q1, q2, point3{r.uniform(-1, 1), r.uniform(-1, 1), in_plane ? c + r.uniform(-1, 1) : r.uniform(-1, 1)}};
+    } else if constexpr (std::is_same_v<S, aabb3>) { // in the plane: a face in it
+        const point3 a = p(), b = p();
+        return aabb3{{std::min(a.x, b.x), std::min(a.y, b.y), in_plane ? a.z : std::min(a.z, b.z)},
+                     {std::max(a.x, b.x), std::max(a.y, b.y), in_plane ? a.z + r.uniform(0, 1) : std::max(a.z, b.z)}};
+    } else return triangle3{p(), p(), p()};
 }
 template <class A, class B>
 std::pair<A, B> flat_random(rng& r, bool any_scale = true) {
@@ -249,6 +294,8 @@ inline std::vector<incidence::ray3> same_set(const incidence::ray3& r) { return 
 inline std::vector<incidence::line3> same_set(const incidence::line3& l) { return {{l.origin, l.direction * -1.0}, {l.origin, l.direction * 2.0}}; }
 inline std::vector<incidence::plane3> same_set(const incidence::plane3& p) { return {{p.normal * -1.0, -p.offset}, {p.normal * 2.0, p.offset * 2.0}}; }
 inline std::vector<incidence::triangle3> same_set(const incidence::triangle3& t) { return {{t.b, t.c, t.a}, {t.a, t.c, t.b}}; }
+inline std::vector<incidence::tetrahedron3> same_set(const incidence::tetrahedron3& t) { return {{t.b, t.c, t.d, t.a}, {t.a, t.c, t.b, t.d}}; }
+inline std::vector<incidence::aabb3> same_set(const incidence::aabb3& b) { return {b}; }
 inline std::vector<incidence::point2> same_set(const incidence::point2& p) { return {p}; }
 inline std::vector<incidence::segment2> same_set(const incidence::segment2& s) { return {{s.b, s.a}}; }
 inline std::vector<incidence::ray2> same_set(const incidence::ray2& r) { return {{r.origin, 2.0 * r.direction}}; }
@@ -284,6 +331,16 @@ inline std::optional<incidence::triangle3> translated(const incidence::triangle3
     if (a && b && c) return incidence::triangle3{*a, *b, *c};
     return std::nullopt;
 }
+inline std::optional<incidence::tetrahedron3> translated(const incidence::tetrahedron3& t, incidence::vec3 v) {
+    const auto a = shifted(t.a, v), b = shifted(t.b, v), c = shifted(t.c, v), d = shifted(t.d, v);
+    if (a && b && c && d) return incidence::tetrahedron3{*a, *b, *c, *d};
+    return std::nullopt;
+}
+inline std::optional<incidence::aabb3> translated(const incidence::aabb3& b, incidence::vec3 v) {
+    const auto lo = shifted(b.min, v), hi = shifted(b.max, v);
+    if (lo && hi) return incidence::aabb3{*lo, *hi};
+    return std::nullopt;
+}
 // In the plane: by (v.x, v.y).
 inline std::optional<incidence::point2> translated(const incidence::point2& p, incidence::vec3 v) {
     incidence::point2 q;
@@ -315,6 +372,86 @@ inline std::optional<incidence::plane3> translated(const incidence::plane3& p, i
         o = next;
     }
     return incidence::plane3{p.normal, o};
+}
+
+// --- containment cases ----------------------------------------------------------------------
+// The outer shape a and an inner shape b whose vertices are points of a: exact combinations of
+// a's vertices with weights in quarters (mostly inside or on a face, an edge or a vertex; one
+// in eight with a weight of -1/4, just outside), then one scale and translation, nudged in half
+// of the cases.
+// A box inside a tetrahedron uses a corner tetrahedron (o, o + s e_x, o + s e_y, o + s e_z in
+// a signed axis order), where box corners can lie exactly on the slanted face.
+inline incidence::point3 combination(rng& r, const incidence::point3* v, int n) {
+    int w[4] = {0, 0, 0, 0}, left = 4;
+    for (int i = 0; i + 1 < n; ++i) {
+        w[i] = r.integer(0, left);
+        left -= w[i];
+    }
+    w[n - 1] = left;
+    if (r.integer(0, 7) == 0) { // move a quarter from one weight to another: outside when it was 0
+        const int i = r.integer(0, n - 1), j = (i + r.integer(1, n - 1)) % n;
+        w[i] -= 1, w[j] += 1;
+    }
+    incidence::point3 p{0, 0, 0};
+    for (int i = 0; i < n; ++i) p = p + (v[i] - incidence::point3{0, 0, 0}) * (w[i] * 0.25);
+    return p;
+}
+template <class A, class B>
+std::pair<A, B> inside_case(rng& r) {
+    using namespace incidence;
+    tetrahedron3 t;
+    aabb3 box;
+    if constexpr (std::is_same_v<A, tetrahedron3> && std::is_same_v<B, aabb3>) {
+        const point3 o = small_point(r);
+        const double s = r.integer(1, 8);
+        const double g[3] = {r.coin() ? s : -s, r.coin() ? s : -s, r.coin() ? s : -s};
+        t = {o, o + vec3{g[0], 0, 0}, o + vec3{0, g[1], 0}, o + vec3{0, 0, g[2]}};
+        // the box from o towards the tetrahedron, widths w_i with sum w_i / s about 1
+        double lo[3], hi[3];
+        int left = 4;
+        for (int i = 0; i < 3; ++i) {
+            const int q = i == 2 ? left + (r.integer(0, 5) == 0 ? 1 : 0) : r.integer(0, left);
+            left -= q;
+            const double w = q * 0.25 * s, from = (i == 0 ? o.x : (i == 1 ? o.y : o.z));
+            lo[i] = g[i] > 0 ? from : from - w;
+            hi[i] = g[i] > 0 ? from + w : from;
+        }
+        box = {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
+        transform tr = random_transform(r, r.coin(), true);
+        return {realise(t, tr), realise(box, tr)};
+    } else {
+        point3 v[4];
+        int n = 4;
+        if constexpr (std::is_same_v<A, aabb3>) {
+            box = box_at(r, small_point(r));
+            for (int i = 0; i < 4; ++i) v[i] = point3{(i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y, i == 3 ? box.max.z : box.min.z};
+        } else {
+            t = tetrahedron_at(r, small_point(r), small_dir(r), false);
+            v[0] = t.a, v[1] = t.b, v[2] = t.c, v[3] = t.d;
+        }
+        auto in = [&] {
+            if constexpr (std::is_same_v<A, aabb3>) { // a corner, edge or face point, inside, or a quarter out
+                const double lo[3] = {box.min.x, box.min.y, box.min.z}, hi[3] = {box.max.x, box.max.y, box.max.z};
+                double c[3];
+                for (int k = 0; k < 3; ++k) {
+                    const int q = r.integer(0, 4);
+                    c[k] = lo[k] + (hi[k] - lo[k]) * q * 0.25;
+                    if (r.integer(0, 15) == 0) c[k] += r.coin() ? 0.25 : -0.25;
+                }
+                return point3{c[0], c[1], c[2]};
+            } else {
+                return combination(r, v, n);
+            }
+        };
+        B b;
+        if constexpr (std::is_same_v<B, point3>) b = in();
+        else if constexpr (std::is_same_v<B, segment3>) b = {in(), in()};
+        else if constexpr (std::is_same_v<B, triangle3>) b = {in(), in(), in()};
+        else b = tetrahedron3{in(), in(), in(), in()};
+        transform tr = random_transform(r, r.coin(), true); // half of them exactly on the boundary
+        if constexpr (std::is_same_v<A, aabb3>) return {realise(box, tr), realise(b, tr)};
+        else return {realise(t, tr), realise(b, tr)};
+    }
 }
 
 } // namespace support

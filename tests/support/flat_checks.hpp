@@ -20,6 +20,8 @@ inline std::string shape_str(const incidence::segment2& s) { return "segment2 " 
 inline std::string shape_str(const incidence::ray2& r) { return "ray2 " + str(r.origin) + str(r.direction); }
 inline std::string shape_str(const incidence::line2& l) { return "line2 " + str(l.origin) + str(l.direction); }
 inline std::string shape_str(const incidence::triangle3& t) { return "triangle " + str(t.a) + str(t.b) + str(t.c); }
+inline std::string shape_str(const incidence::tetrahedron3& t) { return "tetrahedron " + str(t.a) + str(t.b) + str(t.c) + str(t.d); }
+inline std::string shape_str(const incidence::aabb3& b) { return "aabb " + str(b.min) + str(b.max); }
 
 // --- the checks every flat pair runs ---------------------------------------------------------
 // The oracle on `n` random and `n` near-degenerate cases, with every tier contract.
@@ -36,6 +38,45 @@ void flat_oracle(const std::string& name, long n, double approx_bound) {
     auto truth = [](const A& a, const B& b) { return flat_truth(a, b); };
     run_oracle((name + " random").c_str(), n, approx_bound, [](rng& r) { return flat_random<A, B>(r); }, truth, skip, describe);
     run_oracle((name + " near-degenerate").c_str(), n, approx_bound, [](rng& r) { return flat_near<A, B>(r); }, truth, skip, describe);
+}
+
+// contains(a, b) against the oracle (every vertex of b in a) on `n` random, `n` near-degenerate
+// and `n` inside cases (inside_case: b's vertices inside a, on its boundary or just outside), with every tier contract; the approximate tier's misses must lie within `approx_bound`.
+template <class A, class B>
+void flat_contains_oracle(const std::string& name, long n, double approx_bound) {
+    using namespace incidence;
+    rng r(seed() + 31);
+    tally t{name + " contains"};
+    long yes = 0;
+    for (long i = 0; i < 3 * n; ++i) {
+        const auto [a, b] = i % 3 == 2 ? inside_case<A, B>(r) : (i % 3 ? flat_near<A, B>(r) : flat_random<A, B>(r));
+        const bool truth = flat_contains_truth(a, b);
+        yes += truth;
+        ++t.n;
+        auto say = [&](const char* what, long& count) {
+            if (++count <= 5) std::printf("  contains: %s: %s %s\n", what, shape_str(a).c_str(), shape_str(b).c_str());
+        };
+        if (contains<exact>(a, b) != truth) say("exact disagrees", t.exact_wrong);
+        if (truth && !contains<conservative>(a, b)) say("conservative misses", t.conservative_violations);
+        if (!truth && contains<aggressive>(a, b)) say("aggressive false yes", t.aggressive_violations);
+        const certainty c = classify_contains(a, b);
+        if (c == certainty::uncertain) ++t.uncertain;
+        else if ((c == certainty::yes) != truth) say("classify wrong", t.classify_wrong);
+        if (contains<approximate>(a, b) != truth) {
+            ++t.approx_wrong;
+            support_margin::margin_kernel mk;
+            (void)pair::contains(mk, a, b);
+            if (mk.min_rel > approx_bound) say("approximate wrong outside its bound", t.approx_outside_bound);
+        }
+    }
+    t.print();
+    std::printf("[cases] %s contains: %ld of %ld contained\n", name.c_str(), yes, t.n);
+    CHECK(t.exact_wrong == 0);
+    CHECK(t.conservative_violations == 0);
+    CHECK(t.aggressive_violations == 0);
+    CHECK(t.classify_wrong == 0);
+    CHECK(t.approx_outside_bound == 0);
+    CHECK(yes > 0);
 }
 
 // The same answer for every rewrite of either shape and for exact translations of both.

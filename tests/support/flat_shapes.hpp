@@ -1,4 +1,5 @@
-// Each flat shape (point, segment, ray, line, plane, triangle; and point2, segment2, ray2, line2 in
+// Each flat shape (point, segment, ray, line, plane, triangle, and the solids tetrahedron and box;
+// and point2, segment2, ray2, line2 in
 // the plane) as the oracle's oracle::flat (flat2), and
 // the CGAL Epeck answer for a pair of them (tests/oracle/cgal_flat.cpp). Include after
 // `import incidence;` and the CGAL oracle header.
@@ -9,7 +10,8 @@ namespace support {
 
 template <class S>
 concept flat_shape = std::is_same_v<S, incidence::point3> || std::is_same_v<S, incidence::segment3> || std::is_same_v<S, incidence::ray3> ||
-                     std::is_same_v<S, incidence::line3> || std::is_same_v<S, incidence::plane3> || std::is_same_v<S, incidence::triangle3>;
+                     std::is_same_v<S, incidence::line3> || std::is_same_v<S, incidence::plane3> || std::is_same_v<S, incidence::triangle3> ||
+                     std::is_same_v<S, incidence::tetrahedron3> || std::is_same_v<S, incidence::aabb3>;
 
 inline oracle::flat to_flat(const incidence::point3& p) { return {oracle::flat::point, {p.x, p.y, p.z}}; }
 inline oracle::flat to_flat(const incidence::segment3& s) {
@@ -25,6 +27,10 @@ inline oracle::flat to_flat(const incidence::plane3& p) { return {oracle::flat::
 inline oracle::flat to_flat(const incidence::triangle3& t) {
     return {oracle::flat::triangle, {t.a.x, t.a.y, t.a.z, t.b.x, t.b.y, t.b.z, t.c.x, t.c.y, t.c.z}};
 }
+inline oracle::flat to_flat(const incidence::tetrahedron3& t) {
+    return {oracle::flat::tetrahedron, {t.a.x, t.a.y, t.a.z, t.b.x, t.b.y, t.b.z, t.c.x, t.c.y, t.c.z, t.d.x, t.d.y, t.d.z}};
+}
+inline oracle::flat to_flat(const incidence::aabb3& b) { return {oracle::flat::box, {b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z}}; }
 template <class S>
 concept flat2_shape = std::is_same_v<S, incidence::point2> || std::is_same_v<S, incidence::segment2> ||
                       std::is_same_v<S, incidence::ray2> || std::is_same_v<S, incidence::line2>;
@@ -36,5 +42,7 @@ inline oracle::flat2 to_flat(const incidence::line2& l) { return {oracle::flat2:
 
 template <class A, class B>
 bool flat_truth(const A& a, const B& b) { return oracle::flat_intersect(to_flat(a), to_flat(b)); }
+template <class A, class B>
+bool flat_contains_truth(const A& a, const B& b) { return oracle::flat_contains(to_flat(a), to_flat(b)); }
 
 } // namespace support

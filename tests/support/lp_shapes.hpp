@@ -25,6 +25,7 @@ inline oracle::convex_set lp(const incidence::segment3& g) { return {{a3(g.a), a
 inline oracle::convex_set lp(const incidence::triangle3& t) { return {{a3(t.a), a3(t.b), a3(t.c)}, {}, false, {}, 0}; }
 inline oracle::convex_set lp(const incidence::ray3& g) { return {{a3(g.origin)}, {{a3(g.direction), true, false, 0, 0}}, false, {}, 0}; }
 inline oracle::convex_set lp(const incidence::line3& g) { return {{a3(g.origin)}, {{a3(g.direction), false, false, 0, 0}}, false, {}, 0}; }
+inline oracle::convex_set lp(const incidence::tetrahedron3& t) { return {{a3(t.a), a3(t.b), a3(t.c), a3(t.d)}, {}, false, {}, 0}; }
 inline oracle::convex_set lp(const incidence::plane3& p) { return {{}, {}, true, a3(p.normal), p.offset}; }
 
 

@@ -22,6 +22,7 @@ using incidence::plane3;
 using incidence::ray3;
 using incidence::segment3;
 using incidence::triangle3;
+using incidence::tetrahedron3;
 
 
 inline std::array<vec3, 3> near_frame(rng& r) {
@@ -248,6 +249,27 @@ struct obb_case<incidence::obb3, incidence::plane3> {
         const vec3 n{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)};
         const point3 q = random_point(r, tr);
         return {random_obb(r, tr), plane3{n, n.x * q.x + n.y * q.y + n.z * q.z}};
+}
+};
+
+template <>
+struct obb_case<incidence::obb3, incidence::tetrahedron3> {
+    static std::pair<incidence::obb3, incidence::tetrahedron3> near(rng& r, bool any_scale = true) {
+        const auto [o, p, tr] = near_start(r, any_scale);
+        // p at a vertex, an edge or face point, inside or just outside the tetrahedron
+        const vec3 e1 = small_vec(r), e2 = small_vec(r);
+        vec3 e3 = small_vec(r);
+        if (r.integer(0, 11) == 0) e3 = vec3{e1.x + e2.x, e1.y + e2.y, e1.z + e2.z}; // coplanar
+        static constexpr double w[][3] = {{0, 0, 0}, {0.5, 0, 0}, {0.25, 0.25, 0}, {0.25, 0.25, 0.25}, {-0.25, 0.5, 0}, {0.5, 0.5, 0.25}};
+        const auto& c = w[r.integer(0, 5)];
+        const point3 a{p.x - c[0] * e1.x - c[1] * e2.x - c[2] * e3.x, p.y - c[0] * e1.y - c[1] * e2.y - c[2] * e3.y,
+                       p.z - c[0] * e1.z - c[1] * e2.z - c[2] * e3.z};
+        auto at = [&](vec3 e) { return moved(tr, point3{a.x + e.x, a.y + e.y, a.z + e.z}); };
+        return {moved(tr, o), tetrahedron3{moved(tr, a), at(e1), at(e2), at(e3)}};
+}
+    static std::pair<incidence::obb3, incidence::tetrahedron3> random(rng& r, bool any_scale = true) {
+        const auto tr = random_transform(r, false, any_scale);
+        return {random_obb(r, tr), tetrahedron3{random_point(r, tr), random_point(r, tr), random_point(r, tr), random_point(r, tr)}};
 }
 };
 

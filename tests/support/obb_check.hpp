@@ -14,6 +14,7 @@ inline std::string str(const incidence::segment3& s) { return "segment " + str(s
 inline std::string str(const incidence::ray3& s) { return "ray " + str(s.origin) + str(s.direction); }
 inline std::string str(const incidence::line3& s) { return "line " + str(s.origin) + str(s.direction); }
 inline std::string str(const incidence::triangle3& t) { return "triangle " + str(t.a) + str(t.b) + str(t.c); }
+inline std::string str(const incidence::tetrahedron3& t) { return "tetrahedron " + str(t.a) + str(t.b) + str(t.c) + str(t.d); }
 inline std::string str(const incidence::plane3& p) { return "plane " + str(p.normal) + " " + hex(p.offset); }
 
 // The same box written differently: one axis negated, the axes rotated (with their extents).

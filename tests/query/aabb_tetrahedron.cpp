@@ -1,0 +1,44 @@
+// aabb3 x tetrahedron3: fixtures (a box corner on a face, one ulp off it, the box inside, the
+// tetrahedron inside, flat boxes, coplanar tetrahedra, NaN and inverted boxes); the CGAL Epeck
+// oracle (Iso_cuboid_3 and Tetrahedron_3; the exact LP for flat boxes and coplanar tetrahedra) on
+// 20,000 random and 20,000 near-degenerate cases (a box corner, edge or face point at a vertex,
+// an edge or face point of the tetrahedron, inside or just outside; faces in one plane; then a
+// random exact-or-nudged scale 2^-500..2^500 and translation); both argument orders, rotated and
+// reflected vertex orders, exact translations.
+#include <catch2/catch_test_macros.hpp>
+#include "../oracle/cgal_oracle.hpp"
+import incidence;
+#include "../support/testing.hpp"
+#include "../support/check.hpp"
+#include "../support/flat_checks.hpp"
+
+using namespace incidence;
+
+namespace {
+constexpr double approx_bound = 0x1p-40; // stated in modules/query/aabb_tetrahedron.cppm
+const tetrahedron3 T{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+} // namespace
+
+TEST_CASE("aabb_tetrahedron: fixtures", "[aabb_tetrahedron]") {
+    CHECK(intersects(aabb3{{0.5, 0.5, -1}, {2, 2, 1}}, T));                     // a box edge through an edge point
+    CHECK_FALSE(intersects(aabb3{{0.5, 0x1.0000000000001p-1, -1}, {2, 2, 1}}, T));
+    CHECK_FALSE(intersects(aabb3{{1, 1, 1}, {2, 2, 2}}, T));
+    CHECK(intersects(aabb3{{0.25, 0.25, 0.5}, {2, 2, 2}}, T));                  // a corner on the slanted face
+    CHECK_FALSE(intersects(aabb3{{0.25, 0.25, 0x1.0000000000001p-1}, {2, 2, 2}}, T));
+    CHECK(intersects(aabb3{{0.1, 0.1, 0.1}, {0.2, 0.2, 0.2}}, T));              // inside
+    CHECK(intersects(T, aabb3{{-1, -1, -1}, {2, 2, 2}}));                       // around it
+    CHECK(intersects(aabb3{{0.2, 0.2, 0}, {3, 3, 0}}, T));                      // a flat box on the face z = 0
+    CHECK_FALSE(intersects(aabb3{{0.2, 0.2, -0x1p-1074}, {3, 3, -0x1p-1074}}, T));
+    const tetrahedron3 flat{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {1, 1, 0}};
+    CHECK(intersects(aabb3{{1, 1, -1}, {2, 2, 1}}, flat));
+    CHECK_FALSE(intersects(aabb3{{1, 0x1.0000000000001p0, -1}, {2, 2, 1}}, flat));
+    CHECK_FALSE(intersects(aabb3{{-1, -1, -1}, {2, 2, 2}}, tetrahedron3{T.a, T.b, T.c, {0, 0, std::nan("")}}));
+    CHECK_FALSE(intersects(aabb3{{-1, -1, -1}, {2, 2, HUGE_VAL}}, T));
+    CHECK_FALSE(intersects(aabb3{{2, 2, 2}, {-1, -1, -1}}, T));                 // inverted: empty
+}
+TEST_CASE("aabb_tetrahedron: oracle, random and near-degenerate", "[aabb_tetrahedron][oracle]") {
+    support::flat_oracle<aabb3, tetrahedron3>("aabb_tetrahedron", support::cases(20000), approx_bound);
+}
+TEST_CASE("aabb_tetrahedron: rewrites of either shape and exact translations give the same answer", "[aabb_tetrahedron]") {
+    support::flat_symmetries<aabb3, tetrahedron3>("aabb_tetrahedron", support::cases(20000));
+}
