@@ -237,6 +237,7 @@ void register_all() {
             (void)obb_tiers<line3, obb3>("line_obb", near);
             (void)obb_tiers<obb3, triangle3>("obb_triangle", near);
             (void)obb_tiers<obb3, plane3>("obb_plane", near);
+            (void)obb_tiers<obb3, tetrahedron3>("obb_tetrahedron", near);
         }
         flat_tiers<segment3, segment3>("segment_segment", near);
         flat_tiers<line3, line3>("line_line", near);
@@ -254,6 +255,14 @@ void register_all() {
         flat_tiers<line3, plane3>("line_plane", near);
         flat_tiers<plane3, ray3>("plane_ray", near);
         flat_tiers<plane3, plane3>("plane_plane", near);
+        flat_tiers<point3, tetrahedron3>("point_tetrahedron", near);
+        flat_tiers<segment3, tetrahedron3>("segment_tetrahedron", near);
+        flat_tiers<ray3, tetrahedron3>("ray_tetrahedron", near);
+        flat_tiers<line3, tetrahedron3>("line_tetrahedron", near);
+        flat_tiers<plane3, tetrahedron3>("plane_tetrahedron", near);
+        flat_tiers<tetrahedron3, triangle3>("tetrahedron_triangle", near);
+        flat_tiers<tetrahedron3, tetrahedron3>("tetrahedron_tetrahedron", near);
+        flat_tiers<aabb3, tetrahedron3>("aabb_tetrahedron", near);
         flat_tiers<segment2, segment2>("segment2_segment2", near);
         flat_tiers<line2, line2>("line2_line2", near);
         flat_tiers<line2, point2>("line2_point2", near);

@@ -76,6 +76,21 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
         every_tier(pl, ray, yes);
         every_tier(pl, pl, yes);
         n += 16 * 5;
+        // the tetrahedron pairs, and containment
+        const tetrahedron3 te{p(), p(), p(), p()};
+        const obb3 ob{p(), {v(), v(), v()}, {special(r), special(r), special(r)}};
+        every_tier(q, te, yes);
+        every_tier(seg, te, yes);
+        every_tier(te, ray, yes);
+        every_tier(line, te, yes);
+        every_tier(pl, te, yes);
+        every_tier(te, t, yes);
+        every_tier(te, te, yes);
+        every_tier(b, te, yes);
+        every_tier(ob, te, yes);
+        yes += contains(te, q) + contains(te, seg) + contains(te, t) + contains(te, te) + contains(te, b) + contains(b, te);
+        yes += contains<approximate>(te, te) + contains<conservative>(te, b) + contains<aggressive>(b, te);
+        n += 9 * 5 + 9;
         // in the plane
         auto p2 = [&] { return point2{special(r), special(r)}; };
         auto v2 = [&] { return vec2{special(r), special(r)}; };
@@ -108,5 +123,11 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
     CHECK_FALSE(intersects(line2{{0, 0}, {inf_, 1}}, point2{0, 0}));
     CHECK_FALSE(intersects(line3{{0, 0, 0}, {inf_, 0, 0}}, plane3{{1, 0, 0}, 1}));
     CHECK_FALSE(intersects(plane3{{0, 0, 0}, nan_}, plane3{{0, 0, 1}, 0}));
+    const tetrahedron3 unit{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    CHECK_FALSE(intersects(point3{0.25, 0.25, 0.25}, tetrahedron3{unit.a, unit.b, unit.c, {0, 0, nan_}}));
+    CHECK_FALSE(intersects(aabb3{{-1, -1, -1}, {inf_, 1, 1}}, unit));
+    CHECK_FALSE(intersects(segment3{{0.1, 0.1, 0.1}, {nan_, 0, 0}}, unit)); // one end inside, the other unread
+    CHECK_FALSE(contains(unit, segment3{{0.1, 0.1, 0.1}, {inf_, 0, 0}}));
+    CHECK_FALSE(contains(aabb3{{-inf_, -1, -1}, {1, 1, 1}}, unit));
     CHECK(classify(line3{{nan_, 0, 0}, {1, 0, 0}}, line3{{0, 0, 0}, {0, 1, 0}}) == certainty::uncertain);
 }

@@ -123,6 +123,25 @@ static_assert(intersects(line3{{0, 0, 0}, {1, 0, tiny}}, plane3{{0, 0, 1}, 2}));
 static_assert(!intersects(plane3{{0, 0, 1}, 2}, ray3{{0, 0, 0}, {1, 1, -1}}));      // heads away
 static_assert(intersects(plane3{{0, 0, 1}, 2}, plane3{{0, 0, -3}, -6}));           // the same plane
 static_assert(!intersects(plane3{{0, 0, 1}, 2}, plane3{{0, 0, 3}, 0x1.8000000000001p2}));
+// tetrahedra (the unit corner tetrahedron Q): every pair, and containment
+constexpr tetrahedron3 Q{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+static_assert(intersects(point3{0.5, 0.25, 0.25}, Q) && !intersects(point3{0.5, 0.25, 0x1.0000000000001p-2}, Q));
+static_assert(intersects(segment3{{0.5, 0.5, -1}, {0.5, 0.5, 1}}, Q));
+static_assert(!intersects(segment3{{0.5, 0x1.0000000000001p-1, -1}, {0.5, 0x1.0000000000001p-1, 1}}, Q));
+static_assert(intersects(Q, ray3{{2, 0, 0}, {-1, 0, 0}}) && !intersects(Q, ray3{{2, 0, 0}, {1, 0, 0}}));
+static_assert(intersects(line3{{0, 0, 1}, {1, 1, 0}}, Q) && !intersects(line3{{0, 0, 0x1.0000000000001p0}, {1, 1, 0}}, Q));
+static_assert(intersects(plane3{{0, 0, 1}, 1}, Q) && !intersects(plane3{{0, 0, 1}, 0x1.0000000000001p0}, Q));
+static_assert(intersects(Q, triangle3{{-5, -5, 0.5}, {5, -5, 0.5}, {0, 5, 0.5}}));      // cuts it, no vertex inside
+static_assert(!intersects(Q, triangle3{{-1, -1, -tiny}, {3, -1, -tiny}, {-1, 3, -tiny}}));
+static_assert(intersects(Q, tetrahedron3{{1, 0, 0}, {2, 0, 0}, {1, 1, 0}, {1, 0, 1}}));  // a shared vertex
+static_assert(!intersects(Q, tetrahedron3{{0x1.0000000000001p0, 0, 0}, {2, 0, 0}, {1, 1, 0}, {1, 0, 1}}));
+static_assert(intersects(aabb3{{0.25, 0.25, 0.5}, {2, 2, 2}}, Q) && !intersects(aabb3{{0.25, 0.25, 0x1.0000000000001p-1}, {2, 2, 2}}, Q));
+static_assert(intersects(obb3{{2, 0, 0}, {vec3{1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1}}, {1, 1, 1}}, Q));
+static_assert(intersects<conservative>(Q, point3{0.25, 0.25, 0.25}) && !intersects<aggressive>(Q, point3{2, 2, 2}));
+static_assert(contains(Q, segment3{{0, 0, 0}, {0.5, 0.25, 0.25}}) && !contains(Q, segment3{{0, 0, 0}, {0.5, 0.5, 0.5}}));
+static_assert(contains(aabb3{{0, 0, 0}, {1, 1, 1}}, Q) && contains(Q, aabb3{{0, 0, 0}, {0.25, 0.25, 0.5}}));
+static_assert(tetrahedron3{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {1, 1, 0}}.is_degenerate() && !Q.is_degenerate());
+static_assert(!tetrahedron3::make(Q.a, Q.b, Q.c, point3{1, 1, 0}).has_value() && tetrahedron3::make(Q.a, Q.b, Q.c, Q.d).has_value());
 // the same in the plane
 static_assert(intersects(segment2{{0, 0}, {2, 0}}, segment2{{2, 0}, {3, 5}}));
 static_assert(!intersects(segment2{{0, 0}, {2, 0}}, segment2{{0x1.0000000000001p1, 0}, {3, 0}}));

@@ -77,6 +77,7 @@ std::string shape_name(const triangle3*) { return "triangle3"; }
 std::string shape_name(const line3*) { return "line3"; }
 std::string shape_name(const plane3*) { return "plane3"; }
 std::string shape_name(const obb3*) { return "obb3"; }
+std::string shape_name(const tetrahedron3*) { return "tetrahedron3"; }
 std::string shape_name(const point2*) { return "point2"; }
 std::string shape_name(const segment2*) { return "segment2"; }
 std::string shape_name(const ray2*) { return "ray2"; }

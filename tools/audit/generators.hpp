@@ -45,6 +45,7 @@ inline line3 moved(line3 l, vec3 v) { return {l.origin + v, l.direction}; }
 inline plane3 moved(plane3 p, vec3 v) { return {p.normal, p.offset + dot(p.normal, v)}; }
 inline triangle3 moved(triangle3 t, vec3 v) { return {t.a + v, t.b + v, t.c + v}; }
 inline obb3 moved(obb3 b, vec3 v) { return {b.center + v, b.axes, b.half_extents}; }
+inline tetrahedron3 moved(tetrahedron3 t, vec3 v) { return {t.a + v, t.b + v, t.c + v, t.d + v}; }
 // The plane's shapes move by (v.x, v.y).
 inline point2 moved(point2 p, vec3 v) { return {p.x + v.x, p.y + v.y}; }
 inline segment2 moved(segment2 s, vec3 v) { return {moved(s.a, v), moved(s.b, v)}; }
@@ -424,9 +425,25 @@ struct near_boundary<obb3, plane3> {
 // integer point X, each with X on its own boundary (a segment's end, a ray's origin or a point it
 // is aimed at, a line through it, a plane through it, a triangle's vertex or edge point), so the
 // pair touches exactly at X; a move of 2^-k takes them apart (or, for a plane, across).
+// A tetrahedron has X at a vertex, an edge point or a face point (a box: at a corner, an edge or
+// face point), so the other shape passes through its boundary there.
 template <class S>
 concept flat_shape = std::is_same_v<S, point3> || std::is_same_v<S, segment3> || std::is_same_v<S, ray3> ||
-                     std::is_same_v<S, line3> || std::is_same_v<S, plane3> || std::is_same_v<S, triangle3>;
+                     std::is_same_v<S, line3> || std::is_same_v<S, plane3> || std::is_same_v<S, triangle3> ||
+                     std::is_same_v<S, tetrahedron3>;
+inline tetrahedron3 int_tetrahedron(rng& r) {
+    for (;;) {
+        const point3 a = int_point(r, 400);
+        const tetrahedron3 t{a, a + int_vec(r, 400), a + int_vec(r, 400), a + int_vec(r, 400)};
+        if (std::fabs(dot(cross(t.b - t.a, t.c - t.a), t.d - t.a)) > 1e6) return t;
+    }
+}
+inline point3 boundary_point(const tetrahedron3& t, rng& r) {
+    const triangle3 f = t.face(r.integer(0, 3));
+    const int w = r.integer(0, 2);
+    if (w == 0) return boundary_point(f, r);                     // a vertex or an edge point
+    return f.a + (f.b - f.a) * 0.25 + (f.c - f.a) * (w * 0.25); // inside the face
+}
 template <class S>
 S through(rng& r, point3 X) {
     const vec3 d = int_vec(r, 300);
@@ -437,6 +454,9 @@ S through(rng& r, point3 X) {
     else if constexpr (std::is_same_v<S, plane3>) {
         const vec3 n = int_vec(r, 6);
         return plane3{n, dot(n, X - point3{0, 0, 0})};
+    } else if constexpr (std::is_same_v<S, tetrahedron3>) {
+        const tetrahedron3 t = int_tetrahedron(r);
+        return moved(t, X - boundary_point(t, r));
     } else {
         const triangle3 t = int_triangle(r);
         return moved(t, X - boundary_point(t, r));
@@ -470,6 +490,23 @@ struct near_boundary<A, B> {
         const point3 X = int_point(r, 400);
         const A a = through<A>(r, X);
         return {a, through<B>(r, X)};
+    }
+};
+
+template <>
+struct near_boundary<aabb3, tetrahedron3> {
+    static std::pair<aabb3, tetrahedron3> touching(rng& r) {
+        const auto [b, p] = near_boundary<aabb3, point3>::touching(r);
+        const tetrahedron3 t = int_tetrahedron(r);
+        return {b, moved(t, p - boundary_point(t, r))};
+    }
+};
+template <>
+struct near_boundary<obb3, tetrahedron3> {
+    static std::pair<obb3, tetrahedron3> touching(rng& r) {
+        const auto [b, p] = near_boundary<obb3, point3>::touching(r);
+        const tetrahedron3 t = int_tetrahedron(r);
+        return {b, moved(t, p - boundary_point(t, r))};
     }
 };
 

@@ -1,0 +1,128 @@
+// The tetrahedron pairs: a tetrahedron against a point, segment, ray, line, plane, triangle,
+// box, OBB or tetrahedron, and contains(tetrahedron, point | segment | triangle | box |
+// tetrahedron) and contains(box, tetrahedron). Byte 0 picks the second shape's kind (mod 9);
+// then 12 doubles for the tetrahedron and 15 for the other shape (it reads the ones it needs: a
+// point 3, a segment, ray or line 6, a plane 4, a triangle 9, a box 6 (min, max), an OBB 15
+// (centre, axes, extents), a tetrahedron 12). Differential against CGAL Epeck (oracle::flat:
+// Tetrahedron_3, Iso_cuboid_3, the exact LP for coplanar tetrahedra and flat boxes) and the LP
+// for the OBB: the exact tier agrees, conservative never misses, aggressive never lies, classify
+// is never wrong, both argument orders agree; on NaN or infinite input every tier must finish
+// and the exact tier says no. Any finding aborts.
+#include "../tests/oracle/cgal_oracle.hpp"
+#include "replay.hpp"
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <optional>
+#include <stdexcept>
+import incidence;
+#include "contracts.hpp"
+#include "../tests/support/flat_shapes.hpp"
+#include "../tests/support/lp_shapes.hpp"
+
+using namespace incidence;
+
+namespace {
+constexpr int used[] = {3, 6, 6, 6, 4, 9, 6, 15, 12};
+
+template <class F>
+void with_shape(int kind, const double* v, F f) {
+    const point3 p{v[0], v[1], v[2]}, q{v[3], v[4], v[5]}, s{v[6], v[7], v[8]}, t{v[9], v[10], v[11]};
+    switch (kind) {
+    case 0: f(p); break;
+    case 1: f(segment3{p, q}); break;
+    case 2: f(ray3{p, {v[3], v[4], v[5]}}); break;
+    case 3: f(line3{p, {v[3], v[4], v[5]}}); break;
+    case 4: f(plane3{{v[0], v[1], v[2]}, v[3]}); break;
+    case 5: f(triangle3{p, q, s}); break;
+    case 6: f(aabb3{p, q}); break; // may be inverted: empty
+    case 7: f(obb3{p, {vec3{v[3], v[4], v[5]}, vec3{v[6], v[7], v[8]}, vec3{v[9], v[10], v[11]}}, {v[12], v[13], v[14]}}); break;
+    default: f(tetrahedron3{p, q, s, t}); break;
+    }
+}
+
+// The oracle's answer, or nothing when it declines (the LP's certificate check refuses some
+// inputs spanning the whole exponent range at once; those only check that nothing crashes).
+template <class B>
+std::optional<bool> truth(const tetrahedron3& a, const B& b) {
+    if constexpr (std::is_same_v<B, obb3>) {
+        return oracle::lp_intersect_verified(support::lp(a), support::lp(b));
+    } else {
+        try {
+            return support::flat_truth(a, b);
+        } catch (const std::runtime_error&) {
+            return std::nullopt;
+        }
+    }
+}
+template <class A, class B>
+std::optional<bool> contains_truth(const A& a, const B& b) {
+    try {
+        return support::flat_contains_truth(a, b);
+    } catch (const std::runtime_error&) {
+        return std::nullopt;
+    }
+}
+template <class A, class B>
+void contains_contracts(const A& a, const B& b, bool finite) {
+    (void)contains<approximate>(a, b);
+    (void)classify_contains(a, b);
+    const bool e = contains<exact>(a, b);
+    if (!finite) {
+        if (e) std::abort();
+        return;
+    }
+    const auto t = contains_truth(a, b);
+    if (!t) return;
+    if (e != *t) std::abort();
+    if (*t && !contains<conservative>(a, b)) std::abort();
+    if (!*t && contains<aggressive>(a, b)) std::abort();
+    const certainty c = classify_contains(a, b);
+    if (c != certainty::uncertain && (c == certainty::yes) != *t) std::abort();
+}
+
+template <class B>
+void check(const tetrahedron3& a, const B& b, bool finite) {
+    (void)intersects<approximate>(a, b);
+    (void)intersects<conservative>(b, a);
+    (void)intersects<aggressive>(a, b);
+    (void)classify(b, a);
+    if constexpr (requires { contains(a, b); }) {
+        // an inverted box is no set the oracle can take: only the empty answer is checked
+        bool ordered = true;
+        if constexpr (std::is_same_v<B, aabb3>) ordered = b.min.x <= b.max.x && b.min.y <= b.max.y && b.min.z <= b.max.z;
+        if (ordered) contains_contracts(a, b, finite);
+        else if (contains(a, b)) std::abort();
+    }
+    if constexpr (std::is_same_v<B, aabb3>) {
+        const bool ordered = b.min.x <= b.max.x && b.min.y <= b.max.y && b.min.z <= b.max.z;
+        if (ordered) contains_contracts(b, a, finite);
+        else if (contains(b, a)) std::abort();
+    }
+    if (!finite) {
+        if (intersects<exact>(a, b)) std::abort(); // NaN or infinite input: no
+        return;
+    }
+    if constexpr (std::is_same_v<B, obb3>) {
+        // the LP takes extents as given: a negative one is an empty box, which the library says too
+        if (!(b.half_extents[0] >= 0 && b.half_extents[1] >= 0 && b.half_extents[2] >= 0)) {
+            if (intersects(a, b)) std::abort();
+            return;
+        }
+    }
+    if (const auto t = truth(a, b)) contracts(a, b, *t);
+}
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    if (size < 1) return 0;
+    double v[27] = {};
+    std::memcpy(v, data + 1, size - 1 < sizeof v ? size - 1 : sizeof v);
+    const int kb = data[0] % 9;
+    bool finite = true;
+    for (int i = 0; i < 12; ++i) finite = finite && std::isfinite(v[i]);
+    for (int i = 0; i < used[kb]; ++i) finite = finite && std::isfinite(v[12 + i]);
+    const tetrahedron3 a{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}, {v[6], v[7], v[8]}, {v[9], v[10], v[11]}};
+    with_shape(kb, v + 12, [&](const auto& b) { check(a, b, finite); });
+    return 0;
+}
