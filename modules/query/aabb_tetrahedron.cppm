@@ -1,8 +1,10 @@
 // aabb3 against tetrahedron3 (closed box; closed solid tetrahedron, coplanar vertices give their
 // hull), contains(box, tetrahedron) and contains(tetrahedron, box).
 // Semantics: touching at a vertex, along an edge or on a face counts.
-// Method (exact tiers): a box corner inside the solid says yes, all eight strictly beyond one face
-// plane say no (orient3d signs, degree 3); otherwise the box meets the tetrahedron iff it meets
+// Method (exact tiers): the box's three face normals first (all four vertices beyond one box
+// face: no; a vertex in the box: yes; coordinate comparisons), then a box corner inside the
+// solid says yes, all eight strictly beyond one face plane say no (orient3d signs, degree 3);
+// otherwise the box meets the tetrahedron iff it meets
 // one of its four faces (the 13-axis aabb_triangle test), since it cannot then lie inside.
 // contains: every vertex of the inner shape inside the outer one (coordinate comparisons for the
 // box, orient3d signs for the tetrahedron).
@@ -36,6 +38,16 @@ struct box_corners {
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const aabb3& b, const tetrahedron3& t) {
     if (!well_formed_finite(b) || !finite(t)) return false;
+    // The box's face normals first: coordinate comparisons, exact in every tier.
+    const point3 v[4] = {t.a, t.b, t.c, t.d};
+    auto at = [](const point3& p, int i) { return i == 0 ? p.x : (i == 1 ? p.y : p.z); };
+    for (int i = 0; i < 3; ++i) {
+        const double lo = at(b.min, i), hi = at(b.max, i);
+        if (at(v[0], i) > hi && at(v[1], i) > hi && at(v[2], i) > hi && at(v[3], i) > hi) return false;
+        if (at(v[0], i) < lo && at(v[1], i) < lo && at(v[2], i) < lo && at(v[3], i) < lo) return false;
+    }
+    for (const point3& p : v)
+        if (b.min.x <= p.x && p.x <= b.max.x && b.min.y <= p.y && p.y <= b.max.y && b.min.z <= p.z && p.z <= b.max.z) return true;
     const box_corners c(b);
     return tetra::tetrahedron_meets(k, t, [&](const triangle3& face) { return intersects(k, b, face); }, c.p, 8, true);
 }

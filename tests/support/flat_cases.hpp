@@ -13,7 +13,8 @@
 //   coplanar  the second shape lies in the first one's plane (a line in a triangle's plane, two
 //             triangles in one plane).
 // Random: coordinates in [-1, 1] at a random scale 2^-500..2^500, half of them in one plane
-// z = c (every shape, so pairs of lines can meet), unnudged.
+// z = c (every shape but a tetrahedron, so pairs of lines can meet; a box then has a face in
+// it), unnudged.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -259,9 +260,10 @@ typename proto_of<S>::type random_shape(rng& r, bool in_plane, double c) {
     else if constexpr (std::is_same_v<S, ray3>) return ray3{p(), v()};
     else if constexpr (std::is_same_v<S, line3>) return line3{p(), v()};
     else if constexpr (std::is_same_v<S, plane3>) return plane_proto{in_plane && r.coin() ? vec3{0, 0, 1} : v() + vec3{0, 0, r.uniform(-1, 1)}, p()};
-    else if constexpr (std::is_same_v<S, tetrahedron3>) { // in the plane: a face in it
-        const point3 q0 = p(), q1 = p(), q2 = p();
-        return tetrahedron3{q0, q1, q2, point3{r.uniform(-1, 1), r.uniform(-1, 1), in_plane ? c + r.uniform(-1, 1) : r.uniform(-1, 1)}};
+    else if constexpr (std::is_same_v<S, tetrahedron3>) { // in general position: faces in a common plane are the near cases
+        auto q = [&] { return point3{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)}; };
+        const point3 q0 = q(), q1 = q(), q2 = q();
+        return tetrahedron3{q0, q1, q2, q()};
     } else if constexpr (std::is_same_v<S, aabb3>) { // in the plane: a face in it
         const point3 a = p(), b = p();
         return aabb3{{std::min(a.x, b.x), std::min(a.y, b.y), in_plane ? a.z : std::min(a.z, b.z)},
