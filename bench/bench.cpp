@@ -17,6 +17,7 @@ import incidence;
 #include "../tests/support/testing.hpp"
 #include "../tests/support/obb_cases.hpp"
 #include "../tests/support/flat_cases.hpp"
+#include "../tests/support/mesh_cases.hpp"
 
 using namespace incidence;
 
@@ -211,6 +212,29 @@ void flat_tiers(const std::string& pair, bool near) {
         return oracle::flat_intersect_epick(support::to_flat(c.first), support::to_flat(c.second));
     });
 }
+// A mesh pair on the tests' generators (tests/support/mesh_cases.hpp: closed non-convex star
+// meshes of 12 or 48 triangles, at every scale the tests use), the mesh oracle as truth.
+template <class B>
+void mesh_tiers(const std::string& pair, bool near) {
+    struct mesh_case {
+        support::mesh_store m, other;
+        B b{};
+        B partner() const {
+            if constexpr (std::is_same_v<B, mesh3>) return other.view();
+            else return b;
+        }
+    };
+    const std::string dist = near ? "near_degenerate" : "random";
+    support::rng r(20261122 + (near ? 1 : 0));
+    std::vector<mesh_case> cs;
+    while (cs.size() < set_size) {
+        mesh_case c;
+        c.b = near ? support::mesh_near<B>(r, c.m, c.other) : support::mesh_random<B>(r, c.m, c.other);
+        cs.push_back(std::move(c));
+    }
+    auto truth = [](const mesh_case& c) { return support::mesh_truth(c.m.view(), c.partner()); };
+    tiers(pair, dist, cs, truth, [](auto tier, const mesh_case& c) { return intersects<decltype(tier)>(c.m.view(), c.partner()); });
+}
 void obb_arrays(const obb3& b, double* c, double* a, double* h) {
     arr(b.center, c);
     for (unsigned i = 0; i < 3; ++i) arr(b.axes[i], a + 3 * i), h[i] = b.half_extents[i];
@@ -238,6 +262,7 @@ void register_all() {
             (void)obb_tiers<obb3, triangle3>("obb_triangle", near);
             (void)obb_tiers<obb3, plane3>("obb_plane", near);
             (void)obb_tiers<obb3, tetrahedron3>("obb_tetrahedron", near);
+            mesh_tiers<obb3>("mesh_obb", near);
         }
         flat_tiers<segment3, segment3>("segment_segment", near);
         flat_tiers<line3, line3>("line_line", near);
@@ -263,6 +288,15 @@ void register_all() {
         flat_tiers<tetrahedron3, triangle3>("tetrahedron_triangle", near);
         flat_tiers<tetrahedron3, tetrahedron3>("tetrahedron_tetrahedron", near);
         flat_tiers<aabb3, tetrahedron3>("aabb_tetrahedron", near);
+        mesh_tiers<point3>("mesh_point", near);
+        mesh_tiers<segment3>("mesh_segment", near);
+        mesh_tiers<ray3>("mesh_ray", near);
+        mesh_tiers<line3>("line_mesh", near);
+        mesh_tiers<plane3>("mesh_plane", near);
+        mesh_tiers<triangle3>("mesh_triangle", near);
+        mesh_tiers<tetrahedron3>("mesh_tetrahedron", near);
+        mesh_tiers<aabb3>("aabb_mesh", near);
+        mesh_tiers<mesh3>("mesh_mesh", near);
         flat_tiers<segment2, segment2>("segment2_segment2", near);
         flat_tiers<line2, line2>("line2_line2", near);
         flat_tiers<line2, point2>("line2_point2", near);

@@ -7,7 +7,12 @@
 // Tetrahedron_3, Iso_cuboid_3, the exact LP for coplanar tetrahedra and flat boxes) and the LP
 // for the OBB: the exact tier agrees, conservative never misses, aggressive never lies, classify
 // is never wrong, both argument orders agree; on NaN or infinite input every tier must finish
-// and the exact tier says no. Any finding aborts.
+// and the exact tier says no. With the top bit of byte 0 set, the first shape is instead a closed
+// mesh of octahedron topology (6 vertices, 18 doubles; any positions, so possibly
+// self-intersecting: its set is its triangles plus the points of odd crossing parity, which the
+// oracle's parity along another ray must match) against one of eight kinds (mod 8, up to 12
+// doubles: a point, segment, ray, line, plane, triangle, box or tetrahedron), and
+// contains(mesh, point). Any finding aborts.
 #include "../tests/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <cmath>
@@ -17,8 +22,12 @@
 #include <stdexcept>
 import incidence;
 #include "contracts.hpp"
-#include "../tests/support/flat_shapes.hpp"
-#include "../tests/support/lp_shapes.hpp"
+#include "../tests/support/testing.hpp"
+#include "../tests/support/flat_cases.hpp"
+#include "../tests/support/mesh_cases.hpp"
+#include <array>
+#include <cstdint>
+#include <span>
 
 using namespace incidence;
 
@@ -112,10 +121,54 @@ void check(const tetrahedron3& a, const B& b, bool finite) {
     }
     if (const auto t = truth(a, b)) contracts(a, b, *t);
 }
+constexpr std::array<std::array<std::uint32_t, 3>, 8> octahedron{
+    {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}}};
+
+template <class B>
+void check_mesh(const mesh3& m, const B& b, bool finite) {
+    (void)intersects<approximate>(m, b);
+    (void)intersects<conservative>(b, m);
+    (void)intersects<aggressive>(m, b);
+    (void)classify(b, m);
+    if (!finite) {
+        if (intersects<exact>(m, b)) std::abort();
+        if constexpr (std::is_same_v<B, point3>)
+            if (contains(m, b)) std::abort();
+        return;
+    }
+    if constexpr (std::is_same_v<B, aabb3>)
+        if (!(b.min.x <= b.max.x && b.min.y <= b.max.y && b.min.z <= b.max.z)) {
+            if (intersects(m, b)) std::abort(); // an inverted box is empty
+            return;
+        }
+    std::optional<bool> t;
+    try {
+        t = support::mesh_truth(m, b);
+    } catch (const std::runtime_error&) {
+        return; // the oracle declined (the LP's certificate check, or no clean ray in 1,000 draws)
+    }
+    contracts(m, b, *t);
+    if constexpr (std::is_same_v<B, point3>)
+        if (contains(m, b) != *t) std::abort();
+}
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     if (size < 1) return 0;
+    if (data[0] & 0x80) {
+        double w[30] = {};
+        std::memcpy(w, data + 1, size - 1 < sizeof w ? size - 1 : sizeof w);
+        const int kb = data[0] % 8 == 7 ? 8 : data[0] % 8; // no OBB (its LP per triangle is slow): a tetrahedron instead
+        bool finite = true;
+        for (int i = 0; i < 18 + used[kb]; ++i) finite = finite && std::isfinite(w[i]);
+        std::array<point3, 6> verts;
+        for (unsigned i = 0; i < 6; ++i) verts[i] = point3{w[3 * i], w[3 * i + 1], w[3 * i + 2]};
+        const mesh3 m{verts, octahedron};
+        with_shape(kb, w + 18, [&](const auto& b) {
+            if constexpr (!std::is_same_v<std::decay_t<decltype(b)>, obb3>) check_mesh(m, b, finite);
+        });
+        return 0;
+    }
     double v[27] = {};
     std::memcpy(v, data + 1, size - 1 < sizeof v ? size - 1 : sizeof v);
     const int kb = data[0] % 9;

@@ -18,6 +18,8 @@ enum class errc : unsigned char {
     not_orthonormal,     // OBB axes far from unit length or from perpendicular
     too_large,           // the input exceeds a construction's stated size limit
     degenerate_tetrahedron, // the four vertices are coplanar (exactly)
+    index_out_of_range,  // a mesh triangle names a vertex that does not exist
+    open_mesh,           // a mesh edge belongs to an odd number of triangles (the surface has a boundary)
 };
 
 struct error {
@@ -36,6 +38,8 @@ struct error {
         case errc::not_orthonormal: return "the box axes are far from orthonormal (unit length and perpendicular within 1e-6)";
         case errc::too_large: return "the input exceeds the construction's size limit (see its documentation)";
         case errc::degenerate_tetrahedron: return "the tetrahedron's vertices are coplanar (zero volume)";
+        case errc::index_out_of_range: return "a triangle's vertex index is not below the number of vertices";
+        case errc::open_mesh: return "the mesh is not closed: an edge belongs to an odd number of triangles";
         }
         return "unknown error";
     }

@@ -140,4 +140,25 @@ constexpr void for_each_family(F&& f) {
     std::apply([&](const auto&... fam) { (f(fam), ...); }, families);
 }
 
+// The mesh pairs: a mesh3 is a view of arrays its caller owns, so they are listed apart from
+// `families`, whose shapes the audit generates, moves and nudges as values; the README table and
+// the catalog test read both lists.
+inline constexpr std::tuple mesh_families{
+    family<mesh3, point3, 0>{"mesh_point", "solids", "signs in double", {}},
+    family<mesh3, segment3, 0>{"mesh_segment", "solids", "signs in double", {}},
+    family<mesh3, ray3, 0>{"mesh_ray", "solids", "signs in double", {}},
+    family<line3, mesh3, 0>{"line_mesh", "solids", "signs in double", {}},
+    family<mesh3, plane3, 0>{"mesh_plane", "solids", "signs in double", {}},
+    family<mesh3, triangle3, 0>{"mesh_triangle", "solids", "signs in double", {}},
+    family<mesh3, tetrahedron3, 0>{"mesh_tetrahedron", "solids", "signs in double", {}},
+    family<aabb3, mesh3, 0>{"aabb_mesh", "solids", "signs in double", {}},
+    family<mesh3, obb3, 0>{"mesh_obb", "solids", "signs in double", {}},
+    family<mesh3, mesh3, 0>{"mesh_mesh", "solids", "signs in double", {}},
+};
+template <class F>
+constexpr void for_each_listed_family(F&& f) {
+    for_each_family(f);
+    std::apply([&](const auto&... fam) { (f(fam), ...); }, mesh_families);
+}
+
 } // namespace incidence::catalog

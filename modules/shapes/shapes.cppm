@@ -13,3 +13,4 @@ export import :ray2;
 export import :line2;
 export import :segment2;
 export import :tetrahedron3;
+export import :mesh3;

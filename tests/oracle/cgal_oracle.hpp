@@ -80,8 +80,9 @@ std::optional<bool> lp_intersect_verified(const convex_set& a, const convex_set&
 // see cgal_flat.cpp); flat_intersect_epick is CGAL's do_intersect over Epick (a peer, for timing).
 // Solids too: a tetrahedron (v: its four vertices; coplanar ones are their hull) and a box (v: min
 // then max; an inverted box is empty). A solid tetrahedron is CGAL's Tetrahedron_3 and a solid box
-// its Iso_cuboid_3; a coplanar tetrahedron or a flat box is decided by the exact LP oracle instead
-// (lp_intersect on the point sets), since CGAL's solid predicates assume full dimension.
+// its Iso_cuboid_3; a flat box is its pieces (a rectangle's two triangles, a segment or a point),
+// and a coplanar tetrahedron is decided by the exact LP oracle (lp_intersect on the point sets),
+// since CGAL's solid predicates assume full dimension.
 struct flat {
     enum kind_t { point, segment, ray, line, plane, triangle, tetrahedron, box } kind;
     double v[12];
@@ -95,6 +96,21 @@ bool flat_intersect_epick(const flat& a, const flat& b);
 // CGAL's do_intersect itself, also for the ray-ray and line-ray pairs where it is wrong (the
 // fixtures show it).
 bool flat_do_intersect_cgal(const flat& a, const flat& b);
+// Closed triangle meshes (cgal_mesh.cpp): the mesh's point set is its triangles (Epeck) and the
+// points inside by crossing parity along a segment to a random far point, decided by
+// CGAL::orientation over Epeck (for the embedded closed surfaces the tests
+// build, the even-odd rule's inside). mesh_intersect: a triangle meets x (flat_intersect, or the
+// LP for a convex set) or x's point `inner` is inside; mesh_mesh_intersect is
+// CGAL::Polygon_mesh_processing::do_intersect with the bounded sides' overlap test.
+struct mesh_data {
+    std::vector<std::array<double, 3>> v;
+    std::vector<std::array<unsigned, 3>> t;
+};
+bool mesh_inside(const mesh_data& m, const std::array<double, 3>& p); // on the surface or inside
+bool mesh_intersect(const mesh_data& m, const flat& x);
+bool mesh_intersect(const mesh_data& m, const convex_set& x, const std::array<double, 3>& inner);
+bool mesh_mesh_intersect(const mesh_data& a, const mesh_data& b);
+
 // The same in the plane: a point, segment, ray or line (v: a point's 2 values, a segment's end
 // points, a ray's or line's origin and direction; degenerate ones are Point_2), CGAL's 2D
 // do_intersect / has_on over Epeck (exact rationals where a line or a ray meets a line, ray or

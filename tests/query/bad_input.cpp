@@ -9,6 +9,7 @@
 #include <limits>
 import incidence;
 #include "../support/testing.hpp"
+#include "../support/mesh_fixtures.hpp"
 
 using namespace incidence;
 
@@ -91,6 +92,25 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
         yes += contains(te, q) + contains(te, seg) + contains(te, t) + contains(te, te) + contains(te, b) + contains(b, te);
         yes += contains<approximate>(te, te) + contains<conservative>(te, b) + contains<aggressive>(b, te);
         n += 9 * 5 + 9;
+        // the mesh pairs: special vertices on the cube's triangles, and a triangle naming a vertex
+        // that does not exist
+        std::array<point3, 8> mv;
+        for (auto& x : mv) x = p();
+        const mesh3 me{mv, support::cube_triangles};
+        const mesh3 holey{std::span<const point3>(mv.data(), 5), support::cube_triangles};
+        every_tier(me, q, yes);
+        every_tier(me, seg, yes);
+        every_tier(me, ray, yes);
+        every_tier(line, me, yes);
+        every_tier(me, pl, yes);
+        every_tier(me, t, yes);
+        every_tier(me, te, yes);
+        every_tier(b, me, yes);
+        every_tier(me, ob, yes);
+        every_tier(me, me, yes);
+        every_tier(holey, q, yes);
+        yes += contains(me, q) + contains(holey, q);
+        n += 11 * 5 + 2;
         // in the plane
         auto p2 = [&] { return point2{special(r), special(r)}; };
         auto v2 = [&] { return vec2{special(r), special(r)}; };
@@ -129,5 +149,12 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
     CHECK_FALSE(intersects(segment3{{0.1, 0.1, 0.1}, {nan_, 0, 0}}, unit)); // one end inside, the other unread
     CHECK_FALSE(contains(unit, segment3{{0.1, 0.1, 0.1}, {inf_, 0, 0}}));
     CHECK_FALSE(contains(aabb3{{-inf_, -1, -1}, {1, 1, 1}}, unit));
+    std::array<point3, 8> cv;
+    for (unsigned i = 0; i < 8; ++i) cv[i] = support::cube.vertices[i];
+    cv[7].z = nan_; // a NaN vertex the queries below would otherwise not need
+    CHECK_FALSE(intersects(mesh3{cv, support::cube_triangles}, point3{0.3, 0.3, 0.3}));
+    CHECK_FALSE(intersects(mesh3{cv, support::cube_triangles}, plane3{{0, 0, 1}, 0}));
+    CHECK_FALSE(intersects(mesh3{std::span<const point3>(cv.data(), 7), support::cube_triangles}, point3{0.3, 0.3, 0.3}));
+    CHECK_FALSE(intersects(support::cube, segment3{{0.3, 0.3, 0.3}, {inf_, 0, 0}}));
     CHECK(classify(line3{{nan_, 0, 0}, {1, 0, 0}}, line3{{0, 0, 0}, {0, 1, 0}}) == certainty::uncertain);
 }

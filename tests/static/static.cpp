@@ -6,6 +6,7 @@
 #include <array>
 #include <cstddef>
 import incidence;
+#include "../support/mesh_fixtures.hpp"
 
 using namespace incidence;
 
@@ -142,6 +143,14 @@ static_assert(contains(Q, segment3{{0, 0, 0}, {0.5, 0.25, 0.25}}) && !contains(Q
 static_assert(contains(aabb3{{0, 0, 0}, {1, 1, 1}}, Q) && contains(Q, aabb3{{0, 0, 0}, {0.25, 0.25, 0.5}}));
 static_assert(tetrahedron3{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {1, 1, 0}}.is_degenerate() && !Q.is_degenerate());
 static_assert(!tetrahedron3::make(Q.a, Q.b, Q.c, point3{1, 1, 0}).has_value() && tetrahedron3::make(Q.a, Q.b, Q.c, Q.d).has_value());
+// a closed mesh (support/mesh_fixtures.hpp: the unit cube, and the cube with a dented top), inside
+// by exact crossing parity
+static_assert(intersects(support::cube, point3{0.3, 0.3, 0.3}) && !intersects(support::cube, point3{0x1.0000000000001p0, 0.5, 0.5}));
+static_assert(intersects(support::dented, point3{0.5, 0.5, 0.2}) && !intersects(support::dented, point3{0.5, 0.5, 0.5}));
+static_assert(intersects(segment3{{0.5, 0.5, 0.5}, {0.5, 0.5, 0.25}}, support::dented));
+static_assert(!intersects(segment3{{0.5, 0.5, 0.5}, {0.5, 0.5, 0x1.0000000000001p-2}}, support::dented));
+static_assert(intersects(support::cube, plane3{{0, 0, 1}, 1}) && !intersects(support::cube, plane3{{0, 0, 1}, 0x1.0000000000001p0}));
+static_assert(intersects(support::dented, Q) && contains(support::dented, point3{0.5, 0.5, 0.2}));
 // the same in the plane
 static_assert(intersects(segment2{{0, 0}, {2, 0}}, segment2{{2, 0}, {3, 5}}));
 static_assert(!intersects(segment2{{0, 0}, {2, 0}}, segment2{{0x1.0000000000001p1, 0}, {3, 0}}));

@@ -37,7 +37,7 @@ std::string leading_comment(const std::filesystem::path& p) {
 std::string table(const std::filesystem::path& root) {
     std::string t = "| pair (`modules/query/`) | tiers | approximate tier runs | alternatives (`method::`) | exact-tier oracle "
                     "test (`tests/query/<pair>.cpp`) | fuzzer (`fuzz/`) |\n|---|---|---|---|---|---|\n";
-    catalog::for_each_family([&](const auto& f) {
+    catalog::for_each_listed_family([&](const auto& f) {
         std::string alts;
         for (const auto& a : f.alternatives) alts += (alts.empty() ? "`" : ", `") + std::string(f.name) + "_" + a.name + "`";
         t += "| `" + std::string(f.name) + "` | exact, conservative, aggressive, approximate; `classify` | " + f.approximate_method + " | " +

@@ -1,0 +1,27 @@
+// line3 against mesh3 (a point when the direction is zero).
+// Semantics: the mesh's point set (shapes/mesh3.cppm: its triangles and the points of odd
+// crossing parity); touching a triangle counts.
+// Method (exact tiers): any triangle meeting the line (line_triangle), else the parity of its origin (a line cannot
+// lie inside a bounded solid, so this only matters for a point).
+// Source: the boundary-plus-inside decomposition and crossing parity of mesh_point.cppm.
+// Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
+// magnitudes lie in [2^-500, 2^500], wrong only when a deciding sign is within 2^-36 of its
+// permanent (tests/query/line_mesh.cpp).
+export module incidence.query:line_mesh;
+import incidence.core;
+import incidence.arith;
+import incidence.shapes;
+import :segment_segment;
+import :mesh_point;
+import :line_triangle;
+import :point_tetrahedron;
+
+export namespace incidence::pair {
+
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const line3& l, const mesh3& m) {
+    if (!meshq::well_formed(m) || !finite(l)) return false;
+    return meshq::mesh_meets(k, m, [&](const triangle3& f) { return intersects(k, l, f); }, l.origin);
+}
+
+} // namespace incidence::pair

@@ -1,0 +1,29 @@
+// mesh3 against segment3 (a point when a == b).
+// Semantics: the mesh's point set (shapes/mesh3.cppm: its triangles and the points of odd
+// crossing parity); touching a triangle counts.
+// Method (exact tiers): the bounding boxes, then any triangle meeting the segment (segment_triangle), else the parity of an end point.
+// Source: the boundary-plus-inside decomposition and crossing parity of mesh_point.cppm.
+// Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
+// magnitudes lie in [2^-500, 2^500], wrong only when a deciding sign is within 2^-36 of its
+// permanent (tests/query/mesh_segment.cpp).
+export module incidence.query:mesh_segment;
+import incidence.core;
+import incidence.arith;
+import incidence.shapes;
+import :segment_segment;
+import :mesh_point;
+import :segment_triangle;
+import :point_tetrahedron;
+
+export namespace incidence::pair {
+
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const mesh3& m, const segment3& s) {
+    if (!meshq::well_formed(m) || !finite(s)) return false;
+    const point3 pts[2] = {s.a, s.b};
+    const aabb3 xb = meshq::bounds(pts, 2);
+    if (!meshq::boxes_meet(meshq::bounds(m), xb)) return false;
+    return meshq::mesh_meets(k, m, [&](const triangle3& f) { return intersects(k, s, f); }, s.a, &xb);
+}
+
+} // namespace incidence::pair

@@ -1,0 +1,145 @@
+// Cases for the mesh pairs: closed, non-convex, embedded test meshes and the oracle's view of
+// them. Include after flat_cases.hpp.
+//
+// A star mesh: the surface grid of the cube [-n, n]^3 (n x n squares per face, each split along a
+// random diagonal, outward oriented), every grid point d pushed along its ray from the centre to
+// centre + r d with r in {1/2, 1, 3/2} (dyadic, so exact): non-convex, and embedded, since each
+// triangle projects from the centre onto the same patch of the sphere as its cube triangle.
+// Near-degenerate: the other shape placed at a point X of the surface (a vertex, an edge's
+// midpoint or a point inside a triangle) as in flat_cases.hpp (through X, along a triangle's edge
+// in its plane, or along a random direction), or at the centre (inside); then one random
+// exact-or-nudged scale and translation for both. Random: a mesh around a random centre in
+// [-1, 1]^3 of size about 1/2 and a random shape of flat_cases.hpp, at a random scale.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+#include "obb_cases.hpp"
+
+namespace support {
+
+struct mesh_store {
+    std::vector<incidence::point3> v;
+    std::vector<std::array<std::uint32_t, 3>> t;
+    [[nodiscard]] incidence::mesh3 view() const { return {v, t}; }
+};
+inline oracle::mesh_data mesh_data_of(const incidence::mesh3& m) {
+    oracle::mesh_data d;
+    for (const auto& p : m.vertices) d.v.push_back({p.x, p.y, p.z});
+    for (const auto& t : m.triangles) d.t.push_back({t[0], t[1], t[2]});
+    return d;
+}
+
+// The star mesh of grid size n around `centre` (in units of `unit`), in small coordinates.
+inline void star_mesh(rng& r, int n, incidence::point3 centre, double unit, mesh_store& m) {
+    m.v.clear();
+    m.t.clear();
+    std::map<std::array<int, 3>, std::uint32_t> index;
+    auto vertex = [&](std::array<int, 3> g) {
+        const auto [it, added] = index.try_emplace(g, static_cast<std::uint32_t>(m.v.size()));
+        if (added) {
+            static constexpr double radii[] = {0.5, 1.0, 1.5};
+            const double k = radii[r.integer(0, 2)] * unit;
+            m.v.push_back({centre.x + k * g[0], centre.y + k * g[1], centre.z + k * g[2]});
+        }
+        return it->second;
+    };
+    for (int a = 0; a < 3; ++a)
+        for (int s = -1; s <= 1; s += 2) {
+            const int u = (a + 1) % 3, w = (a + 2) % 3;
+            for (int i = -n; i < n; ++i)
+                for (int j = -n; j < n; ++j) {
+                    auto at = [&](int di, int dj) {
+                        std::array<int, 3> g{};
+                        g[static_cast<unsigned>(a)] = s * n, g[static_cast<unsigned>(u)] = i + di, g[static_cast<unsigned>(w)] = j + dj;
+                        return vertex(g);
+                    };
+                    const std::uint32_t p00 = at(0, 0), p10 = at(1, 0), p11 = at(1, 1), p01 = at(0, 1);
+                    std::array<std::uint32_t, 3> t1{p00, p10, p11}, t2{p00, p11, p01};
+                    if (r.coin()) t1 = {p00, p10, p01}, t2 = {p10, p11, p01};
+                    if (s < 0) std::swap(t1[1], t1[2]), std::swap(t2[1], t2[2]); // outward
+                    m.t.push_back(t1);
+                    m.t.push_back(t2);
+                }
+        }
+}
+inline void realise_mesh(mesh_store& m, transform& tr) {
+    for (auto& p : m.v) p = moved(p, tr);
+}
+// A point of the surface: a vertex, an edge's midpoint, or a point inside a triangle; `along`
+// gets an edge direction of that triangle.
+inline incidence::point3 surface_point(rng& r, const mesh_store& m, incidence::vec3& along) {
+    const auto& t = m.t[static_cast<std::size_t>(r.integer(0, static_cast<int>(m.t.size()) - 1))];
+    const incidence::point3 a = m.v[t[0]], b = m.v[t[1]], c = m.v[t[2]];
+    along = r.coin() ? b - a : c - b;
+    switch (r.integer(0, 2)) {
+    case 0: return a;
+    case 1: return a + (b - a) * 0.5;
+    default: return a + (b - a) * 0.25 + (c - a) * 0.25;
+    }
+}
+
+// Every case: the mesh in `store` (and a second one in `other` for mesh against mesh), the
+// other shape returned (for a mesh, its view of `other`).
+template <class B>
+B mesh_near(rng& r, mesh_store& store, mesh_store& other) {
+    using namespace incidence;
+    const point3 centre = small_point(r);
+    star_mesh(r, r.integer(1, 2), centre, 1.0, store);
+    vec3 along{};
+    const bool at_centre = r.integer(0, 4) == 0;
+    const point3 X = at_centre ? centre : surface_point(r, store, along);
+    const vec3 d = at_centre || r.coin() ? small_dir(r) : along;
+    transform tr = random_transform(r, true, true);
+    if constexpr (std::is_same_v<B, mesh3>) {
+        star_mesh(r, 1, point3{0, 0, 0}, 1.0, other);
+        vec3 unused{};
+        const point3 Y = surface_point(r, other, unused);
+        for (auto& p : other.v) p = p + (X - Y); // the other mesh's surface point Y at X (exact: small numbers)
+        realise_mesh(store, tr);
+        realise_mesh(other, tr);
+        return other.view();
+    } else if constexpr (std::is_same_v<B, obb3>) {
+        obb3 o = near_obb(r);
+        const point3 q = boundary_point(r, o);
+        o.center = o.center + (X - q);
+        realise_mesh(store, tr);
+        return moved(tr, o);
+    } else {
+        const auto b = place<B>(r, X, d, r.coin());
+        realise_mesh(store, tr);
+        return realise(b, tr);
+    }
+}
+template <class B>
+B mesh_random(rng& r, mesh_store& store, mesh_store& other) {
+    using namespace incidence;
+    const point3 centre{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)};
+    star_mesh(r, r.integer(1, 2), centre, 0.25, store);
+    transform tr = random_transform(r, false, true);
+    realise_mesh(store, tr);
+    if constexpr (std::is_same_v<B, mesh3>) {
+        star_mesh(r, 1, point3{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)}, 0.25, other);
+        realise_mesh(other, tr);
+        return other.view();
+    } else if constexpr (std::is_same_v<B, obb3>) {
+        return random_obb(r, tr);
+    } else {
+        const auto b = random_shape<B>(r, false, 0.0);
+        return realise(b, tr);
+    }
+}
+
+// The oracle's answer (tests/oracle/cgal_mesh.cpp).
+template <class B>
+bool mesh_truth(const incidence::mesh3& m, const B& b) {
+    using namespace incidence;
+    const auto md = mesh_data_of(m);
+    if constexpr (std::is_same_v<B, mesh3>) return oracle::mesh_mesh_intersect(md, mesh_data_of(b));
+    else if constexpr (std::is_same_v<B, obb3>) return oracle::mesh_intersect(md, lp(b), {b.center.x, b.center.y, b.center.z});
+    else return oracle::mesh_intersect(md, to_flat(b));
+}
+
+} // namespace support
