@@ -3,8 +3,8 @@
 #   ./run.sh audit  the robustness audit: stability and speed-accuracy for every query family,
 #                   and the scene audit of the Stanford bunny; writes audit-report/report.html
 #   ./run.sh test   the whole test suite: release build and tests (oracle, static, consumer,
-#                   benchmark smoke, audit output and report in Chromium), the ASan+UBSan build
-#                   and its tests, and the fuzzers
+#                   benchmark smoke, audit output and report in Chromium), then the ASan+UBSan
+#                   build: its tests, and each fuzzer's corpus replay and a fixed-time run
 # and ./run.sh demo: the tiers on touching cases + a speed table, in the terminal.
 # All install what is missing first (Debian bookworm + bookworm-backports) and skip what is there.
 set -euo pipefail
@@ -102,12 +102,10 @@ test)
     echo "== release build: unit, oracle, static, consumer-from-install, benchmark smoke, corpus replay"
     build release
     run_tests release
-    echo "== debug build with AddressSanitizer + UndefinedBehaviorSanitizer (a tenth of the oracle cases)"
+    echo "== debug build (-O0) with AddressSanitizer + UndefinedBehaviorSanitizer: the tests (a twentieth of the"
+    echo "   oracle cases), then each libFuzzer harness: corpus replay and a fixed-time run"
     build debug
     ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 run_tests debug -E consumer_from_install
-    echo "== fuzz build (libFuzzer + ASan + UBSan): corpus replay, then each fuzzer for a fixed time"
-    build fuzz
-    run_tests fuzz
     echo "== all suites passed in $(( $(date +%s) - start )) s"
     echo "$total_passed passed, $total_failed failed"
     ;;

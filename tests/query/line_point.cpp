@@ -27,5 +27,5 @@ TEST_CASE("line_point: oracle, random and near-degenerate", "[line_point][oracle
     support::flat_oracle<line3, point3>("line_point", support::cases(50000), approx_bound);
 }
 TEST_CASE("line_point: rewrites of either shape and exact translations give the same answer", "[line_point]") {
-    support::flat_symmetries<line3, point3>("line_point", support::cases(20000));
+    support::flat_symmetries<line3, point3>("line_point", support::cases(200000)); // about 0.2% of the cases meet
 }

@@ -25,5 +25,5 @@ TEST_CASE("point_point: oracle, random and near-degenerate", "[point_point][orac
     support::flat_oracle<point3, point3>("point_point", support::cases(50000), approx_bound);
 }
 TEST_CASE("point_point: rewrites of either shape and exact translations give the same answer", "[point_point]") {
-    support::flat_symmetries<point3, point3>("point_point", support::cases(20000));
+    support::flat_symmetries<point3, point3>("point_point", support::cases(200000)); // about 0.2% of the cases meet
 }

@@ -6,6 +6,16 @@
 
 namespace support {
 
+// Every tier contract held over the cases tallied in t.
+inline void require_contracts(const tally& t) {
+    CHECK(t.exact_wrong == 0);
+    CHECK(t.symmetry_wrong == 0);
+    CHECK(t.conservative_violations == 0);
+    CHECK(t.aggressive_violations == 0);
+    CHECK(t.classify_wrong == 0);
+    CHECK(t.approx_outside_bound == 0);
+}
+
 // One case of a canonical pair (a, b) whose true answer is `truth` (from the oracle).
 // Checks: exact == truth; both argument orders agree; conservative never misses a true yes;
 // aggressive never reports a false yes; classify is never wrong; approximate is wrong only
@@ -64,12 +74,7 @@ tally run_oracle(const char* name, long n, double bound, Gen gen, Truth truth, S
     std::printf("[cases] %s: seed %llu, %ld generated cases skipped (oracle precondition)\n", name,
                 static_cast<unsigned long long>(seed()), skipped);
     t.print();
-    CHECK(t.exact_wrong == 0);
-    CHECK(t.symmetry_wrong == 0);
-    CHECK(t.conservative_violations == 0);
-    CHECK(t.aggressive_violations == 0);
-    CHECK(t.classify_wrong == 0);
-    CHECK(t.approx_outside_bound == 0);
+    require_contracts(t);
     return t;
 }
 

@@ -71,11 +71,7 @@ void flat_contains_oracle(const std::string& name, long n, double approx_bound) 
     }
     t.print();
     std::printf("[cases] %s contains: %ld of %ld contained\n", name.c_str(), yes, t.n);
-    CHECK(t.exact_wrong == 0);
-    CHECK(t.conservative_violations == 0);
-    CHECK(t.aggressive_violations == 0);
-    CHECK(t.classify_wrong == 0);
-    CHECK(t.approx_outside_bound == 0);
+    require_contracts(t);
     CHECK(yes > 0);
 }
 

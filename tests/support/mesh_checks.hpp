@@ -54,12 +54,7 @@ void mesh_oracle(const std::string& name, long n, double approx_bound) {
         }
         std::printf("[cases] %s: %ld generated cases skipped (not finite, or the oracle declined)\n", t.name.c_str(), skipped);
         t.print();
-        CHECK(t.exact_wrong == 0);
-        CHECK(t.symmetry_wrong == 0);
-        CHECK(t.conservative_violations == 0);
-        CHECK(t.aggressive_violations == 0);
-        CHECK(t.classify_wrong == 0);
-        CHECK(t.approx_outside_bound == 0);
+        require_contracts(t);
     }
 }
 
