@@ -12,7 +12,9 @@
 // self-intersecting: its set is its triangles plus the points of odd crossing parity, which the
 // oracle's parity along another ray must match) against one of eight kinds (mod 8, up to 12
 // doubles: a point, segment, ray, line, plane, triangle, box or tetrahedron), and
-// contains(mesh, point). Any finding aborts.
+// contains(mesh, point); with bit 0x40 of byte 0 too, against a second such mesh (18 doubles;
+// CGAL::Polygon_mesh_processing::do_intersect) or, for byte 0 % 8 == 7, an OBB (the LP per
+// triangle). Any finding aborts.
 #include "../tests/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <cmath>
@@ -124,6 +126,24 @@ void check(const tetrahedron3& a, const B& b, bool finite) {
 constexpr std::array<std::array<std::uint32_t, 3>, 8> octahedron{
     {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}}};
 
+// Two meshes that may intersect themselves (any vertex positions): PMP::do_intersect, the
+// tests' oracle, expects self-intersection-free meshes, so here the oracle is the set's
+// definition with CGAL's pieces: a triangle pair meets (Epeck), or a vertex of one lies inside
+// the other (oracle::mesh_inside, crossing parity by CGAL::orientation).
+bool mesh_mesh_truth(const mesh3& a, const mesh3& b) {
+    const auto da = support::mesh_data_of(a), db = support::mesh_data_of(b);
+    auto tri = [](const oracle::mesh_data& d, const std::array<unsigned, 3>& t) {
+        oracle::flat f{oracle::flat::triangle, {}};
+        for (unsigned j = 0; j < 3; ++j)
+            for (unsigned c = 0; c < 3; ++c) f.v[3 * j + c] = d.v[t[j]][c];
+        return f;
+    };
+    for (const auto& s : da.t)
+        for (const auto& u : db.t)
+            if (oracle::flat_intersect(tri(da, s), tri(db, u))) return true;
+    return oracle::mesh_inside(db, da.v[0]) || oracle::mesh_inside(da, db.v[0]);
+}
+
 template <class B>
 void check_mesh(const mesh3& m, const B& b, bool finite) {
     (void)intersects<approximate>(m, b);
@@ -141,9 +161,15 @@ void check_mesh(const mesh3& m, const B& b, bool finite) {
             if (intersects(m, b)) std::abort(); // an inverted box is empty
             return;
         }
+    if constexpr (std::is_same_v<B, obb3>)
+        if (!(b.half_extents[0] >= 0 && b.half_extents[1] >= 0 && b.half_extents[2] >= 0)) {
+            if (intersects(m, b)) std::abort(); // a negative extent: an empty box
+            return;
+        }
     std::optional<bool> t;
     try {
-        t = support::mesh_truth(m, b);
+        if constexpr (std::is_same_v<B, mesh3>) t = mesh_mesh_truth(m, b);
+        else t = support::mesh_truth(m, b);
     } catch (const std::runtime_error&) {
         return; // the oracle declined (the LP's certificate check, or no clean ray in 1,000 draws)
     }
@@ -156,14 +182,24 @@ void check_mesh(const mesh3& m, const B& b, bool finite) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     if (size < 1) return 0;
     if (data[0] & 0x80) {
-        double w[30] = {};
+        double w[36] = {};
         std::memcpy(w, data + 1, size - 1 < sizeof w ? size - 1 : sizeof w);
-        const int kb = data[0] % 8 == 7 ? 8 : data[0] % 8; // no OBB (its LP per triangle is slow): a tetrahedron instead
-        bool finite = true;
-        for (int i = 0; i < 18 + used[kb]; ++i) finite = finite && std::isfinite(w[i]);
-        std::array<point3, 6> verts;
+        std::array<point3, 6> verts, verts2;
         for (unsigned i = 0; i < 6; ++i) verts[i] = point3{w[3 * i], w[3 * i + 1], w[3 * i + 2]};
+        for (unsigned i = 0; i < 6; ++i) verts2[i] = point3{w[18 + 3 * i], w[19 + 3 * i], w[20 + 3 * i]};
         const mesh3 m{verts, octahedron};
+        bool finite = true;
+        if (data[0] & 0x40) { // a second mesh (18 doubles), or an OBB when byte 0 % 8 == 7 (its LP per triangle is slow)
+            const bool box = data[0] % 8 == 7;
+            for (int i = 0; i < 18 + (box ? 15 : 18); ++i) finite = finite && std::isfinite(w[i]);
+            if (box) with_shape(7, w + 18, [&](const auto& b) {
+                if constexpr (std::is_same_v<std::decay_t<decltype(b)>, obb3>) check_mesh(m, b, finite);
+            });
+            else check_mesh(m, mesh3{verts2, octahedron}, finite);
+            return 0;
+        }
+        const int kb = data[0] % 8 == 7 ? 8 : data[0] % 8; // a tetrahedron for 7
+        for (int i = 0; i < 18 + used[kb]; ++i) finite = finite && std::isfinite(w[i]);
         with_shape(kb, w + 18, [&](const auto& b) {
             if constexpr (!std::is_same_v<std::decay_t<decltype(b)>, obb3>) check_mesh(m, b, finite);
         });

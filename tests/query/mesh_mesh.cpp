@@ -1,6 +1,6 @@
 // mesh3 x mesh3: fixtures (the dented cube against a copy in its dent, moved one ulp up, inside
 // a larger cube); CGAL::Polygon_mesh_processing::do_intersect (Epeck, with the bounded sides'
-// overlap test) on 5,000 random and 5,000 near-degenerate cases (closed non-convex star meshes,
+// overlap test) on 20,000 random and 20,000 near-degenerate cases (closed non-convex star meshes,
 // the second with a surface point at one of the first's: a vertex, an edge midpoint or a face
 // point; then a random exact-or-nudged scale 2^-500..2^500 and translation); both argument
 // orders, rotated and reversed triangles.
@@ -33,8 +33,8 @@ TEST_CASE("mesh_mesh: fixtures", "[mesh_mesh]") {
     CHECK(intersects(dented, mesh3{small, support::cube_triangles}));
 }
 TEST_CASE("mesh_mesh: oracle, random and near-degenerate", "[mesh_mesh][oracle]") {
-    support::mesh_oracle<mesh3>("mesh_mesh", support::cases(5000), approx_bound);
+    support::mesh_oracle<mesh3>("mesh_mesh", support::cases(20000), approx_bound);
 }
 TEST_CASE("mesh_mesh: rewrites of either shape give the same answer", "[mesh_mesh]") {
-    support::mesh_symmetries<mesh3>("mesh_mesh", support::cases(5000));
+    support::mesh_symmetries<mesh3>("mesh_mesh", support::cases(20000));
 }

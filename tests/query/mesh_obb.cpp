@@ -1,5 +1,5 @@
 // mesh3 x obb3: fixtures (inside, around, a rotated box in the dent); the exact LP for the
-// triangles and crossing parity by CGAL::orientation for the inside, on 5,000 random and 5,000
+// triangles and crossing parity by CGAL::orientation for the inside, on 20,000 random and 20,000
 // near-degenerate cases (an LP per triangle near the box) (closed non-convex star meshes; a box's corner, edge or face point at a
 // vertex, an edge midpoint or a face point of the mesh, or at its centre; skew frames, ulp nudges,
 // 2^+-500); both argument orders, rotated and reversed triangles.
@@ -30,7 +30,7 @@ TEST_CASE("mesh_obb: fixtures", "[mesh_obb]") {
     CHECK(intersects(dented, obb3{{0.5, 0.5, 0.35}, R, {0.05, 0.05, 0.1}}));
 }
 TEST_CASE("mesh_obb: oracle, random and near-degenerate", "[mesh_obb][oracle]") {
-    support::mesh_oracle<obb3>("mesh_obb", support::cases(5000), approx_bound); // an LP per triangle near it: 5,000 each
+    support::mesh_oracle<obb3>("mesh_obb", support::cases(20000), approx_bound); // an LP per triangle near the box
 }
 TEST_CASE("mesh_obb: rewrites of either shape give the same answer", "[mesh_obb]") {
     support::mesh_symmetries<obb3>("mesh_obb", support::cases(20000));

@@ -1,6 +1,6 @@
 // mesh3 x tetrahedron3: fixtures (inside, around the mesh, in the dent, touching the apex);
 // the CGAL Epeck oracle (the triangles by
-// do_intersect, the inside by CGAL::Side_of_triangle_mesh) on 20,000 random and 20,000
+// do_intersect, the inside by crossing parity with CGAL::orientation) on 20,000 random and 20,000
 // near-degenerate cases (closed non-convex star meshes; the other shape through a vertex, an edge
 // midpoint or a face point, along a face edge or not, or around the inside centre; then a random
 // exact-or-nudged scale 2^-500..2^500 and translation); both argument orders, rotated and reversed
