@@ -18,6 +18,7 @@ import incidence;
 #include "../tests/support/obb_cases.hpp"
 #include "../tests/support/flat_cases.hpp"
 #include "../tests/support/mesh_cases.hpp"
+#include "../tests/support/polygon_cases.hpp"
 
 using namespace incidence;
 
@@ -212,28 +213,50 @@ void flat_tiers(const std::string& pair, bool near) {
         return oracle::flat_intersect_epick(support::to_flat(c.first), support::to_flat(c.second));
     });
 }
-// A mesh pair on the tests' generators (tests/support/mesh_cases.hpp: closed non-convex star
-// meshes of 12 or 48 triangles, at every scale the tests use), the mesh oracle as truth.
-template <class B>
-void mesh_tiers(const std::string& pair, bool near) {
-    struct mesh_case {
-        support::mesh_store m, other;
+// A pair of a mesh or a polygon (a view of arrays a store owns) on the tests' generators, its
+// oracle as truth: make_case(rng, store, other, near) returns the partner (for a view, other's view).
+template <class Store, class B, class Gen, class Truth>
+void view_tiers(const std::string& pair, bool near, Gen make_case, Truth truth_of) {
+    struct view_case {
+        Store m, other;
         B b{};
         B partner() const {
-            if constexpr (std::is_same_v<B, mesh3>) return other.view();
+            if constexpr (std::is_same_v<B, decltype(Store{}.view())>) return other.view();
             else return b;
         }
     };
     const std::string dist = near ? "near_degenerate" : "random";
     support::rng r(20261122 + (near ? 1 : 0));
-    std::vector<mesh_case> cs;
+    std::vector<view_case> cs;
     while (cs.size() < set_size) {
-        mesh_case c;
-        c.b = near ? support::mesh_near<B>(r, c.m, c.other) : support::mesh_random<B>(r, c.m, c.other);
+        view_case c;
+        c.b = make_case(r, c.m, c.other, near);
         cs.push_back(std::move(c));
     }
-    auto truth = [](const mesh_case& c) { return support::mesh_truth(c.m.view(), c.partner()); };
-    tiers(pair, dist, cs, truth, [](auto tier, const mesh_case& c) { return intersects<decltype(tier)>(c.m.view(), c.partner()); });
+    auto truth = [&](const view_case& c) { return truth_of(c.m.view(), c.partner()); };
+    tiers(pair, dist, cs, truth, [](auto tier, const view_case& c) { return intersects<decltype(tier)>(c.m.view(), c.partner()); });
+}
+// A mesh pair (tests/support/mesh_cases.hpp: closed non-convex star meshes of 12 or 48
+// triangles, at every scale the tests use), the mesh oracle as truth.
+template <class B>
+void mesh_tiers(const std::string& pair, bool near) {
+    view_tiers<support::mesh_store, B>(
+        pair, near,
+        [](support::rng& r, support::mesh_store& m, support::mesh_store& o, bool nr) {
+            return nr ? support::mesh_near<B>(r, m, o) : support::mesh_random<B>(r, m, o);
+        },
+        [](const mesh3& m, const B& b) { return support::mesh_truth(m, b); });
+}
+// A polygon pair (tests/support/polygon_cases.hpp: simple non-convex star polygons of 8 to 24
+// vertices, half with a hole of 8, at every scale the tests use), the polygon oracle as truth.
+template <class B>
+void polygon_tiers(const std::string& pair, bool near) {
+    view_tiers<support::polygon_store, B>(
+        pair, near,
+        [](support::rng& r, support::polygon_store& g, support::polygon_store& o, bool nr) {
+            return nr ? support::polygon_near<B>(r, g, o) : support::polygon_random<B>(r, g, o);
+        },
+        [](const polygon2& g, const B& b) { return support::polygon_truth(g, b); });
 }
 void obb_arrays(const obb3& b, double* c, double* a, double* h) {
     arr(b.center, c);
@@ -307,6 +330,11 @@ void register_all() {
         flat_tiers<point2, segment2>("point2_segment2", near);
         flat_tiers<ray2, ray2>("ray2_ray2", near);
         flat_tiers<ray2, segment2>("ray2_segment2", near);
+        polygon_tiers<point2>("point2_polygon2", near);
+        polygon_tiers<segment2>("polygon2_segment2", near);
+        polygon_tiers<ray2>("polygon2_ray2", near);
+        polygon_tiers<line2>("line2_polygon2", near);
+        polygon_tiers<polygon2>("polygon2_polygon2", near);
         {
             const auto cs = ray_triangle_set(near);
             auto truth = [](const rt& c) {

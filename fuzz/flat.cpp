@@ -5,7 +5,12 @@
 // or line 6, a plane 4 (normal, offset), a triangle 9; in the plane a point 2, the others 4). Differential against CGAL Epeck
 // (oracle::flat): the exact tier agrees, conservative never misses, aggressive never lies,
 // classify is never wrong, both argument orders agree; on NaN or infinite input every tier must
-// finish and the exact tier says no. Any finding aborts.
+// finish and the exact tier says no. Polygon mode (bits 0x80 and 0x40 of byte 0): a polygon of six
+// vertices (12 doubles; one ring, or two rings of three when byte 1 has bit 0x40) against a point,
+// segment, ray or line in the plane (4 doubles) or a triangle polygon (6 doubles), byte 1 % 5;
+// any positions, so possibly self-intersecting: polygon2::make must accept exactly the simple
+// ones (CGAL Polygon_2::is_simple and disjoint rings, oracle::polygon_simple), and for those the
+// contracts hold against oracle::polygon_intersect; contains(polygon, point) too. Any finding aborts.
 #include "../tests/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <cmath>
@@ -14,6 +19,9 @@
 import incidence;
 #include "contracts.hpp"
 #include "../tests/support/flat_shapes.hpp"
+#include <array>
+#include <cstdint>
+#include <span>
 
 using namespace incidence;
 
@@ -54,6 +62,40 @@ void check(const A& a, const B& b, bool finite) {
     }
     contracts(a, b, support::flat_truth(a, b));
 }
+oracle::polygon_data data_of(const polygon2& g) {
+    oracle::polygon_data d;
+    for (const auto& p : g.vertices) d.v.push_back({p.x, p.y});
+    if (g.ring_ends.empty()) d.ring_ends.push_back(static_cast<unsigned>(g.vertices.size()));
+    for (auto e : g.ring_ends) d.ring_ends.push_back(e);
+    return d;
+}
+template <class B>
+void check_polygon(const polygon2& g, const B& b, bool finite) {
+    (void)intersects<approximate>(g, b);
+    (void)intersects<conservative>(b, g);
+    (void)intersects<aggressive>(g, b);
+    (void)classify(b, g);
+    if (!finite) {
+        if (intersects<exact>(g, b)) std::abort();
+        bool vertices_finite = true;
+        for (const auto& p : g.vertices) vertices_finite = vertices_finite && std::isfinite(p.x) && std::isfinite(p.y);
+        if (!vertices_finite && polygon2::make(g.vertices, g.ring_ends).has_value()) std::abort();
+        return;
+    }
+    const bool simple = oracle::polygon_simple(data_of(g));
+    if (polygon2::make(g.vertices, g.ring_ends).has_value() != simple) std::abort();
+    if (!simple) return; // the even-odd set is defined, but bounded_side needs a simple ring
+    bool truth;
+    if constexpr (std::is_same_v<B, polygon2>) {
+        if (!oracle::polygon_simple(data_of(b))) return;
+        truth = oracle::polygon_polygon_intersect(data_of(g), data_of(b));
+    } else {
+        truth = oracle::polygon_intersect(data_of(g), support::to_flat(b));
+    }
+    contracts(g, b, truth);
+    if constexpr (std::is_same_v<B, point2>)
+        if (contains(g, b) != truth) std::abort();
+}
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -61,6 +103,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     double v[18] = {};
     std::memcpy(v, data + 2, size - 2 < sizeof v ? size - 2 : sizeof v);
     bool finite = true;
+    if ((data[0] & 0xc0) == 0xc0) { // a polygon in the plane
+        const int kb = data[1] % 5;
+        for (int i = 0; i < 12 + (kb == 4 ? 6 : (kb == 0 ? 2 : 4)); ++i) finite = finite && std::isfinite(v[i]);
+        std::array<point2, 6> verts;
+        for (unsigned i = 0; i < 6; ++i) verts[i] = point2{v[2 * i], v[2 * i + 1]};
+        static constexpr std::array<std::uint32_t, 2> two_rings{{3, 6}};
+        const polygon2 g{verts, (data[1] & 0x40) ? std::span<const std::uint32_t>(two_rings) : std::span<const std::uint32_t>()};
+        if (kb == 4) {
+            const std::array<point2, 3> tri{{{v[12], v[13]}, {v[14], v[15]}, {v[16], v[17]}}};
+            check_polygon(g, polygon2{tri, {}}, finite);
+        } else {
+            with_shape2(kb, v + 12, [&](const auto& b) { check_polygon(g, b, finite); });
+        }
+        return 0;
+    }
     if (data[0] & 0x80) { // in the plane
         const int ka = data[0] % 4, kb = data[1] % 4;
         for (int i = 0; i < used2[ka]; ++i) finite = finite && std::isfinite(v[i]);

@@ -18,8 +18,10 @@ enum class errc : unsigned char {
     not_orthonormal,     // OBB axes far from unit length or from perpendicular
     too_large,           // the input exceeds a construction's stated size limit
     degenerate_tetrahedron, // the four vertices are coplanar (exactly)
-    index_out_of_range,  // a mesh triangle names a vertex that does not exist
+    index_out_of_range,  // an index names nothing: a mesh triangle's vertex, a polygon's ring end
     open_mesh,           // a mesh edge belongs to an odd number of triangles (the surface has a boundary)
+    degenerate_polygon,  // a polygon ring has fewer than three vertices
+    self_intersecting_polygon, // two polygon edges meet other than consecutive edges at their shared vertex
 };
 
 struct error {
@@ -38,8 +40,10 @@ struct error {
         case errc::not_orthonormal: return "the box axes are far from orthonormal (unit length and perpendicular within 1e-6)";
         case errc::too_large: return "the input exceeds the construction's size limit (see its documentation)";
         case errc::degenerate_tetrahedron: return "the tetrahedron's vertices are coplanar (zero volume)";
-        case errc::index_out_of_range: return "a triangle's vertex index is not below the number of vertices";
+        case errc::index_out_of_range: return "an index is out of range (a triangle's vertex index not below the number of vertices, or polygon ring ends not increasing up to the number of vertices)";
         case errc::open_mesh: return "the mesh is not closed: an edge belongs to an odd number of triangles";
+        case errc::degenerate_polygon: return "a polygon ring has fewer than three vertices";
+        case errc::self_intersecting_polygon: return "the polygon's boundary meets itself: two edges share a point other than consecutive edges' common vertex (a crossing, a touch, a repeated vertex or a fold back)";
         }
         return "unknown error";
     }

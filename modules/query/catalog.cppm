@@ -140,10 +140,10 @@ constexpr void for_each_family(F&& f) {
     std::apply([&](const auto&... fam) { (f(fam), ...); }, families);
 }
 
-// The mesh pairs: a mesh3 is a view of arrays its caller owns, so they are listed apart from
-// `families`, whose shapes the audit generates, moves and nudges as values; the README table and
-// the catalog test read both lists.
-inline constexpr std::tuple mesh_families{
+// The pairs of a mesh or a polygon: mesh3 and polygon2 are views of arrays their caller owns, so
+// they are listed apart from `families`, whose shapes the audit generates, moves and nudges as
+// values; the README table and the catalog test read both lists.
+inline constexpr std::tuple view_families{
     family<mesh3, point3, 0>{"mesh_point", "solids", "signs in double", {}},
     family<mesh3, segment3, 0>{"mesh_segment", "solids", "signs in double", {}},
     family<mesh3, ray3, 0>{"mesh_ray", "solids", "signs in double", {}},
@@ -154,11 +154,16 @@ inline constexpr std::tuple mesh_families{
     family<aabb3, mesh3, 0>{"aabb_mesh", "solids", "signs in double", {}},
     family<mesh3, obb3, 0>{"mesh_obb", "solids", "signs in double", {}},
     family<mesh3, mesh3, 0>{"mesh_mesh", "solids", "signs in double", {}},
+    family<point2, polygon2, 0>{"point2_polygon2", "flat", "signs in double", {}},
+    family<polygon2, segment2, 0>{"polygon2_segment2", "flat", "signs in double", {}},
+    family<polygon2, ray2, 0>{"polygon2_ray2", "flat", "signs in double", {}},
+    family<line2, polygon2, 0>{"line2_polygon2", "flat", "signs in double", {}},
+    family<polygon2, polygon2, 0>{"polygon2_polygon2", "flat", "signs in double", {}},
 };
 template <class F>
 constexpr void for_each_listed_family(F&& f) {
     for_each_family(f);
-    std::apply([&](const auto&... fam) { (f(fam), ...); }, mesh_families);
+    std::apply([&](const auto&... fam) { (f(fam), ...); }, view_families);
 }
 
 } // namespace incidence::catalog

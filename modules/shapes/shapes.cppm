@@ -14,3 +14,4 @@ export import :line2;
 export import :segment2;
 export import :tetrahedron3;
 export import :mesh3;
+export import :polygon2;

@@ -124,6 +124,18 @@ bool flat_intersect(const flat2& a, const flat2& b);
 bool flat_intersect_epick(const flat2& a, const flat2& b);
 bool flat_do_intersect_cgal(const flat2& a, const flat2& b); // do_intersect itself (wrong past 2^340, cgal_flat.cpp)
 
+// Polygons with holes (cgal_polygon.cpp): rings v[ring_ends[i-1], ring_ends[i]) (ring_ends
+// always lists every ring's end). The point set is the edges (flat_intersect) and the points on
+// the bounded side (CGAL Polygon_2::bounded_side, Epeck) of an odd number of rings.
+// polygon_simple: every ring simple (Polygon_2::is_simple) and no two rings' edges meet.
+struct polygon_data {
+    std::vector<std::array<double, 2>> v;
+    std::vector<unsigned> ring_ends;
+};
+bool polygon_simple(const polygon_data& g);
+bool polygon_intersect(const polygon_data& g, const flat2& x);
+bool polygon_polygon_intersect(const polygon_data& a, const polygon_data& b);
+
 // Is `x` the correctly rounded (nearest, ties to even) value of the exact quantity?
 bool is_rounded_ray_triangle_t(const double o[3], const double d[3], const double a[3], const double b[3],
                                const double c[3], double t);

@@ -10,6 +10,7 @@
 import incidence;
 #include "../support/testing.hpp"
 #include "../support/mesh_fixtures.hpp"
+#include "../support/polygon_fixtures.hpp"
 
 using namespace incidence;
 
@@ -129,6 +130,20 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
         every_tier(r2, q2, yes);
         every_tier(q2, s2, yes);
         n += 10 * 5;
+        // the polygon pairs: special vertices in a ring of five (self-intersecting, repeated or
+        // collinear as they come), a hole of three; and ring ends past the vertices
+        std::array<point2, 8> pv;
+        for (auto& x : pv) x = p2();
+        const std::array<std::uint32_t, 2> ends{{5, 8}}, past{{5, 9}};
+        const polygon2 pg{pv, ends}, bad_ends{pv, past};
+        every_tier(q2, pg, yes);
+        every_tier(pg, s2, yes);
+        every_tier(pg, r2, yes);
+        every_tier(l2, pg, yes);
+        every_tier(pg, pg, yes);
+        every_tier(q2, bad_ends, yes);
+        yes += contains(pg, q2) + contains(bad_ends, q2);
+        n += 6 * 5 + 2;
     }
     std::printf("[cases] bad input: %ld query calls on special values completed (%ld yes)\n", n, yes);
     // The exact tier says no for NaN input.
@@ -157,4 +172,10 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
     CHECK_FALSE(intersects(mesh3{std::span<const point3>(cv.data(), 7), support::cube_triangles}, point3{0.3, 0.3, 0.3}));
     CHECK_FALSE(intersects(support::cube, segment3{{0.3, 0.3, 0.3}, {inf_, 0, 0}}));
     CHECK(classify(line3{{nan_, 0, 0}, {1, 0, 0}}, line3{{0, 0, 0}, {0, 1, 0}}) == certainty::uncertain);
+    std::array<point2, 8> fv;
+    for (unsigned i = 0; i < 8; ++i) fv[i] = support::frame.vertices[i];
+    fv[6].y = nan_; // a NaN hole vertex: the point (0.5, 0.5) would not need it
+    CHECK_FALSE(intersects(point2{0.5, 0.5}, polygon2{fv, support::frame_ends}));
+    CHECK_FALSE(intersects(support::frame, segment2{{0.5, 0.5}, {inf_, 0.5}}));
+    CHECK_FALSE(intersects(support::frame, polygon2{fv, support::frame_ends}));
 }

@@ -7,6 +7,7 @@
 #include <cstddef>
 import incidence;
 #include "../support/mesh_fixtures.hpp"
+#include "../support/polygon_fixtures.hpp"
 
 using namespace incidence;
 
@@ -151,6 +152,16 @@ static_assert(intersects(segment3{{0.5, 0.5, 0.5}, {0.5, 0.5, 0.25}}, support::d
 static_assert(!intersects(segment3{{0.5, 0.5, 0.5}, {0.5, 0.5, 0x1.0000000000001p-2}}, support::dented));
 static_assert(intersects(support::cube, plane3{{0, 0, 1}, 1}) && !intersects(support::cube, plane3{{0, 0, 1}, 0x1.0000000000001p0}));
 static_assert(intersects(support::dented, Q) && contains(support::dented, point3{0.5, 0.5, 0.2}));
+// a polygon with a hole and a C shape (support/polygon_fixtures.hpp), inside by exact crossing
+// parity; make() decides simplicity exactly
+static_assert(intersects(point2{0.5, 3}, support::frame) && !intersects(point2{2, 2}, support::frame));
+static_assert(intersects(point2{1, 2}, support::frame) && !intersects(point2{0x1.0000000000001p2, 2}, support::frame));
+static_assert(intersects(support::frame, segment2{{1.5, 1.5}, {2.5, 3.5}}) && !intersects(support::frame, segment2{{1.5, 1.5}, {2.5, 2.5}}));
+static_assert(!intersects(support::c_shape, ray2{{2, 2}, {1, 0}}) && intersects(support::c_shape, ray2{{2, 2}, {-1, 0}}));
+static_assert(intersects(line2{{0, 8}, {1, -1}}, support::frame) && !intersects(line2{{0, 0x1.0000000000001p3}, {1, -1}}, support::frame));
+static_assert(intersects(support::frame, support::c_shape) && contains(support::c_shape, point2{3, 3.5}));
+static_assert(polygon2::make(support::frame_vertices, support::frame_ends).has_value());
+static_assert(polygon2::make(support::c_vertices, std::span<const std::uint32_t, 1>(support::frame_ends.data(), 1)).error().code == errc::index_out_of_range);
 // the same in the plane
 static_assert(intersects(segment2{{0, 0}, {2, 0}}, segment2{{2, 0}, {3, 5}}));
 static_assert(!intersects(segment2{{0, 0}, {2, 0}}, segment2{{0x1.0000000000001p1, 0}, {3, 0}}));
