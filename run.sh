@@ -102,8 +102,9 @@ test)
     echo "== release build: unit, oracle, static, consumer-from-install, benchmark smoke, corpus replay"
     build release
     run_tests release
-    echo "== debug build (-O0) with AddressSanitizer + UndefinedBehaviorSanitizer: the tests (a twentieth of the"
-    echo "   oracle cases), then each libFuzzer harness: corpus replay and a fixed-time run"
+    echo "== debug build (-O0) with AddressSanitizer + UndefinedBehaviorSanitizer: the tests (the oracle tests of"
+    echo "   one pair per shared body, on a twentieth of the cases), then each libFuzzer harness: corpus"
+    echo "   replay and a fixed-time run"
     build debug
     ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 run_tests debug -E consumer_from_install
     echo "== all suites passed in $(( $(date +%s) - start )) s"
