@@ -19,6 +19,7 @@ import incidence;
 #include "../tests/support/flat_cases.hpp"
 #include "../tests/support/mesh_cases.hpp"
 #include "../tests/support/polygon_cases.hpp"
+#include "../tests/support/kdop_cases.hpp"
 
 using namespace incidence;
 
@@ -258,6 +259,18 @@ void polygon_tiers(const std::string& pair, bool near) {
         },
         [](const polygon2& g, const B& b) { return support::polygon_truth(g, b); });
 }
+// A k-DOP pair (tests/support/kdop_cases.hpp: the k-DOP of a few points, at every scale the
+// tests use), the LP oracle as truth.
+template <int K, class B>
+void kdop_tiers(const std::string& pair, bool near) {
+    const std::string dist = near ? "near_degenerate" : "random";
+    support::rng r(20261122 + (near ? 1 : 0));
+    std::vector<std::pair<kdop<K>, B>> cs;
+    while (cs.size() < set_size)
+        if (const auto c = near ? support::kdop_near<K, B>(r) : support::kdop_random<K, B>(r)) cs.push_back(*c);
+    auto truth = [](const std::pair<kdop<K>, B>& c) { return oracle::lp_intersect(support::lp(c.first), support::lp(c.second)); };
+    tiers(pair + "_" + std::to_string(K), dist, cs, truth, [](auto tier, const std::pair<kdop<K>, B>& c) { return intersects<decltype(tier)>(c.first, c.second); });
+}
 void obb_arrays(const obb3& b, double* c, double* a, double* h) {
     arr(b.center, c);
     for (unsigned i = 0; i < 3; ++i) arr(b.axes[i], a + 3 * i), h[i] = b.half_extents[i];
@@ -335,6 +348,11 @@ void register_all() {
         polygon_tiers<ray2>("polygon2_ray2", near);
         polygon_tiers<line2>("line2_polygon2", near);
         polygon_tiers<polygon2>("polygon2_polygon2", near);
+        kdop_tiers<14, point3>("kdop_point", near);
+        kdop_tiers<14, segment3>("kdop_segment", near);
+        kdop_tiers<14, ray3>("kdop_ray", near);
+        kdop_tiers<14, line3>("kdop_line", near);
+        kdop_tiers<26, ray3>("kdop_ray", near);
         {
             const auto cs = ray_triangle_set(near);
             auto truth = [](const rt& c) {

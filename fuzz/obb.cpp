@@ -3,7 +3,9 @@
 // patterns, with the axes taken from the bits (any parallelepiped, flat or degenerate) or a unit
 // frame. Exact answers must match; conservative/aggressive/classify keep their contracts; both
 // argument orders agree. Every call must survive NaN, infinities, subnormals and negative
-// extents. Any finding aborts.
+// extents. The k-DOP pairs too (kdop_point, kdop_segment, kdop_ray, kdop_line; K from byte 0 % 4,
+// bounds from the same doubles, so inverted or jointly empty slabs occur), against the same LP
+// with the k-DOP as its slab rows. Any finding aborts.
 #include "../tests/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <array>
@@ -39,6 +41,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     (void)intersects<approximate>(o, tri);
     (void)classify(o, pl);
     (void)method::obb_obb_gottschalk(o, o2);
+    {
+        kdop<26> kd{};
+        for (unsigned i = 0; i < 13; ++i) kd.min[i] = v[i], kd.max[i] = v[i + 11];
+        (void)intersects<approximate>(kd, seg);
+        (void)intersects<conservative>(ray, kd);
+        (void)intersects<aggressive>(kd, line);
+        (void)intersects<exact>(kd, p);
+        (void)classify(kd, ray);
+    }
     for (double x : v)
         if (!std::isfinite(x)) return 0;
     // The oracle needs ordered numbers: extents as magnitudes (a negative extent is an empty box,
@@ -60,6 +71,23 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     check(line, w);
     check(w, tri);
     check(w, pl);
+    // The k-DOP pairs (the slab family): K from byte 0, bounds from the doubles (maybe inverted or
+    // jointly empty, both of which the LP's slab rows express exactly).
+    auto kdops = [&]<int K>() {
+        kdop<K> kd{};
+        for (unsigned i = 0; i < K / 2; ++i) kd.min[i] = v[i % 24], kd.max[i] = v[(i + 13) % 24];
+        check(kd, p);
+        check(kd, seg);
+        check(kd, ray);
+        check(kd, line);
+        if (contains(kd, p) != intersects(kd, p)) std::abort();
+    };
+    switch (size == 0 ? 0 : data[0] % 4) {
+    case 0: kdops.template operator()<6>(); break;
+    case 1: kdops.template operator()<14>(); break;
+    case 2: kdops.template operator()<18>(); break;
+    default: kdops.template operator()<26>(); break;
+    }
     // A negative extent is the empty box.
     if (intersects(obb3{w.center, w.axes, {-1.0, w.half_extents[1], w.half_extents[2]}}, p)) std::abort();
     return 0;

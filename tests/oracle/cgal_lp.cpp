@@ -1,7 +1,8 @@
 // The LP oracle: do two convex sets meet? Exact linear-programming feasibility with CGAL's
 // QP_solver over CGAL::Gmpzf (exact big floats). Every LP coefficient is an input double as
 // given, never a computed one: a box is c + sum t_i a_i with |t_i| <= h_i, a segment or a
-// triangle the convex combinations of its vertices, a plane n . x = offset.
+// triangle the convex combinations of its vertices, a plane n . x = offset, a k-DOP its slabs
+// lo <= n . x <= hi (n the integer directions).
 #include "cgal_oracle.hpp"
 
 #include <stdexcept>
@@ -17,6 +18,14 @@ using program = CGAL::Quadratic_program<double>;
 
 // Adds the rows and variables of s meeting the common point x (variables 0, 1, 2).
 void add(program& lp, int& var, int& row, const convex_set& s) {
+    for (const auto& sl : s.slabs) // lo <= n . x <= hi, two rows
+        for (const auto [bound, rel] : {std::pair{sl.lo, CGAL::LARGER}, std::pair{sl.hi, CGAL::SMALLER}}) {
+            for (int k = 0; k < 3; ++k) lp.set_a(k, row, sl.n[static_cast<unsigned>(k)]);
+            lp.set_b(row, bound);
+            lp.set_r(row, rel);
+            ++row;
+        }
+    if (!s.plane && s.points.empty() && s.generators.empty()) return; // the slabs alone
     if (s.plane) {
         for (int k = 0; k < 3; ++k) lp.set_a(k, row, s.normal[static_cast<unsigned>(k)]);
         lp.set_b(row, s.offset);

@@ -57,11 +57,16 @@ struct convex_set {
         bool has_lo = false, has_hi = false;
         double lo = 0, hi = 0;
     };
+    struct slab { // lo <= n . x <= hi
+        std::array<double, 3> n;
+        double lo, hi;
+    };
     std::vector<std::array<double, 3>> points;
     std::vector<generator> generators;
     bool plane = false;
     std::array<double, 3> normal{};
     double offset = 0;
+    std::vector<slab> slabs; // further constraints on the point; with no points, generators or plane: the slabs alone (a k-DOP)
 };
 // Do a and b meet? Exact LP feasibility (CGAL QP_solver over Gmpzf), for every pair of convex
 // sets, the OBB, k-DOP and frustum pairs that CGAL's kernel cannot express among them.

@@ -112,6 +112,15 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
         every_tier(holey, q, yes);
         yes += contains(me, q) + contains(holey, q);
         n += 11 * 5 + 2;
+        // the k-DOP pairs: special bounds (inverted, jointly empty, NaN as they come)
+        kdop<14> kd{};
+        for (unsigned slab = 0; slab < 7; ++slab) kd.min[slab] = special(r), kd.max[slab] = special(r);
+        every_tier(kd, q, yes);
+        every_tier(kd, seg, yes);
+        every_tier(kd, ray, yes);
+        every_tier(kd, line, yes);
+        yes += contains(kd, q);
+        n += 4 * 5 + 1;
         // in the plane
         auto p2 = [&] { return point2{special(r), special(r)}; };
         auto v2 = [&] { return vec2{special(r), special(r)}; };
@@ -178,4 +187,7 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
     CHECK_FALSE(intersects(point2{0.5, 0.5}, polygon2{fv, support::frame_ends}));
     CHECK_FALSE(intersects(support::frame, segment2{{0.5, 0.5}, {inf_, 0.5}}));
     CHECK_FALSE(intersects(support::frame, polygon2{fv, support::frame_ends}));
+    CHECK_FALSE(intersects(kdop<6>{{0, 0, 0}, {1, 1, inf_}}, point3{0.5, 0.5, 0.5}));
+    CHECK_FALSE(intersects(kdop<6>{{0, 0, 0}, {1, 1, 1}}, segment3{{0.5, 0.5, 0.5}, {nan_, 0, 0}})); // one end inside
+    CHECK_FALSE(intersects(kdop<6>{{0, 0, 0}, {1, 1, 1}}, ray3{{0.5, 0.5, 0.5}, {inf_, 0, 0}}));
 }

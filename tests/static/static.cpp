@@ -8,6 +8,7 @@
 import incidence;
 #include "../support/mesh_fixtures.hpp"
 #include "../support/polygon_fixtures.hpp"
+#include "../support/kdop_fixtures.hpp"
 
 using namespace incidence;
 
@@ -162,6 +163,12 @@ static_assert(intersects(line2{{0, 8}, {1, -1}}, support::frame) && !intersects(
 static_assert(intersects(support::frame, support::c_shape) && contains(support::c_shape, point2{3, 3.5}));
 static_assert(polygon2::make(support::frame_vertices, support::frame_ends).has_value());
 static_assert(polygon2::make(support::c_vertices, std::span<const std::uint32_t, 1>(support::frame_ends.data(), 1)).error().code == errc::index_out_of_range);
+// k-DOPs (support/kdop_fixtures.hpp): the generalised slab test
+static_assert(intersects(support::corner_cut, point3{1, 1, 0.5}) && !intersects(support::corner_cut, point3{1, 1, 0x1.0000000000001p-1}));
+static_assert(intersects(support::corner_cut, ray3{{3, -1, 0.5}, {-1, 1, 0}}) && !intersects(support::corner_cut, ray3{{2, 2, 2}, {1, 1, 1}}));
+static_assert(intersects(segment3{{2, 2, 0.5}, {1, 1, 0.5}}, support::corner_cut) && !intersects(support::empty14, segment3{{-5, -5, -5}, {5, 5, 5}}));
+static_assert(intersects(support::corner_cut, line3{{1, 1, 0.5}, {1, -1, 0}}) && !intersects(support::corner_cut, line3{{1, 1, 1}, {1, -1, 0}}));
+static_assert(intersects(support::edge_cut, point3{1, 0.5, 0.25}) && contains(support::unit26, point3{0, 0, 0}));
 // the same in the plane
 static_assert(intersects(segment2{{0, 0}, {2, 0}}, segment2{{2, 0}, {3, 5}}));
 static_assert(!intersects(segment2{{0, 0}, {2, 0}}, segment2{{0x1.0000000000001p1, 0}, {3, 0}}));

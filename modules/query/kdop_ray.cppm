@@ -1,0 +1,25 @@
+// kdop<K> against ray3.
+// Semantics: the closed k-DOP (possibly empty; an empty slab or a non-finite bound: no set) and
+// the closed ray; grazing a face, an edge or a corner counts; a zero direction is the point
+// `origin`.
+// Method (exact tiers): the generalised slab test (kdop_point.cppm) over t >= 0: signs of degree
+// <= 2.
+// Source: Kay and Kajiya, SIGGRAPH 1986 (slabs); Klosowski et al., IEEE TVCG 4(1) 1998 (k-DOPs).
+// Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
+// magnitudes lie in [2^-500, 2^500], wrong only when a deciding sign is within 2^-40 of its
+// permanent (tests/query/kdop_ray.cpp).
+export module incidence.query:kdop_ray;
+import incidence.core;
+import incidence.arith;
+import incidence.shapes;
+import :aabb_ray;
+import :kdop_point;
+
+export namespace incidence::pair {
+
+template <class K, int N>
+[[nodiscard]] constexpr bool intersects(K& k, const kdop<N>& b, const ray3& r) {
+    return kdopq::slabs<slab_extent::ray>(k, b, r.origin, r.direction, r.origin);
+}
+
+} // namespace incidence::pair

@@ -1,0 +1,64 @@
+// Checks for the k-DOP linear pairs (tests/query/kdop_<shape>.cpp: a point, segment,
+// ray or line against kdop<K>, K = 6, 14, 18, 26): the LP oracle (the k-DOP as its slabs
+// lo <= d . x <= hi, exact) with every tier contract, and the same answer for rewritten partners
+// and exact translations of both. Include after check.hpp, flat_checks.hpp and lp_shapes.hpp; cases in kdop_cases.hpp.
+#pragma once
+#include <string>
+#include "kdop_cases.hpp"
+
+namespace support {
+
+template <int K, class B>
+void kdop_oracle(const std::string& name, long n, double approx_bound) {
+    using namespace incidence;
+    rng r(seed() + static_cast<std::uint64_t>(K));
+    for (int near = 0; near < 2; ++near) {
+        tally t{name + " " + std::to_string(K) + "-dop" + (near ? " near-degenerate" : " random")};
+        long skipped = 0;
+        for (long i = 0; i < n; ++i) {
+            const auto c = near ? kdop_near<K, B>(r) : kdop_random<K, B>(r);
+            bool ok = c.has_value();
+            std::optional<bool> truth;
+            if (ok) {
+                for (double x : to_flat(c->second).v) ok = ok && std::isfinite(x);
+                if (ok) truth = oracle::lp_intersect_verified(lp(c->first), lp(c->second));
+            }
+            if (!truth) { ++skipped; continue; } // overflowed, or the LP's certificate check declined
+            check_pair(t, c->first, c->second, *truth, approx_bound, [&] { return shape_str(c->first) + " " + shape_str(c->second); });
+        }
+        std::printf("[cases] %s: %ld generated cases skipped (not finite, or the oracle declined)\n", t.name.c_str(), skipped);
+        t.print();
+        require_contracts(t);
+    }
+}
+
+template <int K, class B>
+void kdop_symmetries(const std::string& name, long n) {
+    using namespace incidence;
+    rng r(seed() + 71 + static_cast<std::uint64_t>(K));
+    long checked = 0, bad = 0, yes = 0;
+    for (long i = 0; i < n; ++i) {
+        const auto c = (i % 2) ? kdop_near<K, B>(r) : kdop_random<K, B>(r);
+        if (!c) continue;
+        const auto& [a, b] = *c;
+        const bool e = intersects(a, b);
+        yes += e;
+        auto same = [&](bool x) {
+            ++checked;
+            if (x != e && ++bad <= 5) std::printf("  %s differs: %s %s\n", name.c_str(), shape_str(a).c_str(), shape_str(b).c_str());
+        };
+        same(intersects(b, a));
+        for (const auto& b2 : same_set(b)) same(intersects(a, b2));
+        const vec3 v{std::ldexp(double(r.integer(-64, 64)), r.integer(-4, 20)), std::ldexp(double(r.integer(-64, 64)), r.integer(-4, 20)),
+                     std::ldexp(double(r.integer(-64, 64)), r.integer(-4, 20))};
+        const auto at = translated(a, v);
+        const auto bt = translated(b, v);
+        if (at && bt) same(intersects(*at, *bt));
+    }
+    std::printf("[cases] %s %d-dop rewrites and exact translations: %ld checked (%ld pairs intersect), %ld differ\n", name.c_str(), K, checked,
+                yes, bad);
+    CHECK(bad == 0);
+    CHECK(yes > 0);
+}
+
+} // namespace support
