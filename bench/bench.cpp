@@ -353,6 +353,9 @@ void register_all() {
         kdop_tiers<14, ray3>("kdop_ray", near);
         kdop_tiers<14, line3>("kdop_line", near);
         kdop_tiers<26, ray3>("kdop_ray", near);
+        kdop_tiers<14, kdop<14>>("kdop_kdop", near);
+        kdop_tiers<26, kdop<26>>("kdop_kdop", near);
+        kdop_tiers<14, aabb3>("aabb_kdop", near);
         {
             const auto cs = ray_triangle_set(near);
             auto truth = [](const rt& c) {

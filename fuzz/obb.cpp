@@ -3,7 +3,8 @@
 // patterns, with the axes taken from the bits (any parallelepiped, flat or degenerate) or a unit
 // frame. Exact answers must match; conservative/aggressive/classify keep their contracts; both
 // argument orders agree. Every call must survive NaN, infinities, subnormals and negative
-// extents. The k-DOP pairs too (kdop_point, kdop_segment, kdop_ray, kdop_line; K from byte 0 % 4,
+// extents. The k-DOP pairs too (kdop_point, kdop_segment, kdop_ray, kdop_line, kdop_kdop with the
+// same K and with a 14-DOP, aabb_kdop, contains(kdop, aabb | segment); K from byte 0 % 4,
 // bounds from the same doubles, so inverted or jointly empty slabs occur), against the same LP
 // with the k-DOP as its slab rows. Any finding aborts.
 #include "../tests/oracle/cgal_oracle.hpp"
@@ -49,6 +50,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         (void)intersects<aggressive>(kd, line);
         (void)intersects<exact>(kd, p);
         (void)classify(kd, ray);
+        (void)intersects<exact>(kd, kd);
+        (void)intersects<conservative>(box, kd);
+        (void)contains<aggressive>(kd, box);
     }
     for (double x : v)
         if (!std::isfinite(x)) return 0;
@@ -81,6 +85,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         check(kd, ray);
         check(kd, line);
         if (contains(kd, p) != intersects(kd, p)) std::abort();
+        // two k-DOPs (the same K, and a 14-DOP), a box: slab overlap and the Farkas certificates
+        kdop<K> kd2{};
+        for (unsigned i = 0; i < K / 2; ++i) kd2.min[i] = v[(i + 5) % 24], kd2.max[i] = v[(i + 19) % 24];
+        kdop<14> kd14{};
+        for (unsigned i = 0; i < 7; ++i) kd14.min[i] = v[(i + 3) % 24], kd14.max[i] = v[(i + 16) % 24];
+        check(kd, kd2);
+        check(kd14, kd);
+        if (box.min.x <= box.max.x && box.min.y <= box.max.y && box.min.z <= box.max.z) {
+            check(box, kd);
+            bool all = true;
+            for (int j = 0; j < 8; ++j) all = all && intersects(kd, point3{(j & 1) ? q.x : p.x, (j & 2) ? q.y : p.y, (j & 4) ? q.z : p.z});
+            if (contains(kd, box) != all) std::abort();
+        }
+        if (contains(kd, seg) != (intersects(kd, seg.a) && intersects(kd, seg.b))) std::abort();
     };
     switch (size == 0 ? 0 : data[0] % 4) {
     case 0: kdops.template operator()<6>(); break;

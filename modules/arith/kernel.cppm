@@ -236,6 +236,10 @@ struct filter_kernel {
         if (s == 0) failed = true;
         return to_sign(s);
     }
+    // A sign for a check whose failure decides nothing (a candidate witness point): zero when the
+    // filter cannot prove it, and the query's certainty is untouched.
+    template <class F>
+    [[nodiscard, gnu::always_inline]] constexpr sign probe(const F& f) { return to_sign(proven_sign(f(lift_filter{}))); }
 };
 
 struct exact_kernel {
@@ -243,6 +247,14 @@ struct exact_kernel {
     template <class F>
     [[nodiscard, gnu::always_inline]] constexpr sign sgn(const F& f) { return exact_sign(f, valid); }
 };
+
+// probe(k, f): k's sign of f for a check that may fail without consequence; only a positive
+// result may be relied on (the filter reports zero for what it cannot prove).
+template <class K, class F>
+[[nodiscard, gnu::always_inline]] constexpr sign probe(K& k, const F& f) {
+    if constexpr (requires { k.probe(f); }) return k.probe(f);
+    else return k.sgn(f);
+}
 
 // sign(a - b) for two doubles, exactly, by comparison. A kernel that observes decisions (the tests'
 // margin kernel) sees it through observe_compare; the others pay nothing.

@@ -167,6 +167,8 @@ inline constexpr std::tuple kdop_families{
     family<kdop<14>, segment3, 0>{"kdop_segment", "obb", "signs in double", {}},
     family<kdop<14>, ray3, 0>{"kdop_ray", "obb", "signs in double", {}},
     family<kdop<14>, line3, 0>{"kdop_line", "obb", "signs in double", {}},
+    family<kdop<14>, kdop<14>, 0>{"kdop_kdop", "obb", "signs in double", {}},
+    family<aabb3, kdop<14>, 0>{"aabb_kdop", "obb", "signs in double", {}},
 };
 template <class F>
 constexpr void for_each_listed_family(F&& f) {

@@ -122,4 +122,14 @@ template <class K, int N>
 template <class K, int N>
 [[nodiscard]] constexpr bool contains(K& k, const kdop<N>& b, const point3& p) { return intersects(k, b, p); }
 
+namespace kdopq {
+// Every one of the n points in the k-DOP: a convex shape with those vertices lies inside it.
+template <class K, int N>
+[[nodiscard]] constexpr bool contains_all(K& k, const kdop<N>& b, const point3* pts, int n) {
+    for (int i = 0; i < n; ++i)
+        if (!intersects(k, b, pts[i])) return false;
+    return true;
+}
+} // namespace kdopq
+
 } // namespace incidence::pair

@@ -88,6 +88,8 @@ export import :kdop_point;
 export import :kdop_segment;
 export import :kdop_ray;
 export import :kdop_line;
+export import :kdop_kdop;
+export import :aabb_kdop;
 import incidence.core;
 import incidence.arith;
 import incidence.shapes;

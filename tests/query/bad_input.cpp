@@ -119,8 +119,13 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
         every_tier(kd, seg, yes);
         every_tier(kd, ray, yes);
         every_tier(kd, line, yes);
-        yes += contains(kd, q);
-        n += 4 * 5 + 1;
+        kdop<26> kd2{};
+        for (unsigned slab = 0; slab < 13; ++slab) kd2.min[slab] = special(r), kd2.max[slab] = special(r);
+        every_tier(kd, kd, yes);
+        every_tier(kd, kd2, yes);
+        every_tier(b, kd, yes);
+        yes += contains(kd, q) + contains(kd, b) + contains(kd2, seg);
+        n += 7 * 5 + 3;
         // in the plane
         auto p2 = [&] { return point2{special(r), special(r)}; };
         auto v2 = [&] { return vec2{special(r), special(r)}; };

@@ -169,6 +169,13 @@ static_assert(intersects(support::corner_cut, ray3{{3, -1, 0.5}, {-1, 1, 0}}) &&
 static_assert(intersects(segment3{{2, 2, 0.5}, {1, 1, 0.5}}, support::corner_cut) && !intersects(support::empty14, segment3{{-5, -5, -5}, {5, 5, 5}}));
 static_assert(intersects(support::corner_cut, line3{{1, 1, 0.5}, {1, -1, 0}}) && !intersects(support::corner_cut, line3{{1, 1, 1}, {1, -1, 0}}));
 static_assert(intersects(support::edge_cut, point3{1, 0.5, 0.25}) && contains(support::unit26, point3{0, 0, 0}));
+// two k-DOPs, a box and a k-DOP: slab overlap, then the Farkas certificates (x + y + z <= 5/2
+// against x, y, z >= 7/8 in every slab-overlapping pair below)
+static_assert(!intersects(support::corner_cut, kdop<14>{{0.875, 0.875, 0.875, -5, -5, -5, -5}, {2, 2, 2, 6, 5, 5, 5}}));
+static_assert(intersects(support::corner_cut, kdop<14>{{0.8125, 0.8125, 0.8125, -5, -5, -5, -5}, {2, 2, 2, 6, 5, 5, 5}}));
+static_assert(!intersects(support::edge_cut, aabb3{{0.875, 0.875, 0}, {2, 2, 1}}) && intersects(aabb3{{0.75, 0.75, 0}, {2, 2, 1}}, support::edge_cut));
+static_assert(intersects(support::edge_cut, support::corner_cut) && !intersects(support::empty14, support::unit6));
+static_assert(contains(support::corner_cut, aabb3{{0, 0, 0}, {1, 1, 0.5}}) && !contains(support::corner_cut, aabb3{{0, 0, 0}, {1, 1, 0x1.0000000000001p-1}}));
 // the same in the plane
 static_assert(intersects(segment2{{0, 0}, {2, 0}}, segment2{{2, 0}, {3, 5}}));
 static_assert(!intersects(segment2{{0, 0}, {2, 0}}, segment2{{0x1.0000000000001p1, 0}, {3, 0}}));

@@ -41,7 +41,8 @@ void check_pair(tally& t, const A& a, const B& b, bool truth, double bound, cons
     if (intersects<approximate>(a, b) != truth) {
         ++t.approx_wrong;
         support_margin::margin_kernel mk;
-        (void)pair::intersects(mk, a, b);
+        if constexpr (requires { pair::intersects(mk, a, b); }) (void)pair::intersects(mk, a, b);
+        else (void)pair::intersects(mk, b, a); // the pair is written in the other order
         if (mk.min_rel > bound) {
             if (++t.approx_outside_bound <= 5)
                 std::printf("  approximate wrong at margin %g: %s\n", mk.min_rel, describe().c_str());

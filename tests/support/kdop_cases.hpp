@@ -12,6 +12,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace support {
@@ -30,9 +31,88 @@ std::optional<incidence::kdop<K>> kdop_around(const std::vector<incidence::point
     return k.value();
 }
 
+template <class B>
+struct is_kdop : std::false_type {};
+template <int M>
+struct is_kdop<incidence::kdop<M>> : std::true_type {};
+
+// Two k-DOPs (kdop_kdop), near-degenerate: clouds P and Q of small dyadic points. Q starts at X,
+// the extreme point of P in a direction d_s, and lies beyond or on P's face there (d_s . (q - X)
+// >= 0, X itself left out), so the two touch that face's plane or are separated by it, and
+// whether they meet is up to the other slabs; or Q is P moved by the exact offset that lays its
+// bottom face on P's top face, plus a slide along that face (faces overlapping, touching at an
+// edge or apart); or Q is a cloud around X (interpenetrating). Then one random
+// exact-or-nudged scale and translation for both clouds.
+template <int K, int M>
+std::optional<std::pair<incidence::kdop<K>, incidence::kdop<M>>> kdop_pair_near(rng& r) {
+    using namespace incidence;
+    const point3 c = small_point(r);
+    std::vector<point3> P, Q;
+    auto cloud = [&](std::vector<point3>& v, point3 at, int n) {
+        for (int i = 0; i < n; ++i) v.push_back({at.x + r.integer(-8, 8) * 0.25, at.y + r.integer(-8, 8) * 0.25, at.z + r.integer(-8, 8) * 0.25});
+    };
+    cloud(P, c, r.integer(4, 8));
+    const auto dirs = kdop<26>::directions();
+    const direction3 ds = dirs[static_cast<unsigned>(r.integer(0, 12))];
+    auto dotd = [&](vec3 p) { return ds.x * p.x + ds.y * p.y + ds.z * p.z; }; // exact: small dyadics
+    point3 X = P[0], Y = P[0];
+    for (const auto& p : P) {
+        if (dotd(p - point3{0, 0, 0}) > dotd(X - point3{0, 0, 0})) X = p;
+        if (dotd(p - point3{0, 0, 0}) < dotd(Y - point3{0, 0, 0})) Y = p;
+    }
+    const int mode = r.integer(0, 2);
+    if (mode == 0) {
+        const int n = r.integer(3, 7);
+        while (static_cast<int>(Q.size()) < n) {
+            vec3 o{r.integer(-8, 8) * 0.25, r.integer(-8, 8) * 0.25, r.integer(-8, 8) * 0.25};
+            if (r.integer(0, 2) == 0) o = cross(vec3{double(ds.x), double(ds.y), double(ds.z)}, o); // on the face's plane
+            if (dotd(o) < 0) o = vec3{-o.x, -o.y, -o.z};
+            if (o.x == 0 && o.y == 0 && o.z == 0) continue;
+            Q.push_back({X.x + o.x, X.y + o.y, X.z + o.z});
+        }
+    } else if (mode == 1) {
+        vec3 t = X - Y;
+        const vec3 slide = cross(vec3{double(ds.x), double(ds.y), double(ds.z)}, vec3{r.integer(-4, 4) * 0.25, r.integer(-4, 4) * 0.25, r.integer(-4, 4) * 0.25});
+        t = vec3{t.x + slide.x, t.y + slide.y, t.z + slide.z};
+        for (const auto& p : P) Q.push_back({p.x + t.x, p.y + t.y, p.z + t.z});
+    } else {
+        cloud(Q, X, r.integer(4, 8));
+    }
+    transform tr = random_transform(r, true, true);
+    for (auto& p : P) p = moved(p, tr);
+    for (auto& p : Q) p = moved(p, tr);
+    const auto a = kdop_around<K>(P);
+    const auto b = kdop_around<M>(Q);
+    if (!a || !b) return std::nullopt;
+    return std::pair{*a, *b};
+}
+// Two k-DOPs, random: the k-DOPs of two clouds of 4 to 8 random points within 0.4 of centres in
+// [-0.6, 0.6]^3, at one random scale.
+template <int K, int M>
+std::optional<std::pair<incidence::kdop<K>, incidence::kdop<M>>> kdop_pair_random(rng& r) {
+    using namespace incidence;
+    std::vector<point3> P, Q;
+    auto cloud = [&](std::vector<point3>& v) {
+        const point3 c{r.uniform(-0.6, 0.6), r.uniform(-0.6, 0.6), r.uniform(-0.6, 0.6)};
+        const int n = r.integer(4, 8);
+        for (int i = 0; i < n; ++i) v.push_back({c.x + r.uniform(-0.4, 0.4), c.y + r.uniform(-0.4, 0.4), c.z + r.uniform(-0.4, 0.4)});
+    };
+    cloud(P);
+    cloud(Q);
+    transform tr = random_transform(r, false, true);
+    for (auto& p : P) p = moved(p, tr);
+    for (auto& p : Q) p = moved(p, tr);
+    const auto a = kdop_around<K>(P);
+    const auto b = kdop_around<M>(Q);
+    if (!a || !b) return std::nullopt;
+    return std::pair{*a, *b};
+}
+
 template <int K, class B>
 std::optional<std::pair<incidence::kdop<K>, B>> kdop_near(rng& r) {
     using namespace incidence;
+    if constexpr (is_kdop<B>::value) return kdop_pair_near<K, B::slabs * 2>(r);
+    else {
     const point3 c = small_point(r);
     std::vector<point3> pts;
     const int n = r.integer(4, 8);
@@ -59,10 +139,13 @@ std::optional<std::pair<incidence::kdop<K>, B>> kdop_near(rng& r) {
     const auto kd = kdop_around<K>(pts);
     if (!kd) return std::nullopt;
     return std::pair{*kd, realise(b, tr)};
+    }
 }
 template <int K, class B>
 std::optional<std::pair<incidence::kdop<K>, B>> kdop_random(rng& r) {
     using namespace incidence;
+    if constexpr (is_kdop<B>::value) return kdop_pair_random<K, B::slabs * 2>(r);
+    else {
     const point3 c{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)};
     std::vector<point3> pts;
     const int n = r.integer(4, 8);
@@ -72,6 +155,48 @@ std::optional<std::pair<incidence::kdop<K>, B>> kdop_random(rng& r) {
     const auto kd = kdop_around<K>(pts);
     if (!kd) return std::nullopt;
     return std::pair{*kd, realise(random_shape<B>(r, false, 0.0), tr)};
+    }
+}
+template <int K>
+std::vector<incidence::kdop<K>> same_set(const incidence::kdop<K>& b) { return {b}; }
+template <int K>
+bool finite_shape(const incidence::kdop<K>& b) {
+    for (unsigned i = 0; i < b.min.size(); ++i)
+        if (!std::isfinite(b.min[i]) || !std::isfinite(b.max[i])) return false;
+    return true;
+}
+template <class S>
+bool finite_shape(const S& s) {
+    for (double x : to_flat(s).v)
+        if (!std::isfinite(x)) return false;
+    return true;
+}
+
+// contains(kdop, B) cases where B lies inside or just pokes out: the k-DOP of a cloud that has
+// B's vertices among its points (so B touches the boundary), B then nudged by one ulp outward at
+// one coordinate or not.
+template <int K, class B>
+std::optional<std::pair<incidence::kdop<K>, B>> kdop_inside_case(rng& r) {
+    using namespace incidence;
+    const point3 c = small_point(r);
+    auto pt = [&] { return point3{c.x + r.integer(-8, 8) * 0.25, c.y + r.integer(-8, 8) * 0.25, c.z + r.integer(-8, 8) * 0.25}; };
+    std::vector<point3> pts;
+    for (int i = r.integer(0, 5); i > 0; --i) pts.push_back(pt());
+    transform tr = random_transform(r, true, true);
+    for (auto& p : pts) p = moved(p, tr);
+    B b{}; // moved first (a nudged transform rounds each call its own way), then its vertices join the cloud
+    if constexpr (std::is_same_v<B, aabb3>) {
+        b = realise(aabb3{pt(), pt()}, tr);
+        for (int i = 0; i < 8; ++i) pts.push_back({(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z});
+        if (r.coin()) b.max.z = std::nextafter(b.max.z, 1e308);
+    } else {
+        b = realise(segment3{pt(), pt()}, tr);
+        pts.push_back(b.a), pts.push_back(b.b);
+        if (r.coin()) b.b.x = std::nextafter(b.b.x, r.coin() ? 1e308 : -1e308);
+    }
+    const auto kd = kdop_around<K>(pts);
+    if (!kd) return std::nullopt;
+    return std::pair{*kd, b};
 }
 
 // Exact translation of a k-DOP by v (small dyadic components): every bound moved by d . v when

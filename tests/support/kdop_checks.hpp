@@ -4,6 +4,8 @@
 // and exact translations of both. Include after check.hpp, flat_checks.hpp and lp_shapes.hpp; cases in kdop_cases.hpp.
 #pragma once
 #include <string>
+#include <type_traits>
+#include <vector>
 #include "kdop_cases.hpp"
 
 namespace support {
@@ -20,7 +22,7 @@ void kdop_oracle(const std::string& name, long n, double approx_bound) {
             bool ok = c.has_value();
             std::optional<bool> truth;
             if (ok) {
-                for (double x : to_flat(c->second).v) ok = ok && std::isfinite(x);
+                ok = finite_shape(c->second);
                 if (ok) truth = oracle::lp_intersect_verified(lp(c->first), lp(c->second));
             }
             if (!truth) { ++skipped; continue; } // overflowed, or the LP's certificate check declined
@@ -59,6 +61,50 @@ void kdop_symmetries(const std::string& name, long n) {
                 yes, bad);
     CHECK(bad == 0);
     CHECK(yes > 0);
+}
+
+// contains(kdop, B) for B = aabb3 or segment3 against the LP oracle (B's vertices each in the
+// k-DOP's slabs): every tier contract, on near-degenerate, random and inside cases.
+template <int K, class B>
+void kdop_contains_oracle(const std::string& name, long n, double approx_bound) {
+    using namespace incidence;
+    rng r(seed() + 37 + static_cast<std::uint64_t>(K));
+    tally t{name + " " + std::to_string(K) + "-dop contains"};
+    long yes = 0;
+    for (long i = 0; i < 3 * n; ++i) {
+        const auto c = i % 3 == 2 ? kdop_inside_case<K, B>(r) : (i % 3 ? kdop_near<K, B>(r) : kdop_random<K, B>(r));
+        if (!c || !finite_shape(c->second)) continue;
+        const auto& [a, b] = *c;
+        std::vector<point3> v;
+        if constexpr (std::is_same_v<B, aabb3>) {
+            if (!(b.min.x <= b.max.x && b.min.y <= b.max.y && b.min.z <= b.max.z)) continue;
+            for (int j = 0; j < 8; ++j) v.push_back({(j & 1) ? b.max.x : b.min.x, (j & 2) ? b.max.y : b.min.y, (j & 4) ? b.max.z : b.min.z});
+        } else v = {b.a, b.b};
+        bool truth = true;
+        for (const auto& p : v) truth = truth && oracle::lp_intersect(lp(a), lp(p));
+        yes += truth;
+        ++t.n;
+        auto say = [&](const char* what, long& count) {
+            if (++count <= 5) std::printf("  contains: %s: %s %s\n", what, shape_str(a).c_str(), shape_str(b).c_str());
+        };
+        if (contains<exact>(a, b) != truth) say("exact disagrees", t.exact_wrong);
+        if (truth && !contains<conservative>(a, b)) say("conservative misses", t.conservative_violations);
+        if (!truth && contains<aggressive>(a, b)) say("aggressive false yes", t.aggressive_violations);
+        const certainty cl = classify_contains(a, b);
+        if (cl == certainty::uncertain) ++t.uncertain;
+        else if ((cl == certainty::yes) != truth) say("classify wrong", t.classify_wrong);
+        if (contains<approximate>(a, b) != truth) {
+            ++t.approx_wrong;
+            support_margin::margin_kernel mk;
+            (void)pair::contains(mk, a, b);
+            if (mk.min_rel > approx_bound) say("approximate wrong outside its bound", t.approx_outside_bound);
+        }
+    }
+    t.print();
+    std::printf("[cases] %s: %ld of %ld contained\n", t.name.c_str(), yes, t.n);
+    require_contracts(t);
+    CHECK(yes > 0);
+    CHECK(yes < t.n);
 }
 
 } // namespace support
