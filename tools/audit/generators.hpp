@@ -10,6 +10,7 @@
 //   ulp j:   move one coordinate of either shape by j ulps, up or down.
 // A family without a specialisation here does not compile: the audit covers every family.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
@@ -74,6 +75,21 @@ inline aabb3 tidy(aabb3 b) { // a nudge may swap a flat box's bounds
 }
 inline obb3 tidy(obb3 b) { // a nudge may make a zero extent negative
     for (double& h : b.half_extents) h = std::fabs(h);
+    return b;
+}
+// A k-DOP moves by shifting every bound by d_i . v (rounded: the moved k-DOP is the one its
+// bounds say).
+inline kdop<14> moved(kdop<14> b, vec3 v) {
+    const auto d = kdop<14>::directions();
+    for (unsigned i = 0; i < d.size(); ++i) {
+        const double dv = d[i].x * v.x + d[i].y * v.y + d[i].z * v.z;
+        b.min[i] += dv, b.max[i] += dv;
+    }
+    return b;
+}
+inline kdop<14> tidy(kdop<14> b) { // a nudge may invert a flat slab
+    for (unsigned i = 0; i < b.min.size(); ++i)
+        if (b.min[i] > b.max[i]) std::swap(b.min[i], b.max[i]);
     return b;
 }
 template <class S>
@@ -507,6 +523,102 @@ struct near_boundary<obb3, tetrahedron3> {
         const auto [b, p] = near_boundary<obb3, point3>::touching(r);
         const tetrahedron3 t = int_tetrahedron(r);
         return {b, moved(t, p - boundary_point(t, r))};
+    }
+};
+
+// The k-DOP pairs (K = 14 stands for every K): the 14-DOP of a few integer points, so every bound
+// is exact and attained; p the cloud's extreme point along one direction d_s (on that face) and
+// d_s the outward direction there.
+inline double dot_dir(direction3 d, vec3 v) { return d.x * v.x + d.y * v.y + d.z * v.z; }
+inline kdop<14> kdop_of_points(const point3* pts, int n) {
+    const auto d = kdop<14>::directions();
+    kdop<14> b{};
+    for (unsigned i = 0; i < d.size(); ++i) {
+        b.min[i] = b.max[i] = dot_dir(d[i], pts[0] - point3{0, 0, 0});
+        for (int j = 1; j < n; ++j) {
+            const double v = dot_dir(d[i], pts[j] - point3{0, 0, 0}); // exact: small integers
+            b.min[i] = std::min(b.min[i], v), b.max[i] = std::max(b.max[i], v);
+        }
+    }
+    return b;
+}
+struct kdop_touch {
+    kdop<14> box;
+    point3 p;
+    direction3 ds;
+    vec3 o; // d_s as a vector
+};
+inline kdop_touch touching_kdop(rng& r) {
+    const point3 c = int_point(r, 400);
+    point3 pts[8];
+    const int n = r.integer(4, 8);
+    for (int i = 0; i < n; ++i) pts[i] = c + int_vec(r, 300);
+    const direction3 ds = kdop<14>::directions()[static_cast<unsigned>(r.integer(0, 6))];
+    point3 X = pts[0];
+    for (int i = 1; i < n; ++i)
+        if (dot_dir(ds, pts[i] - X) > 0) X = pts[i];
+    return {kdop_of_points(pts, n), X, ds, vec3{double(ds.x), double(ds.y), double(ds.z)}};
+}
+// An integer vector w with d_s . w >= 0 (outwards or along the face).
+inline vec3 outward(rng& r, const kdop_touch& t, int lim) {
+    const vec3 w = int_vec(r, lim);
+    return dot_dir(t.ds, w) < 0 ? w * -1.0 : w;
+}
+template <>
+struct near_boundary<kdop<14>, point3> {
+    static std::pair<kdop<14>, point3> touching(rng& r) {
+        const auto t = touching_kdop(r);
+        return {t.box, t.p};
+    }
+};
+template <>
+struct near_boundary<kdop<14>, segment3> {
+    static std::pair<kdop<14>, segment3> touching(rng& r) { // from p outwards
+        const auto t = touching_kdop(r);
+        const point3 q = t.p + t.o * double(r.integer(1, 200)) + outward(r, t, 40);
+        return {t.box, r.coin() ? segment3{t.p, q} : segment3{q, t.p}};
+    }
+};
+template <>
+struct near_boundary<kdop<14>, ray3> {
+    static std::pair<kdop<14>, ray3> touching(rng& r) { // aimed at p from outside
+        const auto t = touching_kdop(r);
+        const point3 o = t.p + t.o * double(r.integer(1, 200)) + outward(r, t, 40);
+        return {t.box, ray3{o, t.p - o}};
+    }
+};
+template <>
+struct near_boundary<kdop<14>, line3> {
+    static std::pair<kdop<14>, line3> touching(rng& r) { // through p, in the face's plane
+        const auto t = touching_kdop(r);
+        vec3 d = cross(t.o, int_vec(r, 8));
+        if (d.x == 0 && d.y == 0 && d.z == 0) d = cross(t.o, vec3{1, 2, 3});
+        return {t.box, line3{t.p, d}};
+    }
+};
+template <>
+struct near_boundary<kdop<14>, kdop<14>> {
+    static std::pair<kdop<14>, kdop<14>> touching(rng& r) { // a cloud from p outwards, p included
+        const auto t = touching_kdop(r);
+        point3 q[8];
+        const int n = r.integer(3, 8);
+        q[0] = t.p;
+        for (int i = 1; i < n; ++i) q[i] = t.p + outward(r, t, 300);
+        return {t.box, kdop_of_points(q, n)};
+    }
+};
+template <>
+struct near_boundary<aabb3, kdop<14>> {
+    static std::pair<aabb3, kdop<14>> touching(rng& r) { // a box with its corner at p, outwards
+        const auto t = touching_kdop(r);
+        const double s[3] = {double(t.ds.x), double(t.ds.y), double(t.ds.z)};
+        double lo[3] = {t.p.x, t.p.y, t.p.z}, hi[3] = {t.p.x, t.p.y, t.p.z};
+        for (int i = 0; i < 3; ++i) {
+            const double e = r.integer(1, 300);
+            const bool up = s[i] > 0 || (s[i] == 0 && r.coin());
+            (up ? hi[i] : lo[i]) += up ? e : -e;
+        }
+        return {aabb3{{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}}, t.box};
     }
 };
 
