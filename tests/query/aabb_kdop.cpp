@@ -51,10 +51,7 @@ TEST_CASE("aabb_kdop: fixtures", "[aabb_kdop]") {
 }
 TEST_CASE("aabb_kdop: oracle, random and near-degenerate, K = 6, 14, 18, 26", "[aabb_kdop][oracle]") {
     const long n = support::cases(5000);
-    support::kdop_oracle<6, aabb3>("aabb_kdop", n, approx_bound);
-    support::kdop_oracle<14, aabb3>("aabb_kdop", n, approx_bound);
-    support::kdop_oracle<18, aabb3>("aabb_kdop", n, approx_bound);
-    support::kdop_oracle<26, aabb3>("aabb_kdop", n, approx_bound);
+    support::kdop_oracle_every_k<aabb3>("aabb_kdop", n, approx_bound);
 }
 TEST_CASE("aabb_kdop: contains(kdop, aabb | segment) against the oracle", "[aabb_kdop][oracle]") {
     const long n = support::cases(500);
@@ -64,8 +61,5 @@ TEST_CASE("aabb_kdop: contains(kdop, aabb | segment) against the oracle", "[aabb
 }
 TEST_CASE("aabb_kdop: both orders and exact translations give the same answer", "[aabb_kdop]") {
     const long n = support::cases(5000);
-    support::kdop_symmetries<6, aabb3>("aabb_kdop", n);
-    support::kdop_symmetries<14, aabb3>("aabb_kdop", n);
-    support::kdop_symmetries<18, aabb3>("aabb_kdop", n);
-    support::kdop_symmetries<26, aabb3>("aabb_kdop", n);
+    support::kdop_symmetries_every_k<aabb3>("aabb_kdop", n);
 }

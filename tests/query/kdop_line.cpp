@@ -38,15 +38,9 @@ TEST_CASE("kdop_line: fixtures", "[kdop_line]") {
 }
 TEST_CASE("kdop_line: oracle, random and near-degenerate, K = 6, 14, 18, 26", "[kdop_line][oracle]") {
     const long n = support::cases(5000);
-    support::kdop_oracle<6, line3>("kdop_line", n, approx_bound);
-    support::kdop_oracle<14, line3>("kdop_line", n, approx_bound);
-    support::kdop_oracle<18, line3>("kdop_line", n, approx_bound);
-    support::kdop_oracle<26, line3>("kdop_line", n, approx_bound);
+    support::kdop_oracle_every_k<line3>("kdop_line", n, approx_bound);
 }
 TEST_CASE("kdop_line: rewrites of the other shape and exact translations give the same answer", "[kdop_line]") {
     const long n = support::cases(5000);
-    support::kdop_symmetries<6, line3>("kdop_line", n);
-    support::kdop_symmetries<14, line3>("kdop_line", n);
-    support::kdop_symmetries<18, line3>("kdop_line", n);
-    support::kdop_symmetries<26, line3>("kdop_line", n);
+    support::kdop_symmetries_every_k<line3>("kdop_line", n);
 }

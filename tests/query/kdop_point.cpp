@@ -48,15 +48,9 @@ TEST_CASE("kdop_point: fixtures", "[kdop_point]") {
 }
 TEST_CASE("kdop_point: oracle, random and near-degenerate, K = 6, 14, 18, 26", "[kdop_point][oracle]") {
     const long n = support::cases(5000);
-    support::kdop_oracle<6, point3>("kdop_point", n, approx_bound);
-    support::kdop_oracle<14, point3>("kdop_point", n, approx_bound);
-    support::kdop_oracle<18, point3>("kdop_point", n, approx_bound);
-    support::kdop_oracle<26, point3>("kdop_point", n, approx_bound);
+    support::kdop_oracle_every_k<point3>("kdop_point", n, approx_bound);
 }
 TEST_CASE("kdop_point: rewrites of the other shape and exact translations give the same answer", "[kdop_point]") {
     const long n = support::cases(5000);
-    support::kdop_symmetries<6, point3>("kdop_point", n);
-    support::kdop_symmetries<14, point3>("kdop_point", n);
-    support::kdop_symmetries<18, point3>("kdop_point", n);
-    support::kdop_symmetries<26, point3>("kdop_point", n);
+    support::kdop_symmetries_every_k<point3>("kdop_point", n);
 }

@@ -39,15 +39,9 @@ TEST_CASE("kdop_ray: fixtures", "[kdop_ray]") {
 }
 TEST_CASE("kdop_ray: oracle, random and near-degenerate, K = 6, 14, 18, 26", "[kdop_ray][oracle]") {
     const long n = support::cases(5000);
-    support::kdop_oracle<6, ray3>("kdop_ray", n, approx_bound);
-    support::kdop_oracle<14, ray3>("kdop_ray", n, approx_bound);
-    support::kdop_oracle<18, ray3>("kdop_ray", n, approx_bound);
-    support::kdop_oracle<26, ray3>("kdop_ray", n, approx_bound);
+    support::kdop_oracle_every_k<ray3>("kdop_ray", n, approx_bound);
 }
 TEST_CASE("kdop_ray: rewrites of the other shape and exact translations give the same answer", "[kdop_ray]") {
     const long n = support::cases(5000);
-    support::kdop_symmetries<6, ray3>("kdop_ray", n);
-    support::kdop_symmetries<14, ray3>("kdop_ray", n);
-    support::kdop_symmetries<18, ray3>("kdop_ray", n);
-    support::kdop_symmetries<26, ray3>("kdop_ray", n);
+    support::kdop_symmetries_every_k<ray3>("kdop_ray", n);
 }

@@ -40,15 +40,9 @@ TEST_CASE("kdop_segment: fixtures", "[kdop_segment]") {
 }
 TEST_CASE("kdop_segment: oracle, random and near-degenerate, K = 6, 14, 18, 26", "[kdop_segment][oracle]") {
     const long n = support::cases(5000);
-    support::kdop_oracle<6, segment3>("kdop_segment", n, approx_bound);
-    support::kdop_oracle<14, segment3>("kdop_segment", n, approx_bound);
-    support::kdop_oracle<18, segment3>("kdop_segment", n, approx_bound);
-    support::kdop_oracle<26, segment3>("kdop_segment", n, approx_bound);
+    support::kdop_oracle_every_k<segment3>("kdop_segment", n, approx_bound);
 }
 TEST_CASE("kdop_segment: rewrites of the other shape and exact translations give the same answer", "[kdop_segment]") {
     const long n = support::cases(5000);
-    support::kdop_symmetries<6, segment3>("kdop_segment", n);
-    support::kdop_symmetries<14, segment3>("kdop_segment", n);
-    support::kdop_symmetries<18, segment3>("kdop_segment", n);
-    support::kdop_symmetries<26, segment3>("kdop_segment", n);
+    support::kdop_symmetries_every_k<segment3>("kdop_segment", n);
 }

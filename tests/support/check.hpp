@@ -97,4 +97,28 @@ void run_values(const char* name, long n, std::uint64_t seed_offset, Near near, 
     CHECK(bad == 0);
 }
 
+// One contains(a, b) case whose true answer is `truth`: exact == truth; conservative never
+// misses a true yes; aggressive never reports a false yes; classify_contains is never wrong;
+// approximate is wrong only within its stated relative margin `bound`.
+template <class A, class B>
+void check_contains(tally& t, const A& a, const B& b, bool truth, double bound, const std::function<std::string()>& describe) {
+    using namespace incidence;
+    ++t.n;
+    auto say = [&](const char* what, long& count) {
+        if (++count <= 5) std::printf("  contains: %s: %s\n", what, describe().c_str());
+    };
+    if (contains<exact>(a, b) != truth) say("exact disagrees", t.exact_wrong);
+    if (truth && !contains<conservative>(a, b)) say("conservative misses", t.conservative_violations);
+    if (!truth && contains<aggressive>(a, b)) say("aggressive false yes", t.aggressive_violations);
+    const certainty c = classify_contains(a, b);
+    if (c == certainty::uncertain) ++t.uncertain;
+    else if ((c == certainty::yes) != truth) say("classify wrong", t.classify_wrong);
+    if (contains<approximate>(a, b) != truth) {
+        ++t.approx_wrong;
+        support_margin::margin_kernel mk;
+        (void)pair::contains(mk, a, b);
+        if (mk.min_rel > bound) say("approximate wrong outside its bound", t.approx_outside_bound);
+    }
+}
+
 } // namespace support

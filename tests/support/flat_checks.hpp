@@ -52,22 +52,7 @@ void flat_contains_oracle(const std::string& name, long n, double approx_bound) 
         const auto [a, b] = i % 3 == 2 ? inside_case<A, B>(r) : (i % 3 ? flat_near<A, B>(r) : flat_random<A, B>(r));
         const bool truth = flat_contains_truth(a, b);
         yes += truth;
-        ++t.n;
-        auto say = [&](const char* what, long& count) {
-            if (++count <= 5) std::printf("  contains: %s: %s %s\n", what, shape_str(a).c_str(), shape_str(b).c_str());
-        };
-        if (contains<exact>(a, b) != truth) say("exact disagrees", t.exact_wrong);
-        if (truth && !contains<conservative>(a, b)) say("conservative misses", t.conservative_violations);
-        if (!truth && contains<aggressive>(a, b)) say("aggressive false yes", t.aggressive_violations);
-        const certainty c = classify_contains(a, b);
-        if (c == certainty::uncertain) ++t.uncertain;
-        else if ((c == certainty::yes) != truth) say("classify wrong", t.classify_wrong);
-        if (contains<approximate>(a, b) != truth) {
-            ++t.approx_wrong;
-            support_margin::margin_kernel mk;
-            (void)pair::contains(mk, a, b);
-            if (mk.min_rel > approx_bound) say("approximate wrong outside its bound", t.approx_outside_bound);
-        }
+        check_contains(t, a, b, truth, approx_bound, [&] { return shape_str(a) + " " + shape_str(b); });
     }
     t.print();
     std::printf("[cases] %s contains: %ld of %ld contained\n", name.c_str(), yes, t.n);

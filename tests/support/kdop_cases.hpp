@@ -36,6 +36,18 @@ struct is_kdop : std::false_type {};
 template <int M>
 struct is_kdop<incidence::kdop<M>> : std::true_type {};
 
+// The k-DOPs of two clouds moved by one transform (nullopt when a bound overflows).
+template <int K, int M>
+std::optional<std::pair<incidence::kdop<K>, incidence::kdop<M>>> kdops_of(std::vector<incidence::point3>& P, std::vector<incidence::point3>& Q,
+                                                                          transform tr) {
+    for (auto& p : P) p = moved(p, tr);
+    for (auto& p : Q) p = moved(p, tr);
+    const auto a = kdop_around<K>(P);
+    const auto b = kdop_around<M>(Q);
+    if (!a || !b) return std::nullopt;
+    return std::pair{*a, *b};
+}
+
 // Two k-DOPs (kdop_kdop), near-degenerate: clouds P and Q of small dyadic points. Q starts at X,
 // the extreme point of P in a direction d_s, and lies beyond or on P's face there (d_s . (q - X)
 // >= 0, X itself left out), so the two touch that face's plane or are separated by it, and
@@ -78,13 +90,7 @@ std::optional<std::pair<incidence::kdop<K>, incidence::kdop<M>>> kdop_pair_near(
     } else {
         cloud(Q, X, r.integer(4, 8));
     }
-    transform tr = random_transform(r, true, true);
-    for (auto& p : P) p = moved(p, tr);
-    for (auto& p : Q) p = moved(p, tr);
-    const auto a = kdop_around<K>(P);
-    const auto b = kdop_around<M>(Q);
-    if (!a || !b) return std::nullopt;
-    return std::pair{*a, *b};
+    return kdops_of<K, M>(P, Q, random_transform(r, true, true));
 }
 // Two k-DOPs, random: the k-DOPs of two clouds of 4 to 8 random points within 0.4 of centres in
 // [-0.6, 0.6]^3, at one random scale.
@@ -99,13 +105,7 @@ std::optional<std::pair<incidence::kdop<K>, incidence::kdop<M>>> kdop_pair_rando
     };
     cloud(P);
     cloud(Q);
-    transform tr = random_transform(r, false, true);
-    for (auto& p : P) p = moved(p, tr);
-    for (auto& p : Q) p = moved(p, tr);
-    const auto a = kdop_around<K>(P);
-    const auto b = kdop_around<M>(Q);
-    if (!a || !b) return std::nullopt;
-    return std::pair{*a, *b};
+    return kdops_of<K, M>(P, Q, random_transform(r, false, true));
 }
 
 template <int K, class B>

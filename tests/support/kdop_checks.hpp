@@ -83,28 +83,30 @@ void kdop_contains_oracle(const std::string& name, long n, double approx_bound) 
         bool truth = true;
         for (const auto& p : v) truth = truth && oracle::lp_intersect(lp(a), lp(p));
         yes += truth;
-        ++t.n;
-        auto say = [&](const char* what, long& count) {
-            if (++count <= 5) std::printf("  contains: %s: %s %s\n", what, shape_str(a).c_str(), shape_str(b).c_str());
-        };
-        if (contains<exact>(a, b) != truth) say("exact disagrees", t.exact_wrong);
-        if (truth && !contains<conservative>(a, b)) say("conservative misses", t.conservative_violations);
-        if (!truth && contains<aggressive>(a, b)) say("aggressive false yes", t.aggressive_violations);
-        const certainty cl = classify_contains(a, b);
-        if (cl == certainty::uncertain) ++t.uncertain;
-        else if ((cl == certainty::yes) != truth) say("classify wrong", t.classify_wrong);
-        if (contains<approximate>(a, b) != truth) {
-            ++t.approx_wrong;
-            support_margin::margin_kernel mk;
-            (void)pair::contains(mk, a, b);
-            if (mk.min_rel > approx_bound) say("approximate wrong outside its bound", t.approx_outside_bound);
-        }
+        check_contains(t, a, b, truth, approx_bound, [&] { return shape_str(a) + " " + shape_str(b); });
     }
     t.print();
     std::printf("[cases] %s: %ld of %ld contained\n", t.name.c_str(), yes, t.n);
     require_contracts(t);
     CHECK(yes > 0);
     CHECK(yes < t.n);
+}
+
+// The oracle test and the rewrites for every K = 6, 14, 18, 26 against one shape B
+// (tests/query/kdop_<shape>.cpp, aabb_kdop.cpp): n random and n near-degenerate cases per K.
+template <class B>
+void kdop_oracle_every_k(const std::string& name, long n, double approx_bound) {
+    kdop_oracle<6, B>(name, n, approx_bound);
+    kdop_oracle<14, B>(name, n, approx_bound);
+    kdop_oracle<18, B>(name, n, approx_bound);
+    kdop_oracle<26, B>(name, n, approx_bound);
+}
+template <class B>
+void kdop_symmetries_every_k(const std::string& name, long n) {
+    kdop_symmetries<6, B>(name, n);
+    kdop_symmetries<14, B>(name, n);
+    kdop_symmetries<18, B>(name, n);
+    kdop_symmetries<26, B>(name, n);
 }
 
 } // namespace support
