@@ -20,6 +20,8 @@ import incidence;
 #include "../tests/support/mesh_cases.hpp"
 #include "../tests/support/polygon_cases.hpp"
 #include "../tests/support/kdop_cases.hpp"
+#include "../tests/support/lp_shapes.hpp"
+#include "../tests/support/polyhedron_cases.hpp"
 
 using namespace incidence;
 
@@ -271,6 +273,18 @@ void kdop_tiers(const std::string& pair, bool near) {
     auto truth = [](const std::pair<kdop<K>, B>& c) { return oracle::lp_intersect(support::lp(c.first), support::lp(c.second)); };
     tiers(pair + "_" + std::to_string(K), dist, cs, truth, [](auto tier, const std::pair<kdop<K>, B>& c) { return intersects<decltype(tier)>(c.first, c.second); });
 }
+// A half-space pair (tests/support/polyhedron_cases.hpp: supporting half-spaces of a cloud, or a
+// camera frustum; near-degenerate: integer normals through boundary points), the LP as truth.
+template <class P, class B>
+void halfspace_tiers(const std::string& pair, bool near) {
+    const std::string dist = near ? "near_degenerate" : "random";
+    support::rng r(20261122 + (near ? 1 : 0));
+    std::vector<std::pair<P, B>> cs;
+    while (cs.size() < set_size)
+        if (const auto c = near ? support::halfspace_near<P, B>(r) : support::halfspace_random<P, B>(r)) cs.push_back(*c);
+    auto truth = [](const std::pair<P, B>& c) { return oracle::lp_intersect(support::lp(c.first), support::lp(c.second)); };
+    tiers(pair, dist, cs, truth, [](auto tier, const std::pair<P, B>& c) { return intersects<decltype(tier)>(c.first, c.second); });
+}
 void obb_arrays(const obb3& b, double* c, double* a, double* h) {
     arr(b.center, c);
     for (unsigned i = 0; i < 3; ++i) arr(b.axes[i], a + 3 * i), h[i] = b.half_extents[i];
@@ -356,6 +370,14 @@ void register_all() {
         kdop_tiers<14, kdop<14>>("kdop_kdop", near);
         kdop_tiers<26, kdop<26>>("kdop_kdop", near);
         kdop_tiers<14, aabb3>("aabb_kdop", near);
+        halfspace_tiers<convex_polyhedron3, point3>("convex_polyhedron_point", near);
+        halfspace_tiers<convex_polyhedron3, segment3>("convex_polyhedron_segment", near);
+        halfspace_tiers<convex_polyhedron3, ray3>("convex_polyhedron_ray", near);
+        halfspace_tiers<convex_polyhedron3, line3>("convex_polyhedron_line", near);
+        halfspace_tiers<frustum3, point3>("frustum_point", near);
+        halfspace_tiers<frustum3, segment3>("frustum_segment", near);
+        halfspace_tiers<frustum3, ray3>("frustum_ray", near);
+        halfspace_tiers<frustum3, line3>("frustum_line", near);
         {
             const auto cs = ray_triangle_set(near);
             auto truth = [](const rt& c) {

@@ -6,7 +6,10 @@
 // extents. The k-DOP pairs too (kdop_point, kdop_segment, kdop_ray, kdop_line, kdop_kdop with the
 // same K and with a 14-DOP, aabb_kdop, contains(kdop, aabb | segment); K from byte 0 % 4,
 // bounds from the same doubles, so inverted or jointly empty slabs occur), against the same LP
-// with the k-DOP as its slab rows. Any finding aborts.
+// with the k-DOP as its slab rows. The half-space pairs too (convex_polyhedron_point, _segment,
+// _ray, _line with 1 to 6 planes from the same doubles, so empty, flat and unbounded sets occur;
+// frustum_point, _segment, _ray, _line with six; contains(., point | segment)), against the LP
+// with the half-spaces as rows. Any finding aborts.
 #include "../tests/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <array>
@@ -53,6 +56,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         (void)intersects<exact>(kd, kd);
         (void)intersects<conservative>(box, kd);
         (void)contains<aggressive>(kd, box);
+        const frustum3 fr{{plane3{{v[0], v[1], v[2]}, v[3]}, plane3{{v[4], v[5], v[6]}, v[7]}, plane3{{v[8], v[9], v[10]}, v[11]},
+                           plane3{{v[12], v[13], v[14]}, v[15]}, plane3{{v[16], v[17], v[18]}, v[19]}, plane3{{v[20], v[21], v[22]}, v[23]}}};
+        convex_polyhedron3 cp{};
+        cp.count = size == 0 ? 0 : data[0] % 40 - 4; // outside [0, 32] too: no set
+        for (unsigned i = 0; i < 32; ++i) cp.planes[i] = plane3{{v[i % 24], v[(i + 1) % 24], v[(i + 2) % 24]}, v[(i + 3) % 24]};
+        (void)intersects<approximate>(fr, seg);
+        (void)intersects<conservative>(ray, fr);
+        (void)classify(fr, line);
+        (void)contains<aggressive>(fr, seg);
+        (void)intersects<exact>(cp, p);
+        (void)intersects<aggressive>(line, cp);
+        (void)classify(cp, ray);
+        (void)contains<approximate>(cp, seg);
     }
     for (double x : v)
         if (!std::isfinite(x)) return 0;
@@ -100,6 +116,25 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
         if (contains(kd, seg) != (intersects(kd, seg.a) && intersects(kd, seg.b))) std::abort();
     };
+    // The half-space pairs: 1 to 6 planes (from byte 1), and a frustum of six, from the doubles.
+    auto halfspaces = [&](const auto& h) {
+        check(h, p);
+        check(h, seg);
+        check(h, ray);
+        check(h, line);
+        if (contains(h, p) != intersects(h, p)) std::abort();
+        if (contains(h, seg) != (intersects(h, seg.a) && intersects(h, seg.b))) std::abort();
+    };
+    {
+        convex_polyhedron3 cp{};
+        cp.count = size < 2 ? 1 : 1 + data[1] % 6;
+        for (unsigned i = 0; i < static_cast<unsigned>(cp.count); ++i)
+            cp.planes[i] = plane3{{v[(4 * i + 6) % 24], v[(4 * i + 7) % 24], v[(4 * i + 8) % 24]}, v[(4 * i + 9) % 24]};
+        halfspaces(cp);
+        frustum3 fr{};
+        for (unsigned i = 0; i < 6; ++i) fr.planes[i] = plane3{{v[(4 * i + 1) % 24], v[(4 * i + 2) % 24], v[(4 * i + 3) % 24]}, v[4 * i % 24]};
+        halfspaces(fr);
+    }
     switch (size == 0 ? 0 : data[0] % 4) {
     case 0: kdops.template operator()<6>(); break;
     case 1: kdops.template operator()<14>(); break;

@@ -22,6 +22,9 @@ enum class errc : unsigned char {
     open_mesh,           // a mesh edge belongs to an odd number of triangles (the surface has a boundary)
     degenerate_polygon,  // a polygon ring has fewer than three vertices
     self_intersecting_polygon, // two polygon edges meet other than consecutive edges at their shared vertex
+    invalid_field_of_view, // a camera's vertical field of view is not in (0, pi), or its aspect ratio is not positive
+    invalid_clip_range,    // a camera's near distance is not positive, or its far distance not beyond it
+    up_parallel_to_forward, // a camera's up vector is zero or parallel to its viewing direction
 };
 
 struct error {
@@ -43,6 +46,9 @@ struct error {
         case errc::index_out_of_range: return "an index is out of range (a triangle's vertex index not below the number of vertices, or polygon ring ends not increasing up to the number of vertices)";
         case errc::open_mesh: return "the mesh is not closed: an edge belongs to an odd number of triangles";
         case errc::degenerate_polygon: return "a polygon ring has fewer than three vertices";
+        case errc::invalid_field_of_view: return "the camera's vertical field of view is not in (0, pi) radians, or its aspect ratio (width / height) is not positive";
+        case errc::invalid_clip_range: return "the camera's near distance is not positive, or its far distance is not greater than the near one";
+        case errc::up_parallel_to_forward: return "the camera's up vector is zero or parallel to its viewing direction";
         case errc::self_intersecting_polygon: return "the polygon's boundary meets itself: two edges share a point other than consecutive edges' common vertex (a crossing, a touch, a repeated vertex or a fold back)";
         }
         return "unknown error";

@@ -138,6 +138,15 @@ inline constexpr std::tuple families{
     family<kdop<14>, line3, 0>{"kdop_line", "obb", "signs in double", {}},
     family<kdop<14>, kdop<14>, 0>{"kdop_kdop", "obb", "signs in double", {}},
     family<aabb3, kdop<14>, 0>{"aabb_kdop", "obb", "signs in double", {}},
+    // The half-space pairs: the generalised slab test on a convex polyhedron's or a frustum's planes.
+    family<convex_polyhedron3, point3, 0>{"convex_polyhedron_point", "obb", "signs in double", {}},
+    family<convex_polyhedron3, segment3, 0>{"convex_polyhedron_segment", "obb", "signs in double", {}},
+    family<convex_polyhedron3, ray3, 0>{"convex_polyhedron_ray", "obb", "signs in double", {}},
+    family<convex_polyhedron3, line3, 0>{"convex_polyhedron_line", "obb", "signs in double", {}},
+    family<frustum3, point3, 0>{"frustum_point", "obb", "signs in double", {}},
+    family<frustum3, segment3, 0>{"frustum_segment", "obb", "signs in double", {}},
+    family<frustum3, ray3, 0>{"frustum_ray", "obb", "signs in double", {}},
+    family<frustum3, line3, 0>{"frustum_line", "obb", "signs in double", {}},
 };
 
 inline constexpr std::size_t family_count = std::tuple_size_v<decltype(families)>;

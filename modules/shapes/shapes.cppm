@@ -15,3 +15,5 @@ export import :segment2;
 export import :tetrahedron3;
 export import :mesh3;
 export import :polygon2;
+export import :convex_polyhedron3;
+export import :frustum3;

@@ -2,7 +2,8 @@
 // QP_solver over CGAL::Gmpzf (exact big floats). Every LP coefficient is an input double as
 // given, never a computed one: a box is c + sum t_i a_i with |t_i| <= h_i, a segment or a
 // triangle the convex combinations of its vertices, a plane n . x = offset, a k-DOP its slabs
-// lo <= n . x <= hi (n the integer directions).
+// lo <= n . x <= hi (n the integer directions), a convex polyhedron or a frustum its half-spaces
+// n . x <= offset.
 #include "cgal_oracle.hpp"
 
 #include <stdexcept>
@@ -25,7 +26,13 @@ void add(program& lp, int& var, int& row, const convex_set& s) {
             lp.set_r(row, rel);
             ++row;
         }
-    if (!s.plane && s.points.empty() && s.generators.empty()) return; // the slabs alone
+    for (const auto& h : s.halfspaces) { // n . x <= offset
+        for (int k = 0; k < 3; ++k) lp.set_a(k, row, h.n[static_cast<unsigned>(k)]);
+        lp.set_b(row, h.offset);
+        lp.set_r(row, CGAL::SMALLER);
+        ++row;
+    }
+    if (!s.plane && s.points.empty() && s.generators.empty()) return; // the slabs or half-spaces alone
     if (s.plane) {
         for (int k = 0; k < 3; ++k) lp.set_a(k, row, s.normal[static_cast<unsigned>(k)]);
         lp.set_b(row, s.offset);

@@ -67,6 +67,11 @@ struct convex_set {
     std::array<double, 3> normal{};
     double offset = 0;
     std::vector<slab> slabs; // further constraints on the point; with no points, generators or plane: the slabs alone (a k-DOP)
+    struct halfspace { // n . x <= offset
+        std::array<double, 3> n;
+        double offset;
+    };
+    std::vector<halfspace> halfspaces; // like slabs (a convex polyhedron or a frustum: the half-spaces alone)
 };
 // Do a and b meet? Exact LP feasibility (CGAL QP_solver over Gmpzf), for every pair of convex
 // sets, the OBB, k-DOP and frustum pairs that CGAL's kernel cannot express among them.

@@ -126,6 +126,23 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
         every_tier(b, kd, yes);
         yes += contains(kd, q) + contains(kd, b) + contains(kd2, seg);
         n += 7 * 5 + 3;
+        // the half-space pairs: special planes (zero, NaN and infinite normals and offsets), and a
+        // count outside [0, capacity]
+        frustum3 fr{};
+        for (auto& h : fr.planes) h = plane3{{special(r), special(r), special(r)}, special(r)};
+        convex_polyhedron3 cp{};
+        cp.count = r.integer(-2, convex_polyhedron3::capacity + 2);
+        for (auto& h : cp.planes) h = plane3{{special(r), special(r), special(r)}, special(r)};
+        every_tier(fr, q, yes);
+        every_tier(fr, seg, yes);
+        every_tier(fr, ray, yes);
+        every_tier(fr, line, yes);
+        every_tier(cp, q, yes);
+        every_tier(cp, seg, yes);
+        every_tier(cp, ray, yes);
+        every_tier(cp, line, yes);
+        yes += contains(fr, q) + contains(fr, seg) + contains(cp, q) + contains(cp, seg);
+        n += 8 * 5 + 4;
         // in the plane
         auto p2 = [&] { return point2{special(r), special(r)}; };
         auto v2 = [&] { return vec2{special(r), special(r)}; };
@@ -195,4 +212,22 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
     CHECK_FALSE(intersects(kdop<6>{{0, 0, 0}, {1, 1, inf_}}, point3{0.5, 0.5, 0.5}));
     CHECK_FALSE(intersects(kdop<6>{{0, 0, 0}, {1, 1, 1}}, segment3{{0.5, 0.5, 0.5}, {nan_, 0, 0}})); // one end inside
     CHECK_FALSE(intersects(kdop<6>{{0, 0, 0}, {1, 1, 1}}, ray3{{0.5, 0.5, 0.5}, {inf_, 0, 0}}));
+    const convex_polyhedron3 cube{{plane3{{1, 0, 0}, 1}, plane3{{-1, 0, 0}, 0}, plane3{{0, 1, 0}, 1}, plane3{{0, -1, 0}, 0},
+                                   plane3{{0, 0, 1}, 1}, plane3{{0, 0, -1}, 0}},
+                                  6};
+    CHECK(intersects(cube, point3{0.5, 0.5, 0.5}));
+    CHECK_FALSE(intersects(convex_polyhedron3{cube.planes, 40}, point3{0.5, 0.5, 0.5})); // count beyond the capacity: no set
+    CHECK_FALSE(intersects(convex_polyhedron3{cube.planes, -1}, point3{0.5, 0.5, 0.5}));
+    CHECK_FALSE(intersects(cube, segment3{{0.5, 0.5, 0.5}, {nan_, 0, 0}})); // one end inside
+    CHECK_FALSE(intersects(cube, ray3{{0.5, 0.5, 0.5}, {inf_, 0, 0}}));
+    auto with = [&](unsigned i, plane3 p) { auto c = cube; c.planes[i] = p; return c; };
+    CHECK_FALSE(intersects(with(2, plane3{{0, nan_, 0}, 1}), point3{0.5, 0.5, 0.5}));
+    CHECK_FALSE(intersects(with(2, plane3{{0, 1, 0}, inf_}), point3{0.5, 0.5, 0.5}));
+    CHECK(intersects(with(2, plane3{{0, 0, 0}, 0}), point3{0.5, 7, 0.5}));       // 0 <= 0: all of space
+    CHECK_FALSE(intersects(with(2, plane3{{0, 0, 0}, -1}), point3{0.5, 0.5, 0.5})); // 0 <= -1: nothing
+    frustum3 fr{};
+    for (unsigned i = 0; i < 6; ++i) fr.planes[i] = cube.planes[i];
+    CHECK(intersects(fr, line3{{0.5, 0.5, 0.5}, {1, 1, 1}}));
+    fr.planes[5].offset = nan_;
+    CHECK_FALSE(intersects(fr, line3{{0.5, 0.5, 0.5}, {1, 1, 1}}));
 }

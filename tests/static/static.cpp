@@ -9,6 +9,7 @@ import incidence;
 #include "../support/mesh_fixtures.hpp"
 #include "../support/polygon_fixtures.hpp"
 #include "../support/kdop_fixtures.hpp"
+#include "../support/polyhedron_fixtures.hpp"
 
 using namespace incidence;
 
@@ -176,6 +177,19 @@ static_assert(intersects(support::corner_cut, kdop<14>{{0.8125, 0.8125, 0.8125, 
 static_assert(!intersects(support::edge_cut, aabb3{{0.875, 0.875, 0}, {2, 2, 1}}) && intersects(aabb3{{0.75, 0.75, 0}, {2, 2, 1}}, support::edge_cut));
 static_assert(intersects(support::edge_cut, support::corner_cut) && !intersects(support::empty14, support::unit6));
 static_assert(contains(support::corner_cut, aabb3{{0, 0, 0}, {1, 1, 0.5}}) && !contains(support::corner_cut, aabb3{{0, 0, 0}, {1, 1, 0x1.0000000000001p-1}}));
+// convex polyhedra and frustums (support/polyhedron_fixtures.hpp): the generalised slab test on
+// their half-spaces
+namespace ph = support::polyhedron_fixtures;
+static_assert(intersects(ph::unit_cube_cut, point3{1, 1, 0.5}) && !intersects(ph::unit_cube_cut, point3{1, 1, 0x1.0000000000001p-1}));
+static_assert(intersects(segment3{{2, 2, 0.5}, {1, 1, 0.5}}, ph::unit_cube_cut) && !intersects(ph::empty_slab, segment3{{-5, -5, -5}, {5, 5, 5}}));
+static_assert(intersects(ph::unit_cube_cut, ray3{{2, 0.5, 1}, {-1, 0, 0}}) && !intersects(ph::unit_cube_cut, ray3{{2, 0.5, 0x1.0000000000001p0}, {-1, 0, 0}}));
+static_assert(intersects(ph::half_space, line3{{1, 0, 0}, {-0x1p-1074, 1, 1}}) && !intersects(ph::half_space, line3{{1, 0, 0}, {0, 1, 1}}));
+static_assert(contains(ph::unit_cube_cut, segment3{{0, 0, 0}, {1, 1, 0.5}}) && !contains(ph::unit_cube_cut, point3{1, 1, 1}));
+static_assert(intersects(ph::integer_frustum, point3{1, 1, 1}) && !intersects(ph::integer_frustum, point3{0x1.0000000000001p0, 1, 1}));
+static_assert(intersects(ph::integer_frustum, segment3{{0, 0, 0}, {1, 1, 1}}) && !intersects(ph::integer_frustum, segment3{{0, 0, 0}, {1, 1, 0x1.fffffffffffffp-1}}));
+static_assert(intersects(ph::integer_frustum, ray3{{0, 0, 0}, {1, 1, 1}}) && !intersects(ray3{{8, 0, 0x1.0000000000001p2}, {-1, 0, 0}}, ph::integer_frustum));
+static_assert(intersects(line3{{0, 4, 4}, {1, 0, 0}}, ph::integer_frustum) && !intersects(ph::integer_frustum, line3{{0, 0x1.0000000000001p2, 4}, {1, 0, 0}}));
+static_assert(contains(ph::integer_frustum, segment3{{1, 1, 1}, {-4, -4, 4}}) && frustum3::make(ph::integer_frustum.planes).has_value());
 // the same in the plane
 static_assert(intersects(segment2{{0, 0}, {2, 0}}, segment2{{2, 0}, {3, 5}}));
 static_assert(!intersects(segment2{{0, 0}, {2, 0}}, segment2{{0x1.0000000000001p1, 0}, {3, 0}}));

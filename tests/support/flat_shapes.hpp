@@ -4,6 +4,7 @@
 // the CGAL Epeck answer for a pair of them (tests/oracle/cgal_flat.cpp). Include after
 // `import incidence;` and the CGAL oracle header.
 #pragma once
+#include <cmath>
 #include <type_traits>
 
 namespace support {
@@ -44,5 +45,13 @@ template <class A, class B>
 bool flat_truth(const A& a, const B& b) { return oracle::flat_intersect(to_flat(a), to_flat(b)); }
 template <class A, class B>
 bool flat_contains_truth(const A& a, const B& b) { return oracle::flat_contains(to_flat(a), to_flat(b)); }
+
+// Every number of a point, segment, ray, line, plane, triangle, tetrahedron or box finite.
+template <class S>
+bool finite_shape(const S& s) {
+    for (double x : to_flat(s).v)
+        if (!std::isfinite(x)) return false;
+    return true;
+}
 
 } // namespace support

@@ -165,12 +165,6 @@ bool finite_shape(const incidence::kdop<K>& b) {
         if (!std::isfinite(b.min[i]) || !std::isfinite(b.max[i])) return false;
     return true;
 }
-template <class S>
-bool finite_shape(const S& s) {
-    for (double x : to_flat(s).v)
-        if (!std::isfinite(x)) return false;
-    return true;
-}
 
 // contains(kdop, B) cases where B lies inside or just pokes out: the k-DOP of a cloud that has
 // B's vertices among its points (so B touches the boundary), B then nudged by one ulp outward at

@@ -622,6 +622,112 @@ struct near_boundary<aabb3, kdop<14>> {
     }
 };
 
+// The half-space pairs: planes with small integer normals (components in -3..3) through the
+// extreme points of a few integer points along them, so every offset is exact and attained
+// (convex_polyhedron3); or an axis-aligned frustum of integer slopes q / p (p in {1, 2, 4}) with
+// its eye and clip distances multiples of 4, so its corners are integers (frustum3). p is a
+// boundary point (an extreme point, a corner or an edge midpoint) and o the outward normal of a
+// face through it. A plane moves by offset + n . v (rounded: the moved shape is the one its planes
+// say) and scales by 2^e in its offset alone.
+inline convex_polyhedron3 moved(convex_polyhedron3 c, vec3 v) {
+    for (int i = 0; i < c.count; ++i) c.planes[static_cast<unsigned>(i)] = moved(c.planes[static_cast<unsigned>(i)], v);
+    return c;
+}
+inline frustum3 moved(frustum3 f, vec3 v) {
+    for (auto& p : f.planes) p = moved(p, v);
+    return f;
+}
+inline convex_polyhedron3 scaled(convex_polyhedron3 c, int e) {
+    for (int i = 0; i < c.count; ++i) c.planes[static_cast<unsigned>(i)] = scaled(c.planes[static_cast<unsigned>(i)], e);
+    return c;
+}
+inline frustum3 scaled(frustum3 f, int e) {
+    for (auto& p : f.planes) p = scaled(p, e);
+    return f;
+}
+inline convex_polyhedron3 nudged(convex_polyhedron3 c, int ulps, rng& r) { // one number of one live plane
+    auto& p = c.planes[static_cast<unsigned>(r.integer(0, c.count - 1))];
+    p = nudged(p, ulps, r);
+    return c;
+}
+template <class P>
+struct halfspace_touch {
+    P shape;
+    point3 p;
+    vec3 o;
+};
+inline halfspace_touch<convex_polyhedron3> touching_polyhedron(rng& r) {
+    const point3 c = int_point(r, 400);
+    point3 pts[8];
+    const int n = r.integer(4, 8);
+    for (int i = 0; i < n; ++i) pts[i] = c + int_vec(r, 300);
+    convex_polyhedron3 h{};
+    h.count = r.integer(4, 12);
+    for (int i = 0; i < h.count; ++i) {
+        vec3 d = int_vec(r, 3);
+        if (d.x == 0 && d.y == 0 && d.z == 0) d = vec3{0, 0, 1};
+        point3 X = pts[0];
+        for (int j = 1; j < n; ++j)
+            if (dot(d, pts[j] - X) > 0) X = pts[j];
+        h.planes[static_cast<unsigned>(i)] = plane3{d, dot(d, X - point3{0, 0, 0})}; // exact: small integers
+    }
+    const auto s = static_cast<unsigned>(r.integer(0, h.count - 1));
+    point3 X = pts[0];
+    for (int j = 1; j < n; ++j)
+        if (dot(h.planes[s].normal, pts[j] - X) > 0) X = pts[j];
+    return {h, X, h.planes[s].normal};
+}
+inline halfspace_touch<frustum3> touching_frustum(rng& r) {
+    const int k = r.integer(0, 2);
+    const vec3 ax[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    auto sgn = [&] { return r.coin() ? 1.0 : -1.0; };
+    const vec3 f = ax[k] * sgn(), rt = ax[(k + 1) % 3] * sgn(), up = ax[(k + 2) % 3] * sgn();
+    const point3 E = int_point(r, 400);
+    static constexpr double ps[] = {1, 2, 4};
+    double q[4], p[4];
+    for (int i = 0; i < 4; ++i) q[i] = r.integer(1, 3), p[i] = ps[r.integer(0, 2)];
+    const double zn = 4.0 * r.integer(1, 30), zf = zn + 4.0 * r.integer(1, 60);
+    const vec3 e = E - point3{0, 0, 0};
+    auto through = [&](vec3 n, point3 x) { return plane3{n, dot(n, x - point3{0, 0, 0})}; };
+    const frustum3 fr{{through(-f, E + f * zn), through(f, E + f * zf), plane3{-rt * p[0] - f * q[0], dot(-rt * p[0] - f * q[0], e)},
+                       plane3{rt * p[1] - f * q[1], dot(rt * p[1] - f * q[1], e)}, plane3{-up * p[2] - f * q[2], dot(-up * p[2] - f * q[2], e)},
+                       plane3{up * p[3] - f * q[3], dot(up * p[3] - f * q[3], e)}}};
+    const double z = r.coin() ? zn : zf;
+    const bool right = r.coin(), top = r.coin();
+    const point3 corner = E + f * z + rt * (right ? q[1] * z / p[1] : -q[0] * z / p[0]) + up * (top ? q[3] * z / p[3] : -q[2] * z / p[2]);
+    const unsigned face = r.integer(0, 1) == 0 ? (z == zn ? 0u : 1u) : (right ? 3u : 2u);
+    return {fr, corner, fr.planes[face].normal};
+}
+template <class P>
+halfspace_touch<P> touching_halfspaces(rng& r) {
+    if constexpr (std::is_same_v<P, frustum3>) return touching_frustum(r);
+    else return touching_polyhedron(r);
+}
+// An integer vector w with o . w >= 0 (outwards or along the face).
+inline vec3 outward(rng& r, vec3 o, int lim) {
+    const vec3 w = int_vec(r, lim);
+    return dot(o, w) < 0 ? w * -1.0 : w;
+}
+template <class P, class B>
+    requires(std::is_same_v<P, convex_polyhedron3> || std::is_same_v<P, frustum3>)
+struct near_boundary<P, B> {
+    static std::pair<P, B> touching(rng& r) {
+        const auto t = touching_halfspaces<P>(r);
+        if constexpr (std::is_same_v<B, point3>) return {t.shape, t.p};
+        else if constexpr (std::is_same_v<B, segment3>) { // from p outwards
+            const point3 q = t.p + t.o * double(r.integer(1, 60)) + outward(r, t.o, 40);
+            return {t.shape, r.coin() ? segment3{t.p, q} : segment3{q, t.p}};
+        } else if constexpr (std::is_same_v<B, ray3>) { // aimed at p from outside
+            const point3 o = t.p + t.o * double(r.integer(1, 60)) + outward(r, t.o, 40);
+            return {t.shape, ray3{o, t.p - o}};
+        } else { // through p, in the face's plane
+            vec3 d = cross(t.o, int_vec(r, 8));
+            if (d.x == 0 && d.y == 0 && d.z == 0) d = cross(t.o, vec3{1, 2, 3});
+            return {t.shape, line3{t.p, d}};
+        }
+    }
+};
+
 // The coordinate settings: offset from the origin (in object sizes) and scale 2^e.
 struct setting {
     double offset; // added to every point, before scaling (exact: an integer)

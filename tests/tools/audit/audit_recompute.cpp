@@ -108,9 +108,10 @@ int truth(const triangle3& t, const triangle3& u) {
     arr(t.a, a), arr(t.b, b), arr(t.c, c), arr(u.a, d), arr(u.b, e), arr(u.c, f);
     return oracle::triangle_triangle(a, b, c, d, e, f);
 }
-// The OBB and k-DOP pairs: exact LP feasibility.
+// The OBB, k-DOP, convex polyhedron and frustum pairs: exact LP feasibility.
 template <class A, class B>
-    requires(std::is_same_v<A, obb3> || std::is_same_v<B, obb3> || std::is_same_v<A, kdop<14>> || std::is_same_v<B, kdop<14>>)
+    requires(std::is_same_v<A, obb3> || std::is_same_v<B, obb3> || std::is_same_v<A, kdop<14>> || std::is_same_v<B, kdop<14>> ||
+             std::is_same_v<A, convex_polyhedron3> || std::is_same_v<A, frustum3>)
 int truth(const A& a, const B& b) {
     return oracle::lp_intersect(support::lp(a), support::lp(b));
 }

@@ -1,0 +1,25 @@
+// Shapes the half-space pair tests share (constexpr, for the static_asserts too). Include after
+// `import incidence;`.
+#pragma once
+#include <array>
+
+namespace support::polyhedron_fixtures {
+
+using namespace incidence;
+
+// The unit cube with its corner (1, 1, 1) cut off by x + y + z <= 5/2.
+inline constexpr convex_polyhedron3 unit_cube_cut{{plane3{{1, 0, 0}, 1}, plane3{{-1, 0, 0}, 0}, plane3{{0, 1, 0}, 1}, plane3{{0, -1, 0}, 0},
+                                                   plane3{{0, 0, 1}, 1}, plane3{{0, 0, -1}, 0}, plane3{{1, 1, 1}, 2.5}},
+                                                  7};
+// x <= 1 and x >= 2: each half-space non-empty, together nothing.
+inline constexpr convex_polyhedron3 empty_slab{{plane3{{1, 0, 0}, 1}, plane3{{-1, 0, 0}, -2}}, 2};
+// x <= 0 alone (unbounded).
+inline constexpr convex_polyhedron3 half_space{{plane3{{1, 0, 0}, 0}}, 1};
+// Eye at the origin looking along +z with 45-degree side planes (|x|, |y| <= z), near 1, far 4:
+// corners (+-1, +-1, 1) and (+-4, +-4, 4), all exact.
+inline constexpr frustum3 integer_frustum{{plane3{{0, 0, -1}, -1}, plane3{{0, 0, 1}, 4}, plane3{{-1, 0, -1}, 0}, plane3{{1, 0, -1}, 0},
+                                           plane3{{0, -1, -1}, 0}, plane3{{0, 1, -1}, 0}}};
+// Looking down -z from the origin, 90 degrees, square, near 1, far 100 (computed planes).
+inline const frustum3 camera = frustum3::from_camera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 1.5707963267948966, 1.0, 1.0, 100.0).value();
+
+} // namespace support::polyhedron_fixtures
