@@ -13,7 +13,9 @@
 // sets meet iff every lower bound is <= every upper bound, sign((c_i - a_i) b_j - (c_j - a_j) b_i)
 // >= 0 for every lower i and upper j, and the upper bounds lie at t >= 0 (ray, segment:
 // c_j - a_j >= 0) and the lower ones at t <= 1 (segment: c_i - n_i . e >= 0). Every sign is a
-// polynomial of degree <= 4 in the inputs, no quotient is rounded.
+// polynomial of degree <= 4 in the inputs, no quotient is rounded; each offset is multiplied by
+// a lifted 1 so every polynomial is homogeneous (degree 2 or 4), which lets the exact fallback
+// use expansions instead of big integers.
 // Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
 // magnitudes lie in [2^-500, 2^500], wrong only when a deciding sign is within 2^-40 of its
 // permanent (tests/query/convex_polyhedron_point.cpp).
@@ -59,7 +61,7 @@ template <slab_extent X, class K>
             s[ui] = k.sgn([=](auto L) { return arith::dot(arith::lift(L, n), arith::lift(L, e) - arith::lift(L, o)); });
         else s[ui] = k.sgn([=](auto L) { return arith::dot(arith::lift(L, n), arith::lift(L, u)); });
         // c - n . o: the origin's side (needed when parallel, or for an upper bound at t >= 0)
-        auto inside_at_origin = [&] { return k.sgn([=](auto L) { return L(c) - arith::dot(arith::lift(L, n), arith::lift(L, o)); }); };
+        auto inside_at_origin = [&] { return k.sgn([=](auto L) { return L(c) * L(1.0) - arith::dot(arith::lift(L, n), arith::lift(L, o)); }); };
         if (s[ui] == sign::zero) {
             if (inside_at_origin() == sign::negative) return false;
             continue;
@@ -68,7 +70,7 @@ template <slab_extent X, class K>
             if (s[ui] == sign::positive && inside_at_origin() == sign::negative) return false;
         if constexpr (X == slab_extent::segment) // a lower bound (c - a) / b <= 1: the end point lies in the half-space
             if (s[ui] == sign::negative &&
-                k.sgn([=](auto L) { return L(c) - arith::dot(arith::lift(L, n), arith::lift(L, e)); }) == sign::negative)
+                k.sgn([=](auto L) { return L(c) * L(1.0) - arith::dot(arith::lift(L, n), arith::lift(L, e)); }) == sign::negative)
                 return false;
     }
     for (int i = 0; i < m; ++i) {
@@ -84,7 +86,8 @@ template <slab_extent X, class K>
                     if constexpr (X == slab_extent::segment) return arith::lift(L, e) - O;
                     else return arith::lift(L, u);
                 }();
-                return (L(pi.offset) - arith::dot(ni, O)) * arith::dot(nj, U) - (L(pj.offset) - arith::dot(nj, O)) * arith::dot(ni, U);
+                const auto one = L(1.0);
+                return (L(pi.offset) * one - arith::dot(ni, O)) * arith::dot(nj, U) - (L(pj.offset) * one - arith::dot(nj, O)) * arith::dot(ni, U);
             });
             if (v == sign::negative) return false;
         }
