@@ -1,0 +1,294 @@
+// The shared part of the benchmarks (bench/*.cpp): the case sets, the answer check before timing
+// (reg), and one registration helper per pair family. Every benchmark is named
+// tier/query/pair/distribution, with CGAL Epick and Epeck on the same inputs where CGAL has the
+// query. Before timing, each benchmark checks its answers against the oracle on the whole input set:
+// the exact tier, conservative, aggressive and classify must keep their promises (SkipWithError
+// otherwise); approximate methods report their wrong answers as the counter `wrong_pct`.
+#pragma once
+#include <benchmark/benchmark.h>
+#include "../tests/oracle/cgal_oracle.hpp"
+#include "fcl_peer.hpp"
+#include <cmath>
+#include <algorithm>
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+import incidence;
+#include "../tests/support/testing.hpp"
+#include "../tests/support/obb_cases.hpp"
+#include "../tests/support/flat_cases.hpp"
+#include "../tests/support/mesh_cases.hpp"
+#include "../tests/support/polygon_cases.hpp"
+#include "../tests/support/kdop_cases.hpp"
+#include "../tests/support/lp_shapes.hpp"
+#include "../tests/support/polyhedron_cases.hpp"
+
+using namespace incidence;
+
+namespace bench {
+constexpr int set_size = 1024;
+inline std::mt19937_64 gen(20261122);
+inline double uni(double a, double b) { return std::uniform_real_distribution<double>(a, b)(gen); }
+inline int irand(int a, int b) { return std::uniform_int_distribution<int>(a, b)(gen); }
+inline double small() { return irand(-16, 16) + irand(0, 3) * 0.25; }
+inline double nudge(double x) {
+    const int k = irand(-2, 2);
+    for (int i = 0; i < k; ++i) x = std::nextafter(x, INFINITY);
+    for (int i = 0; i > k; --i) x = std::nextafter(x, -INFINITY);
+    return x;
+}
+inline point3 rp() { return {uni(-1, 1), uni(-1, 1), uni(-1, 1)}; }
+inline aabb3 box(point3 a, point3 b) { // the box spanned by two corners in any order
+    return {{std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)}, {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)}};
+}
+inline point3 np(double x, double y, double z) { return {nudge(x), nudge(y), nudge(z)}; }
+inline void arr(point3 p, double* o) { o[0] = p.x; o[1] = p.y; o[2] = p.z; }
+inline void arr(vec3 p, double* o) { o[0] = p.x; o[1] = p.y; o[2] = p.z; }
+
+enum class check { exact, conservative, aggressive, classify, approximate };
+
+// Registers one benchmark over a case set: f(case) -> bool (or certainty for classify).
+template <class Case, class F>
+inline void reg(const std::string& name, const std::vector<Case>& cases, const std::vector<bool>& truth, check kind, F f) {
+    benchmark::RegisterBenchmark(name.c_str(), [cases, truth, kind, f](benchmark::State& st) {
+        long wrong = 0, broken = 0;
+        for (std::size_t i = 0; i < cases.size(); ++i) {
+            const auto r = f(cases[i]);
+            bool yes;
+            if constexpr (std::is_same_v<decltype(r), const certainty>) {
+                if (r == certainty::uncertain) continue;
+                yes = r == certainty::yes;
+                if (yes != truth[i]) ++broken;
+                continue;
+            } else {
+                yes = static_cast<bool>(r);
+            }
+            if (yes != truth[i]) ++wrong;
+            if (kind == check::exact && yes != truth[i]) ++broken;
+            if (kind == check::conservative && truth[i] && !yes) ++broken;
+            if (kind == check::aggressive && !truth[i] && yes) ++broken;
+        }
+        if (broken != 0) {
+            st.SkipWithError("answer check failed before timing");
+            return;
+        }
+        std::size_t i = 0;
+        for (auto _ : st) {
+            benchmark::DoNotOptimize(f(cases[i]));
+            if (++i == cases.size()) i = 0;
+        }
+        st.counters["wrong_pct"] = 100.0 * static_cast<double>(wrong) / static_cast<double>(cases.size());
+    });
+}
+
+struct rt { ray3 r; triangle3 t; };
+struct ab { aabb3 b; ray3 r; };
+struct o3 { point3 a, b, c, d; };
+struct rs { ray3 r; sphere3 s; };
+struct ss { sphere3 a, b; };
+struct bb { aabb3 a, b; };
+
+inline std::vector<rt> ray_triangle_set(bool near) {
+    std::vector<rt> v;
+    while (v.size() < set_size) {
+        if (!near) {
+            const point3 o = rp();
+            const triangle3 t{rp(), rp(), rp()};
+            v.push_back({ray3{o, (t.a - o) * 0.4 + (t.b - o) * 0.3 + vec3{uni(-0.5, 0.5), uni(-0.5, 0.5), uni(-0.5, 0.5)}}, t});
+        } else { // aimed at a vertex or an edge point, nudged by up to 2 ulps
+            const point3 a{small(), small(), small()}, b{small(), small(), small()}, c{small(), small(), small()};
+            const double s = irand(0, 4) * 0.25;
+            const point3 target{a.x + s * (b.x - a.x), a.y + s * (b.y - a.y), a.z + s * (b.z - a.z)};
+            const point3 o{small(), small(), small()};
+            const vec3 d = target - o;
+            v.push_back({ray3{np(o.x, o.y, o.z), d}, triangle3{np(a.x, a.y, a.z), np(b.x, b.y, b.z), np(c.x, c.y, c.z)}});
+        }
+        double a_[3], b_[3], c_[3];
+        arr(v.back().t.a, a_); arr(v.back().t.b, b_); arr(v.back().t.c, c_);
+        if (oracle::triangle_is_degenerate(a_, b_, c_) || v.back().r.direction == vec3{0, 0, 0}) v.pop_back();
+    }
+    return v;
+}
+inline std::vector<ab> aabb_ray_set(bool near) {
+    std::vector<ab> v;
+    while (v.size() < set_size) {
+        if (!near) {
+            v.push_back({box(rp(), rp()), ray3{point3{uni(-3, 3), uni(-3, 3), uni(-3, 3)}, vec3{uni(-1, 1), uni(-1, 1), uni(-1, 1)}}});
+        } else { // aimed at a face, an edge or a corner
+            const point3 lo{small(), small(), small()};
+            const point3 hi{lo.x + irand(1, 6) * 0.5, lo.y + irand(1, 6) * 0.5, lo.z + irand(1, 6) * 0.5};
+            const point3 target{irand(0, 1) ? lo.x : hi.x, irand(0, 1) ? lo.y : hi.y, irand(0, 2) ? lo.z : (lo.z + hi.z) / 2};
+            const point3 o{small(), small(), small()};
+            v.push_back({aabb3{np(lo.x, lo.y, lo.z), np(hi.x, hi.y, hi.z)}, ray3{np(o.x, o.y, o.z), target - o}});
+            if (v.back().b.min.x > v.back().b.max.x || v.back().b.min.y > v.back().b.max.y || v.back().b.min.z > v.back().b.max.z) v.pop_back();
+        }
+        if (!v.empty() && v.back().r.direction == vec3{0, 0, 0}) v.pop_back();
+    }
+    return v;
+}
+inline std::vector<o3> orient3d_set(bool near) {
+    std::vector<o3> v;
+    while (v.size() < set_size) {
+        if (!near) {
+            v.push_back({rp(), rp(), rp(), rp()});
+        } else { // coplanar by construction, then nudged
+            const point3 a{small(), small(), small()}, b{small(), small(), small()}, c{small(), small(), small()};
+            const double s = irand(-4, 4) * 0.5, t = irand(-4, 4) * 0.5;
+            const point3 d{a.x + s * (b.x - a.x) + t * (c.x - a.x), a.y + s * (b.y - a.y) + t * (c.y - a.y), a.z + s * (b.z - a.z) + t * (c.z - a.z)};
+            v.push_back({np(a.x * 0.1, a.y * 0.1, a.z * 0.1), np(b.x * 0.1, b.y * 0.1, b.z * 0.1), np(c.x * 0.1, c.y * 0.1, c.z * 0.1),
+                         np(d.x * 0.1, d.y * 0.1, d.z * 0.1)});
+        }
+    }
+    return v;
+}
+inline std::vector<rs> ray_sphere_set(bool near) {
+    std::vector<rs> v;
+    while (v.size() < set_size) {
+        if (!near) {
+            v.push_back({ray3{rp(), vec3{uni(-1, 1), uni(-1, 1), uni(-1, 1)}}, sphere3{rp(), uni(0, 0.7)}});
+        } else { // tangent rays: origin (c.x + r, c.y - k, c.z), direction +y
+            const point3 c{small(), small(), small()};
+            const double r = irand(1, 8) * 0.5;
+            v.push_back({ray3{np(c.x + r, c.y - irand(1, 8), c.z), vec3{0, 1, 0}}, sphere3{np(c.x, c.y, c.z), r}});
+        }
+    }
+    return v;
+}
+inline std::vector<ss> sphere_sphere_set(bool near) {
+    std::vector<ss> v;
+    while (v.size() < set_size) {
+        if (!near) v.push_back({sphere3{rp(), uni(0, 0.7)}, sphere3{rp(), uni(0, 0.7)}});
+        else {
+            const point3 c{small(), small(), small()};
+            const double r1 = irand(1, 8) * 0.5, r2 = irand(1, 8) * 0.5;
+            v.push_back({sphere3{np(c.x, c.y, c.z), r1}, sphere3{np(c.x + 2 * (r1 + r2) * 0.5, c.y, c.z), r2}});
+        }
+    }
+    return v;
+}
+inline std::vector<bb> aabb_aabb_set(bool near) {
+    std::vector<bb> v;
+    while (v.size() < set_size) {
+        const point3 c{small(), small(), small()};
+        const aabb3 a = near ? box(c, point3{c.x + 1, c.y + 1, c.z + 1}) : box(rp(), rp());
+        // touching faces when near
+        const aabb3 b = near ? box(point3{a.max.x, a.min.y, a.min.z}, point3{a.max.x + 1, a.max.y, a.max.z}) : box(rp(), rp());
+        v.push_back({a, b});
+    }
+    return v;
+}
+
+template <class Case, class Truth, class Tiered>
+inline void tiers(const std::string& pair, const std::string& dist, const std::vector<Case>& cs, Truth truth_of, Tiered f) {
+    std::vector<bool> truth;
+    for (const auto& c : cs) truth.push_back(truth_of(c));
+    reg("exact/intersects/" + pair + "/" + dist, cs, truth, check::exact, [f](const Case& c) { return f(exact{}, c); });
+    reg("conservative/intersects/" + pair + "/" + dist, cs, truth, check::conservative, [f](const Case& c) { return f(conservative{}, c); });
+    reg("aggressive/intersects/" + pair + "/" + dist, cs, truth, check::aggressive, [f](const Case& c) { return f(aggressive{}, c); });
+    reg("approximate/intersects/" + pair + "/" + dist, cs, truth, check::approximate, [f](const Case& c) { return f(approximate{}, c); });
+}
+
+// An OBB pair on the tests' generators (tests/support/obb_cases.hpp), the LP oracle as truth.
+template <class A, class B>
+std::vector<std::pair<A, B>> obb_tiers(const std::string& pair, bool near) {
+    const std::string dist = near ? "near_degenerate" : "random";
+    support::rng r(20261122 + (near ? 1 : 0));
+    std::vector<std::pair<A, B>> cs;
+    // at scale 1, like the other sets (the tests add scales 2^-500 .. 2^500)
+    while (cs.size() < set_size) cs.push_back(near ? support::obb_case<A, B>::near(r, false) : support::obb_case<A, B>::random(r, false));
+    auto truth = [](const std::pair<A, B>& c) { return oracle::lp_intersect(support::lp(c.first), support::lp(c.second)); };
+    tiers(pair, dist, cs, truth, [](auto tier, const std::pair<A, B>& c) { return intersects<decltype(tier)>(c.first, c.second); });
+    return cs;
+}
+// A flat pair (points, lines, rays, segments, planes, triangles) on the tests' generators
+// (tests/support/flat_cases.hpp) at scale 1, CGAL Epeck as truth, and CGAL Epick's do_intersect.
+template <class A, class B>
+inline void flat_tiers(const std::string& pair, bool near) {
+    const std::string dist = near ? "near_degenerate" : "random";
+    support::rng r(20261122 + (near ? 1 : 0));
+    std::vector<std::pair<A, B>> cs;
+    while (cs.size() < set_size) cs.push_back(near ? support::flat_near<A, B>(r, false) : support::flat_random<A, B>(r, false));
+    auto truth = [](const std::pair<A, B>& c) { return support::flat_truth(c.first, c.second); };
+    tiers(pair, dist, cs, truth, [](auto tier, const std::pair<A, B>& c) { return intersects<decltype(tier)>(c.first, c.second); });
+    std::vector<bool> t;
+    for (const auto& c : cs) t.push_back(truth(c));
+    reg("cgal_epick/intersects/" + pair + "/" + dist, cs, t, check::approximate, [](const std::pair<A, B>& c) {
+        return oracle::flat_intersect_epick(support::to_flat(c.first), support::to_flat(c.second));
+    });
+}
+// A pair of a mesh or a polygon (a view of arrays a store owns) on the tests' generators, its
+// oracle as truth: make_case(rng, store, other, near) returns the partner (for a view, other's view).
+template <class Store, class B, class Gen, class Truth>
+inline void view_tiers(const std::string& pair, bool near, Gen make_case, Truth truth_of) {
+    struct view_case {
+        Store m, other;
+        B b{};
+        B partner() const {
+            if constexpr (std::is_same_v<B, decltype(Store{}.view())>) return other.view();
+            else return b;
+        }
+    };
+    const std::string dist = near ? "near_degenerate" : "random";
+    support::rng r(20261122 + (near ? 1 : 0));
+    std::vector<view_case> cs;
+    while (cs.size() < set_size) {
+        view_case c;
+        c.b = make_case(r, c.m, c.other, near);
+        cs.push_back(std::move(c));
+    }
+    auto truth = [&](const view_case& c) { return truth_of(c.m.view(), c.partner()); };
+    tiers(pair, dist, cs, truth, [](auto tier, const view_case& c) { return intersects<decltype(tier)>(c.m.view(), c.partner()); });
+}
+// A mesh pair (tests/support/mesh_cases.hpp: closed non-convex star meshes of 12 or 48
+// triangles, at every scale the tests use), the mesh oracle as truth.
+template <class B>
+inline void mesh_tiers(const std::string& pair, bool near) {
+    view_tiers<support::mesh_store, B>(
+        pair, near,
+        [](support::rng& r, support::mesh_store& m, support::mesh_store& o, bool nr) {
+            return nr ? support::mesh_near<B>(r, m, o) : support::mesh_random<B>(r, m, o);
+        },
+        [](const mesh3& m, const B& b) { return support::mesh_truth(m, b); });
+}
+// A polygon pair (tests/support/polygon_cases.hpp: simple non-convex star polygons of 8 to 24
+// vertices, half with a hole of 8, at every scale the tests use), the polygon oracle as truth.
+template <class B>
+inline void polygon_tiers(const std::string& pair, bool near) {
+    view_tiers<support::polygon_store, B>(
+        pair, near,
+        [](support::rng& r, support::polygon_store& g, support::polygon_store& o, bool nr) {
+            return nr ? support::polygon_near<B>(r, g, o) : support::polygon_random<B>(r, g, o);
+        },
+        [](const polygon2& g, const B& b) { return support::polygon_truth(g, b); });
+}
+// A k-DOP pair (tests/support/kdop_cases.hpp: the k-DOP of a few points, at every scale the
+// tests use), the LP oracle as truth.
+template <int K, class B>
+inline void kdop_tiers(const std::string& pair, bool near) {
+    const std::string dist = near ? "near_degenerate" : "random";
+    support::rng r(20261122 + (near ? 1 : 0));
+    std::vector<std::pair<kdop<K>, B>> cs;
+    while (cs.size() < set_size)
+        if (const auto c = near ? support::kdop_near<K, B>(r) : support::kdop_random<K, B>(r)) cs.push_back(*c);
+    auto truth = [](const std::pair<kdop<K>, B>& c) { return oracle::lp_intersect(support::lp(c.first), support::lp(c.second)); };
+    tiers(pair + "_" + std::to_string(K), dist, cs, truth, [](auto tier, const std::pair<kdop<K>, B>& c) { return intersects<decltype(tier)>(c.first, c.second); });
+}
+// A half-space pair (tests/support/polyhedron_cases.hpp: supporting half-spaces of a cloud, or a
+// camera frustum; near-degenerate: integer normals through boundary points), the LP as truth.
+template <class P, class B>
+inline void halfspace_tiers(const std::string& pair, bool near) {
+    const std::string dist = near ? "near_degenerate" : "random";
+    support::rng r(20261122 + (near ? 1 : 0));
+    std::vector<std::pair<P, B>> cs;
+    while (cs.size() < set_size)
+        if (const auto c = near ? support::halfspace_near<P, B>(r) : support::halfspace_random<P, B>(r)) cs.push_back(*c);
+    auto truth = [](const std::pair<P, B>& c) { return oracle::lp_intersect(support::lp(c.first), support::lp(c.second)); };
+    tiers(pair, dist, cs, truth, [](auto tier, const std::pair<P, B>& c) { return intersects<decltype(tier)>(c.first, c.second); });
+}
+inline void obb_arrays(const obb3& b, double* c, double* a, double* h) {
+    arr(b.center, c);
+    for (unsigned i = 0; i < 3; ++i) arr(b.axes[i], a + 3 * i), h[i] = b.half_extents[i];
+}
+
+} // namespace bench

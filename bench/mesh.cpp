@@ -1,0 +1,16 @@
+// Benchmarks: the mesh pairs (tests/support/mesh_cases.hpp), the mesh oracle as truth.
+#include "bench.hpp"
+
+namespace bench {
+void register_mesh(bool near) {
+    mesh_tiers<point3>("mesh_point", near);
+    mesh_tiers<segment3>("mesh_segment", near);
+    mesh_tiers<ray3>("mesh_ray", near);
+    mesh_tiers<line3>("line_mesh", near);
+    mesh_tiers<plane3>("mesh_plane", near);
+    mesh_tiers<triangle3>("mesh_triangle", near);
+    mesh_tiers<tetrahedron3>("mesh_tetrahedron", near);
+    mesh_tiers<aabb3>("aabb_mesh", near);
+    mesh_tiers<mesh3>("mesh_mesh", near);
+}
+} // namespace bench

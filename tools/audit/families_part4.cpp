@@ -1,0 +1,12 @@
+// The audit's stability and tradeoff runs, part 4 of 4 of incidence::catalog's families (families.hpp).
+#include "../../tests/oracle/cgal_oracle.hpp"
+#include <string>
+#include <vector>
+import incidence;
+#include "generators.hpp"
+#include "json.hpp"
+#include "methods.hpp"
+#include "families.hpp"
+
+template void audit_run::stability_part<3>(audit::json&, const options&, long&);
+template void audit_run::tradeoff_part<3>(audit::json&, const options&);
