@@ -50,7 +50,7 @@ enum class check { exact, conservative, aggressive, classify, approximate };
 
 // Registers one benchmark over a case set: f(case) -> bool (or certainty for classify).
 template <class Case, class F>
-inline void reg(const std::string& name, const std::vector<Case>& cases, const std::vector<bool>& truth, check kind, F f) {
+void reg(const std::string& name, const std::vector<Case>& cases, const std::vector<bool>& truth, check kind, F f) {
     benchmark::RegisterBenchmark(name.c_str(), [cases, truth, kind, f](benchmark::State& st) {
         long wrong = 0, broken = 0;
         for (std::size_t i = 0; i < cases.size(); ++i) {
@@ -180,7 +180,7 @@ inline std::vector<bb> aabb_aabb_set(bool near) {
 }
 
 template <class Case, class Truth, class Tiered>
-inline void tiers(const std::string& pair, const std::string& dist, const std::vector<Case>& cs, Truth truth_of, Tiered f) {
+void tiers(const std::string& pair, const std::string& dist, const std::vector<Case>& cs, Truth truth_of, Tiered f) {
     std::vector<bool> truth;
     for (const auto& c : cs) truth.push_back(truth_of(c));
     reg("exact/intersects/" + pair + "/" + dist, cs, truth, check::exact, [f](const Case& c) { return f(exact{}, c); });
@@ -204,7 +204,7 @@ std::vector<std::pair<A, B>> obb_tiers(const std::string& pair, bool near) {
 // A flat pair (points, lines, rays, segments, planes, triangles) on the tests' generators
 // (tests/support/flat_cases.hpp) at scale 1, CGAL Epeck as truth, and CGAL Epick's do_intersect.
 template <class A, class B>
-inline void flat_tiers(const std::string& pair, bool near) {
+void flat_tiers(const std::string& pair, bool near) {
     const std::string dist = near ? "near_degenerate" : "random";
     support::rng r(20261122 + (near ? 1 : 0));
     std::vector<std::pair<A, B>> cs;
@@ -220,7 +220,7 @@ inline void flat_tiers(const std::string& pair, bool near) {
 // A pair of a mesh or a polygon (a view of arrays a store owns) on the tests' generators, its
 // oracle as truth: make_case(rng, store, other, near) returns the partner (for a view, other's view).
 template <class Store, class B, class Gen, class Truth>
-inline void view_tiers(const std::string& pair, bool near, Gen make_case, Truth truth_of) {
+void view_tiers(const std::string& pair, bool near, Gen make_case, Truth truth_of) {
     struct view_case {
         Store m, other;
         B b{};
@@ -243,7 +243,7 @@ inline void view_tiers(const std::string& pair, bool near, Gen make_case, Truth 
 // A mesh pair (tests/support/mesh_cases.hpp: closed non-convex star meshes of 12 or 48
 // triangles, at every scale the tests use), the mesh oracle as truth.
 template <class B>
-inline void mesh_tiers(const std::string& pair, bool near) {
+void mesh_tiers(const std::string& pair, bool near) {
     view_tiers<support::mesh_store, B>(
         pair, near,
         [](support::rng& r, support::mesh_store& m, support::mesh_store& o, bool nr) {
@@ -254,7 +254,7 @@ inline void mesh_tiers(const std::string& pair, bool near) {
 // A polygon pair (tests/support/polygon_cases.hpp: simple non-convex star polygons of 8 to 24
 // vertices, half with a hole of 8, at every scale the tests use), the polygon oracle as truth.
 template <class B>
-inline void polygon_tiers(const std::string& pair, bool near) {
+void polygon_tiers(const std::string& pair, bool near) {
     view_tiers<support::polygon_store, B>(
         pair, near,
         [](support::rng& r, support::polygon_store& g, support::polygon_store& o, bool nr) {
@@ -265,7 +265,7 @@ inline void polygon_tiers(const std::string& pair, bool near) {
 // A k-DOP pair (tests/support/kdop_cases.hpp: the k-DOP of a few points, at every scale the
 // tests use), the LP oracle as truth.
 template <int K, class B>
-inline void kdop_tiers(const std::string& pair, bool near) {
+void kdop_tiers(const std::string& pair, bool near) {
     const std::string dist = near ? "near_degenerate" : "random";
     support::rng r(20261122 + (near ? 1 : 0));
     std::vector<std::pair<kdop<K>, B>> cs;
@@ -277,7 +277,7 @@ inline void kdop_tiers(const std::string& pair, bool near) {
 // A half-space pair (tests/support/polyhedron_cases.hpp: supporting half-spaces of a cloud, or a
 // camera frustum; near-degenerate: integer normals through boundary points), the LP as truth.
 template <class P, class B>
-inline void halfspace_tiers(const std::string& pair, bool near) {
+std::vector<std::pair<P, B>> halfspace_tiers(const std::string& pair, bool near) {
     const std::string dist = near ? "near_degenerate" : "random";
     support::rng r(20261122 + (near ? 1 : 0));
     std::vector<std::pair<P, B>> cs;
@@ -285,6 +285,7 @@ inline void halfspace_tiers(const std::string& pair, bool near) {
         if (const auto c = near ? support::halfspace_near<P, B>(r) : support::halfspace_random<P, B>(r)) cs.push_back(*c);
     auto truth = [](const std::pair<P, B>& c) { return oracle::lp_intersect(support::lp(c.first), support::lp(c.second)); };
     tiers(pair, dist, cs, truth, [](auto tier, const std::pair<P, B>& c) { return intersects<decltype(tier)>(c.first, c.second); });
+    return cs;
 }
 inline void obb_arrays(const obb3& b, double* c, double* a, double* h) {
     arr(b.center, c);

@@ -1,4 +1,5 @@
-// Benchmarks: the k-DOP pairs and the half-space pairs (convex_polyhedron3, frustum3), the LP as truth.
+// Benchmarks: the k-DOP pairs and the half-space pairs (convex_polyhedron3, frustum3; against a box
+// also the frustum culling test), the LP as truth.
 #include "bench.hpp"
 
 namespace bench {
@@ -19,5 +20,13 @@ void register_halfspace(bool near) {
     halfspace_tiers<frustum3, segment3>("frustum_segment", near);
     halfspace_tiers<frustum3, ray3>("frustum_ray", near);
     halfspace_tiers<frustum3, line3>("frustum_line", near);
+    halfspace_tiers<convex_polyhedron3, aabb3>("aabb_convex_polyhedron", near);
+    {
+        const auto cs = halfspace_tiers<frustum3, aabb3>("aabb_frustum", near);
+        std::vector<bool> t;
+        for (const auto& c : cs) t.push_back(oracle::lp_intersect(support::lp(c.first), support::lp(c.second)));
+        reg(std::string("culling/intersects/aabb_frustum/") + (near ? "near_degenerate" : "random"), cs, t, check::approximate,
+            [](const std::pair<frustum3, aabb3>& c) { return method::aabb_frustum_culling(c.second, c.first); });
+    }
 }
 } // namespace bench

@@ -8,8 +8,9 @@
 // bounds from the same doubles, so inverted or jointly empty slabs occur), against the same LP
 // with the k-DOP as its slab rows. The half-space pairs too (convex_polyhedron_point, _segment,
 // _ray, _line with 1 to 6 planes from the same doubles, so empty, flat and unbounded sets occur;
-// frustum_point, _segment, _ray, _line with six; contains(., point | segment)), against the LP
-// with the half-spaces as rows. Any finding aborts.
+// frustum_point, _segment, _ray, _line with six; aabb_convex_polyhedron and aabb_frustum;
+// contains(., point | segment | box)), against the LP with the half-spaces as rows. Any finding
+// aborts.
 #include "../tests/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <array>
@@ -69,6 +70,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         (void)intersects<aggressive>(line, cp);
         (void)classify(cp, ray);
         (void)contains<approximate>(cp, seg);
+        (void)intersects<exact>(box, cp);
+        (void)intersects<conservative>(fr, box);
+        (void)classify(box, fr);
+        (void)contains<approximate>(fr, box);
+        (void)contains<aggressive>(cp, box);
     }
     for (double x : v)
         if (!std::isfinite(x)) return 0;
@@ -124,6 +130,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         check(h, line);
         if (contains(h, p) != intersects(h, p)) std::abort();
         if (contains(h, seg) != (intersects(h, seg.a) && intersects(h, seg.b))) std::abort();
+        if (box.min.x <= box.max.x && box.min.y <= box.max.y && box.min.z <= box.max.z) { // the vertex test
+            check(box, h);
+            bool all = true;
+            for (int j = 0; j < 8; ++j) all = intersects(h, point3{(j & 1) ? q.x : p.x, (j & 2) ? q.y : p.y, (j & 4) ? q.z : p.z}) && all;
+            if (contains(h, box) != all) std::abort();
+        } else if (intersects(box, h)) std::abort();
     };
     {
         convex_polyhedron3 cp{};

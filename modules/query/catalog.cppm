@@ -147,6 +147,9 @@ inline constexpr std::tuple families{
     family<frustum3, segment3, 0>{"frustum_segment", "obb", "signs in double", {}},
     family<frustum3, ray3, 0>{"frustum_ray", "obb", "signs in double", {}},
     family<frustum3, line3, 0>{"frustum_line", "obb", "signs in double", {}},
+    // A box against a half-space set: the vertex test on the set's and the box's planes.
+    family<aabb3, convex_polyhedron3, 0>{"aabb_convex_polyhedron", "obb", "signs in double", {}},
+    family<aabb3, frustum3, 0>{"aabb_frustum", "obb", "signs in double", {}},
 };
 
 inline constexpr std::size_t family_count = std::tuple_size_v<decltype(families)>;

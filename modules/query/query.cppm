@@ -98,6 +98,8 @@ export import :frustum_point;
 export import :frustum_segment;
 export import :frustum_ray;
 export import :frustum_line;
+export import :aabb_convex_polyhedron;
+export import :aabb_frustum;
 import incidence.core;
 import incidence.arith;
 import incidence.shapes;
@@ -262,6 +264,7 @@ namespace method {
     return pair::triangle_triangle_sat(p, q);
 }
 [[nodiscard]] constexpr bool obb_obb_gottschalk(const obb3& a, const obb3& b) { return pair::obb_obb_gottschalk(a, b); }
+[[nodiscard]] constexpr bool aabb_frustum_culling(const aabb3& b, const frustum3& f) { return pair::aabb_frustum_culling(b, f); }
 } // namespace method
 
 } // namespace incidence

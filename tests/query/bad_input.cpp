@@ -141,8 +141,10 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
         every_tier(cp, seg, yes);
         every_tier(cp, ray, yes);
         every_tier(cp, line, yes);
-        yes += contains(fr, q) + contains(fr, seg) + contains(cp, q) + contains(cp, seg);
-        n += 8 * 5 + 4;
+        every_tier(b, fr, yes);
+        every_tier(b, cp, yes);
+        yes += contains(fr, q) + contains(fr, seg) + contains(cp, q) + contains(cp, seg) + contains(fr, b) + contains(cp, b);
+        n += 10 * 5 + 6;
         // in the plane
         auto p2 = [&] { return point2{special(r), special(r)}; };
         auto v2 = [&] { return vec2{special(r), special(r)}; };

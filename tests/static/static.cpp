@@ -190,6 +190,12 @@ static_assert(intersects(ph::integer_frustum, segment3{{0, 0, 0}, {1, 1, 1}}) &&
 static_assert(intersects(ph::integer_frustum, ray3{{0, 0, 0}, {1, 1, 1}}) && !intersects(ray3{{8, 0, 0x1.0000000000001p2}, {-1, 0, 0}}, ph::integer_frustum));
 static_assert(intersects(line3{{0, 4, 4}, {1, 0, 0}}, ph::integer_frustum) && !intersects(ph::integer_frustum, line3{{0, 0x1.0000000000001p2, 4}, {1, 0, 0}}));
 static_assert(contains(ph::integer_frustum, segment3{{1, 1, 1}, {-4, -4, 4}}) && frustum3::make(ph::integer_frustum.planes).has_value());
+// a box against them: the vertex test of both shapes' planes
+static_assert(intersects(aabb3{{0.5, 1, 1}, {2, 2, 2}}, ph::unit_cube_cut) && !intersects(aabb3{{0x1.0000000000001p-1, 1, 1}, {2, 2, 2}}, ph::unit_cube_cut));
+static_assert(!intersects(ph::roof, aabb3{{-1, 0, 0.5}, {1, 1, 1}}) && intersects(ph::roof, aabb3{{-1, 0, 0}, {1, 1, 1}}));
+static_assert(intersects(ph::integer_frustum, aabb3{{4, 4, 4}, {5, 5, 5}}) && !intersects(ph::integer_frustum, aabb3{{4, 4, 0x1.0000000000001p2}, {5, 5, 5}}));
+static_assert(!intersects(aabb3{{4.5, 0, 3}, {5, 0, 4.75}}, ph::integer_frustum) && method::aabb_frustum_culling(aabb3{{4.5, 0, 3}, {5, 0, 4.75}}, ph::integer_frustum));
+static_assert(contains(ph::integer_frustum, aabb3{{-1, -1, 1}, {1, 1, 1}}) && contains(ph::unit_cube_cut, aabb3{{0, 0, 0}, {1, 1, 0.5}}));
 // the same in the plane
 static_assert(intersects(segment2{{0, 0}, {2, 0}}, segment2{{2, 0}, {3, 5}}));
 static_assert(!intersects(segment2{{0, 0}, {2, 0}}, segment2{{0x1.0000000000001p1, 0}, {3, 0}}));

@@ -15,6 +15,9 @@ inline constexpr convex_polyhedron3 unit_cube_cut{{plane3{{1, 0, 0}, 1}, plane3{
 inline constexpr convex_polyhedron3 empty_slab{{plane3{{1, 0, 0}, 1}, plane3{{-1, 0, 0}, -2}}, 2};
 // x <= 0 alone (unbounded).
 inline constexpr convex_polyhedron3 half_space{{plane3{{1, 0, 0}, 0}}, 1};
+// z <= x and z <= -x: the wedge below z = -|x| (unbounded). A box above it that no single one of
+// its planes has wholly beyond it, such as [-1, 1] x [0, 1] x [1/2, 1], still misses it.
+inline constexpr convex_polyhedron3 roof{{plane3{{-1, 0, 1}, 0}, plane3{{1, 0, 1}, 0}}, 2};
 // Eye at the origin looking along +z with 45-degree side planes (|x|, |y| <= z), near 1, far 4:
 // corners (+-1, +-1, 1) and (+-4, +-4, 4), all exact.
 inline constexpr frustum3 integer_frustum{{plane3{{0, 0, -1}, -1}, plane3{{0, 0, 1}, 4}, plane3{{-1, 0, -1}, 0}, plane3{{1, 0, -1}, 0},

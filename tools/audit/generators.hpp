@@ -720,11 +720,24 @@ struct near_boundary<P, B> {
         } else if constexpr (std::is_same_v<B, ray3>) { // aimed at p from outside
             const point3 o = t.p + t.o * double(r.integer(1, 60)) + outward(r, t.o, 40);
             return {t.shape, ray3{o, t.p - o}};
+        } else if constexpr (std::is_same_v<B, aabb3>) { // corner p, every point on the face or outside it
+            auto side = [&](double o) { return (o > 0 ? 1.0 : (o < 0 ? -1.0 : (r.coin() ? 1.0 : -1.0))) * double(r.integer(1, 40)); };
+            const point3 q = t.p + vec3{side(t.o.x), side(t.o.y), side(t.o.z)};
+            return {t.shape, aabb3{{std::min(t.p.x, q.x), std::min(t.p.y, q.y), std::min(t.p.z, q.z)},
+                                   {std::max(t.p.x, q.x), std::max(t.p.y, q.y), std::max(t.p.z, q.z)}}};
         } else { // through p, in the face's plane
             vec3 d = cross(t.o, int_vec(r, 8));
             if (d.x == 0 && d.y == 0 && d.z == 0) d = cross(t.o, vec3{1, 2, 3});
             return {t.shape, line3{t.p, d}};
         }
+    }
+};
+template <class P>
+    requires(std::is_same_v<P, convex_polyhedron3> || std::is_same_v<P, frustum3>)
+struct near_boundary<aabb3, P> { // the box first, as in the catalog
+    static std::pair<aabb3, P> touching(rng& r) {
+        const auto [p, b] = near_boundary<P, aabb3>::touching(r);
+        return {b, p};
     }
 };
 

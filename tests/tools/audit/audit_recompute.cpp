@@ -111,7 +111,8 @@ int truth(const triangle3& t, const triangle3& u) {
 // The OBB, k-DOP, convex polyhedron and frustum pairs: exact LP feasibility.
 template <class A, class B>
     requires(std::is_same_v<A, obb3> || std::is_same_v<B, obb3> || std::is_same_v<A, kdop<14>> || std::is_same_v<B, kdop<14>> ||
-             std::is_same_v<A, convex_polyhedron3> || std::is_same_v<A, frustum3>)
+             std::is_same_v<A, convex_polyhedron3> || std::is_same_v<A, frustum3> || std::is_same_v<B, convex_polyhedron3> ||
+             std::is_same_v<B, frustum3>)
 int truth(const A& a, const B& b) {
     return oracle::lp_intersect(support::lp(a), support::lp(b));
 }
