@@ -9,6 +9,7 @@
 #include "../tests/oracle/cgal_oracle.hpp"
 #include "fcl_peer.hpp"
 #include <cmath>
+#include <cstdlib>
 #include <algorithm>
 #include <functional>
 #include <random>
@@ -27,7 +28,13 @@ import incidence;
 using namespace incidence;
 
 namespace bench {
-constexpr int set_size = 1024;
+// Cases per set: 1024, or INCIDENCE_BENCH_CASES (the smoke test in ctest uses a few, since the
+// answer check computes the exact truth of every case before timing).
+inline const std::size_t set_size = [] {
+    const char* v = std::getenv("INCIDENCE_BENCH_CASES");
+    const long n = v != nullptr ? std::atol(v) : 0;
+    return n > 0 ? static_cast<std::size_t>(n) : std::size_t{1024};
+}();
 inline std::mt19937_64 gen(20261122);
 inline double uni(double a, double b) { return std::uniform_real_distribution<double>(a, b)(gen); }
 inline int irand(int a, int b) { return std::uniform_int_distribution<int>(a, b)(gen); }

@@ -12,6 +12,8 @@ void register_halfspace(bool near) {
     kdop_tiers<14, kdop<14>>("kdop_kdop", near);
     kdop_tiers<26, kdop<26>>("kdop_kdop", near);
     kdop_tiers<14, aabb3>("aabb_kdop", near);
+    kdop_tiers<14, plane3>("kdop_plane", near);
+    kdop_tiers<26, plane3>("kdop_plane", near);
     halfspace_tiers<convex_polyhedron3, point3>("convex_polyhedron_point", near);
     halfspace_tiers<convex_polyhedron3, segment3>("convex_polyhedron_segment", near);
     halfspace_tiers<convex_polyhedron3, ray3>("convex_polyhedron_ray", near);
@@ -20,6 +22,10 @@ void register_halfspace(bool near) {
     halfspace_tiers<frustum3, segment3>("frustum_segment", near);
     halfspace_tiers<frustum3, ray3>("frustum_ray", near);
     halfspace_tiers<frustum3, line3>("frustum_line", near);
+    halfspace_tiers<convex_polyhedron3, plane3>("convex_polyhedron_plane", near);
+    halfspace_tiers<frustum3, plane3>("frustum_plane", near);
+    halfspace_tiers<convex_polyhedron3, convex_polyhedron3>("convex_polyhedron_convex_polyhedron", near);
+    halfspace_tiers<frustum3, convex_polyhedron3>("convex_polyhedron_frustum", near);
     halfspace_tiers<convex_polyhedron3, aabb3>("aabb_convex_polyhedron", near);
     {
         const auto cs = halfspace_tiers<frustum3, aabb3>("aabb_frustum", near);

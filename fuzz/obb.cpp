@@ -3,12 +3,14 @@
 // patterns, with the axes taken from the bits (any parallelepiped, flat or degenerate) or a unit
 // frame. Exact answers must match; conservative/aggressive/classify keep their contracts; both
 // argument orders agree. Every call must survive NaN, infinities, subnormals and negative
-// extents. The k-DOP pairs too (kdop_point, kdop_segment, kdop_ray, kdop_line, kdop_kdop with the
+// extents. The k-DOP pairs too (kdop_point, kdop_segment, kdop_ray, kdop_line, kdop_plane, kdop_kdop with the
 // same K and with a 14-DOP, aabb_kdop, contains(kdop, aabb | segment); K from byte 0 % 4,
 // bounds from the same doubles, so inverted or jointly empty slabs occur), against the same LP
 // with the k-DOP as its slab rows. The half-space pairs too (convex_polyhedron_point, _segment,
 // _ray, _line with 1 to 6 planes from the same doubles, so empty, flat and unbounded sets occur;
 // frustum_point, _segment, _ray, _line with six; aabb_convex_polyhedron and aabb_frustum;
+// convex_polyhedron_plane and frustum_plane; convex_polyhedron_convex_polyhedron and
+// convex_polyhedron_frustum;
 // contains(., point | segment | box)), against the LP with the half-spaces as rows. Any finding
 // aborts.
 #include "../tests/oracle/cgal_oracle.hpp"
@@ -57,6 +59,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         (void)intersects<exact>(kd, kd);
         (void)intersects<conservative>(box, kd);
         (void)contains<aggressive>(kd, box);
+        (void)intersects<approximate>(pl, kd);
         const frustum3 fr{{plane3{{v[0], v[1], v[2]}, v[3]}, plane3{{v[4], v[5], v[6]}, v[7]}, plane3{{v[8], v[9], v[10]}, v[11]},
                            plane3{{v[12], v[13], v[14]}, v[15]}, plane3{{v[16], v[17], v[18]}, v[19]}, plane3{{v[20], v[21], v[22]}, v[23]}}};
         convex_polyhedron3 cp{};
@@ -75,6 +78,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         (void)classify(box, fr);
         (void)contains<approximate>(fr, box);
         (void)contains<aggressive>(cp, box);
+        (void)intersects<exact>(cp, pl);
+        (void)intersects<approximate>(pl, fr);
+        (void)classify(cp, pl);
+        (void)intersects<aggressive>(fr, pl);
+        (void)intersects<exact>(cp, cp);
+        (void)intersects<conservative>(fr, cp);
+        (void)classify(cp, fr);
     }
     for (double x : v)
         if (!std::isfinite(x)) return 0;
@@ -106,6 +116,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         check(kd, seg);
         check(kd, ray);
         check(kd, line);
+        check(kd, pl);
         if (contains(kd, p) != intersects(kd, p)) std::abort();
         // two k-DOPs (the same K, and a 14-DOP), a box: slab overlap and the Farkas certificates
         kdop<K> kd2{};
@@ -128,6 +139,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         check(h, seg);
         check(h, ray);
         check(h, line);
+        check(h, pl); // the feasibility test of possibly unbounded sets
         if (contains(h, p) != intersects(h, p)) std::abort();
         if (contains(h, seg) != (intersects(h, seg.a) && intersects(h, seg.b))) std::abort();
         if (box.min.x <= box.max.x && box.min.y <= box.max.y && box.min.z <= box.max.z) { // the vertex test
@@ -146,6 +158,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         frustum3 fr{};
         for (unsigned i = 0; i < 6; ++i) fr.planes[i] = plane3{{v[(4 * i + 1) % 24], v[(4 * i + 2) % 24], v[(4 * i + 3) % 24]}, v[4 * i % 24]};
         halfspaces(fr);
+        // two half-space sets: a second polyhedron of 1 to 6 planes from other doubles (byte 2)
+        convex_polyhedron3 cp2{};
+        cp2.count = size < 3 ? 1 : 1 + data[2] % 6;
+        for (unsigned i = 0; i < static_cast<unsigned>(cp2.count); ++i)
+            cp2.planes[i] = plane3{{v[(4 * i + 13) % 24], v[(4 * i + 14) % 24], v[(4 * i + 15) % 24]}, v[(4 * i + 3) % 24]};
+        check(cp, cp2);
+        check(cp2, fr);
     }
     switch (size == 0 ? 0 : data[0] % 4) {
     case 0: kdops.template operator()<6>(); break;

@@ -1,5 +1,6 @@
-// aabb3 against convex_polyhedron3, contains(convex_polyhedron3, aabb3), and the vertex test that
-// the half-space pairs with a box share (aabb_frustum).
+// aabb3 against convex_polyhedron3, contains(convex_polyhedron3, aabb3), and the half-space
+// feasibility test the other half-space pairs share: with a box (aabb_frustum), and of possibly
+// unbounded sets (polyq::feasible: convex_polyhedron_plane, frustum_plane).
 // Semantics: the closed box (bounds ordered and finite; an inverted box is empty) and the closed
 // half-space set of convex_polyhedron_point.cppm (possibly empty or unbounded; a non-finite number
 // or a count outside [0, capacity]: no set). Touching at a face, an edge or a vertex counts.
@@ -29,40 +30,30 @@ export namespace incidence::pair {
 
 namespace polyq {
 
-// Does the box meet the m half-spaces n_i . x <= c_i (m <= convex_polyhedron3::capacity)?
+// Is the set of the `total` half-spaces n_i . x <= c_i (finite numbers) not empty? It may be
+// unbounded. A nonempty set's minimal faces are {x : n_i . x = c_i for i in I} with rank(n_I) the
+// rank r of all the normals (Schrijver 1986, section 8.5), so one such face point lies in every
+// half-space: for r = 3 a vertex, three planes with independent normals; for r = 2 a line where
+// two planes meet; for r = 1 a plane. Each candidate point is V / D, tested as sign(c_l D - n_l . V)
+// (zero or sign(D)): homogeneous signs of degree 4 (vertices), 5 (lines) and 3 (planes).
 template <class K>
-[[nodiscard]] constexpr bool box_meets(K& k, const aabb3& b, const plane3* planes, int m) {
-    constexpr int capacity = convex_polyhedron3::capacity;
-    if (!well_formed(planes, m, capacity) || !well_formed_finite(b)) return false;
-    // A plane with the whole box beyond it: the box corner least along its normal is outside.
-    for (int i = 0; i < m; ++i) {
-        const plane3 p = planes[i];
-        const point3 q{p.normal.x > 0 ? b.min.x : b.max.x, p.normal.y > 0 ? b.min.y : b.max.y, p.normal.z > 0 ? b.min.z : b.max.z};
-        if (k.sgn([=](auto L) { return L(p.offset) * L(1.0) - arith::dot(arith::lift(L, p.normal), arith::lift(L, q)); }) == sign::negative)
-            return false;
-    }
-    // The rows: the polyhedron's planes, then the box's six faces.
-    std::array<plane3, capacity + 6> rows{};
-    for (int i = 0; i < m; ++i) rows[static_cast<unsigned>(i)] = planes[i];
-    const auto n = static_cast<unsigned>(m);
-    rows[n + 0] = plane3{{1, 0, 0}, b.max.x};
-    rows[n + 1] = plane3{{-1, 0, 0}, -b.min.x};
-    rows[n + 2] = plane3{{0, 1, 0}, b.max.y};
-    rows[n + 3] = plane3{{0, -1, 0}, -b.min.y};
-    rows[n + 4] = plane3{{0, 0, 1}, b.max.z};
-    rows[n + 5] = plane3{{0, 0, -1}, -b.min.z};
-    const unsigned total = n + 6;
+[[nodiscard]] constexpr bool feasible(K& k, const plane3* rows, unsigned total) {
     // A zero normal, or two normals equal or opposite (the box's faces across one axis, a frustum's
     // near and far planes, a repeated plane): no single point, known without a sign (which the
     // filter could not prove zero).
-    auto zero = [&rows](unsigned x) {
+    auto zero = [rows](unsigned x) {
         const vec3 a = rows[x].normal;
         return a.x == 0 && a.y == 0 && a.z == 0;
     };
-    auto parallel = [&rows](unsigned x, unsigned y) {
+    auto parallel = [rows](unsigned x, unsigned y) {
         const vec3 a = rows[x].normal, c = rows[y].normal;
         return (a.x == c.x && a.y == c.y && a.z == c.z) || (a.x == -c.x && a.y == -c.y && a.z == -c.z);
     };
+    // a zero normal is all of space (offset >= 0) or nothing: a comparison
+    for (unsigned i = 0; i < total; ++i)
+        if (zero(i) && rows[i].offset < 0) return false;
+    bool independent = false; // some candidate of the current rank was found
+    // r = 3: the vertices
     for (unsigned i = 0; i < total; ++i) {
         if (zero(i)) continue;
         for (unsigned j = i + 1; j < total; ++j) {
@@ -72,6 +63,7 @@ template <class K>
                 const plane3 a = rows[i], c = rows[j], e = rows[l];
                 const sign d = k.sgn([=](auto L) { return arith::det3(arith::lift(L, a.normal), arith::lift(L, c.normal), arith::lift(L, e.normal)); });
                 if (d == sign::zero) continue; // no single point
+                independent = true;
                 bool vertex_inside = true;
                 for (unsigned r = 0; r < total && vertex_inside; ++r) {
                     if (r == i || r == j || r == l) continue;
@@ -89,7 +81,78 @@ template <class K>
             }
         }
     }
-    return false;
+    if (independent) return false;
+    // r = 2: every normal is orthogonal to w = n_i x n_j (nonzero), and the line n_i . x = c_i,
+    // n_j . x = c_j is V / D with V = c_i n_j x w + c_j w x n_i and D = w . w > 0
+    for (unsigned i = 0; i < total; ++i) {
+        if (zero(i)) continue;
+        for (unsigned j = i + 1; j < total; ++j) {
+            if (zero(j) || parallel(i, j)) continue;
+            const vec3 a = rows[i].normal, c = rows[j].normal;
+            const double ca = rows[i].offset, cc = rows[j].offset;
+            const sign w[3] = {k.sgn([=](auto L) { return arith::cross(arith::lift(L, a), arith::lift(L, c)).x; }),
+                               k.sgn([=](auto L) { return arith::cross(arith::lift(L, a), arith::lift(L, c)).y; }),
+                               k.sgn([=](auto L) { return arith::cross(arith::lift(L, a), arith::lift(L, c)).z; })};
+            if (w[0] == sign::zero && w[1] == sign::zero && w[2] == sign::zero) continue; // parallel
+            independent = true;
+            bool line_inside = true;
+            for (unsigned r = 0; r < total && line_inside; ++r) {
+                if (r == i || r == j) continue;
+                const plane3 h = rows[r];
+                line_inside = k.sgn([=](auto L) {
+                    const auto na = arith::lift(L, a), nc = arith::lift(L, c), nh = arith::lift(L, h.normal);
+                    const auto wv = arith::cross(na, nc);
+                    return L(h.offset) * arith::dot(wv, wv) - (L(ca) * arith::det3(nh, nc, wv) + L(cc) * arith::det3(nh, wv, na));
+                }) != sign::negative;
+            }
+            if (line_inside) return true;
+        }
+    }
+    if (independent) return false;
+    // r = 1: the plane n_i . x = c_i is V / D with V = c_i n_i and D = n_i . n_i > 0
+    bool any = false;
+    for (unsigned i = 0; i < total; ++i) {
+        if (zero(i)) continue;
+        any = true;
+        const vec3 a = rows[i].normal;
+        const double ca = rows[i].offset;
+        bool plane_inside = true;
+        for (unsigned r = 0; r < total && plane_inside; ++r) {
+            if (r == i) continue;
+            const plane3 h = rows[r];
+            plane_inside = k.sgn([=](auto L) {
+                const auto na = arith::lift(L, a), nh = arith::lift(L, h.normal);
+                return L(h.offset) * arith::dot(na, na) - L(ca) * arith::dot(nh, na);
+            }) != sign::negative;
+        }
+        if (plane_inside) return true;
+    }
+    return !any; // r = 0: only zero normals, all of space
+}
+
+// Does the box meet the m half-spaces n_i . x <= c_i (m <= convex_polyhedron3::capacity)?
+template <class K>
+[[nodiscard]] constexpr bool box_meets(K& k, const aabb3& b, const plane3* planes, int m) {
+    constexpr int capacity = convex_polyhedron3::capacity;
+    if (!well_formed(planes, m, capacity) || !well_formed_finite(b)) return false;
+    // A plane with the whole box beyond it: the box corner least along its normal is outside.
+    for (int i = 0; i < m; ++i) {
+        const plane3 p = planes[i];
+        const point3 q = least_corner(b, p.normal);
+        if (k.sgn([=](auto L) { return L(p.offset) * L(1.0) - arith::dot(arith::lift(L, p.normal), arith::lift(L, q)); }) == sign::negative)
+            return false;
+    }
+    // The rows: the polyhedron's planes, then the box's six faces (bounded: the vertex case).
+    std::array<plane3, capacity + 6> rows{};
+    for (int i = 0; i < m; ++i) rows[static_cast<unsigned>(i)] = planes[i];
+    const auto n = static_cast<unsigned>(m);
+    rows[n + 0] = plane3{{1, 0, 0}, b.max.x};
+    rows[n + 1] = plane3{{-1, 0, 0}, -b.min.x};
+    rows[n + 2] = plane3{{0, 1, 0}, b.max.y};
+    rows[n + 3] = plane3{{0, -1, 0}, -b.min.y};
+    rows[n + 4] = plane3{{0, 0, 1}, b.max.z};
+    rows[n + 5] = plane3{{0, 0, -1}, -b.min.z};
+    return feasible(k, rows.data(), n + 6);
 }
 
 } // namespace polyq

@@ -34,7 +34,7 @@ template <class K>
 [[nodiscard]] constexpr bool aabb_frustum_culling(const aabb3& b, const frustum3& f) {
     if (!well_formed_finite(b) || !polyq::well_formed(f.planes.data(), 6, 6)) return false;
     for (const plane3& p : f.planes) {
-        const point3 q{p.normal.x > 0 ? b.min.x : b.max.x, p.normal.y > 0 ? b.min.y : b.max.y, p.normal.z > 0 ? b.min.z : b.max.z};
+        const point3 q = least_corner(b, p.normal);
         if (p.normal.x * q.x + p.normal.y * q.y + p.normal.z * q.z > p.offset) return false;
     }
     return true;

@@ -34,6 +34,10 @@ struct box_corners {
         for (int i = 0; i < 8; ++i) p[i] = point3{(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z};
     }
 };
+// The box corner least along n (where a component of n is zero, either bound would do).
+[[nodiscard]] constexpr point3 least_corner(const aabb3& b, const vec3& n) {
+    return {n.x > 0 ? b.min.x : b.max.x, n.y > 0 ? b.min.y : b.max.y, n.z > 0 ? b.min.z : b.max.z};
+}
 
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const aabb3& b, const tetrahedron3& t) {

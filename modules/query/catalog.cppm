@@ -150,6 +150,13 @@ inline constexpr std::tuple families{
     // A box against a half-space set: the vertex test on the set's and the box's planes.
     family<aabb3, convex_polyhedron3, 0>{"aabb_convex_polyhedron", "obb", "signs in double", {}},
     family<aabb3, frustum3, 0>{"aabb_frustum", "obb", "signs in double", {}},
+    // A plane against a half-space set: the set's points on both sides (two feasibility tests).
+    family<convex_polyhedron3, plane3, 0>{"convex_polyhedron_plane", "obb", "signs in double", {}},
+    family<frustum3, plane3, 0>{"frustum_plane", "obb", "signs in double", {}},
+    family<kdop<14>, plane3, 0>{"kdop_plane", "obb", "signs in double", {}},
+    // Two half-space sets: a face with the other set beyond it, a point inside both, else feasibility.
+    family<convex_polyhedron3, convex_polyhedron3, 0>{"convex_polyhedron_convex_polyhedron", "obb", "signs in double", {}},
+    family<convex_polyhedron3, frustum3, 0>{"convex_polyhedron_frustum", "obb", "signs in double", {}},
 };
 
 inline constexpr std::size_t family_count = std::tuple_size_v<decltype(families)>;

@@ -118,6 +118,16 @@ template <int K>
 }
 template <int K>
 inline constexpr auto circuits = make_circuits<K>();
+// Evaluated once here for the four k-DOPs, so a user's translation unit never re-evaluates them
+// (and may use a lower -fconstexpr-steps limit than these tables need).
+template <>
+inline constexpr auto circuits<6> = make_circuits<6>();
+template <>
+inline constexpr auto circuits<14> = make_circuits<14>();
+template <>
+inline constexpr auto circuits<18> = make_circuits<18>();
+template <>
+inline constexpr auto circuits<26> = make_circuits<26>();
 
 // A candidate common point in double: the centre of the axis slabs, moved for a few rounds to the
 // middle of each slab it is not strictly inside (alternating projections, Bregman 1965). Only a

@@ -124,8 +124,9 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
         every_tier(kd, kd, yes);
         every_tier(kd, kd2, yes);
         every_tier(b, kd, yes);
+        every_tier(kd2, pl, yes);
         yes += contains(kd, q) + contains(kd, b) + contains(kd2, seg);
-        n += 7 * 5 + 3;
+        n += 8 * 5 + 3;
         // the half-space pairs: special planes (zero, NaN and infinite normals and offsets), and a
         // count outside [0, capacity]
         frustum3 fr{};
@@ -143,8 +144,12 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
         every_tier(cp, line, yes);
         every_tier(b, fr, yes);
         every_tier(b, cp, yes);
+        every_tier(cp, pl, yes);
+        every_tier(pl, fr, yes);
+        every_tier(cp, cp, yes);
+        every_tier(fr, cp, yes);
         yes += contains(fr, q) + contains(fr, seg) + contains(cp, q) + contains(cp, seg) + contains(fr, b) + contains(cp, b);
-        n += 10 * 5 + 6;
+        n += 14 * 5 + 6;
         // in the plane
         auto p2 = [&] { return point2{special(r), special(r)}; };
         auto v2 = [&] { return vec2{special(r), special(r)}; };

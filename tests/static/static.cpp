@@ -196,6 +196,16 @@ static_assert(!intersects(ph::roof, aabb3{{-1, 0, 0.5}, {1, 1, 1}}) && intersect
 static_assert(intersects(ph::integer_frustum, aabb3{{4, 4, 4}, {5, 5, 5}}) && !intersects(ph::integer_frustum, aabb3{{4, 4, 0x1.0000000000001p2}, {5, 5, 5}}));
 static_assert(!intersects(aabb3{{4.5, 0, 3}, {5, 0, 4.75}}, ph::integer_frustum) && method::aabb_frustum_culling(aabb3{{4.5, 0, 3}, {5, 0, 4.75}}, ph::integer_frustum));
 static_assert(contains(ph::integer_frustum, aabb3{{-1, -1, 1}, {1, 1, 1}}) && contains(ph::unit_cube_cut, aabb3{{0, 0, 0}, {1, 1, 0.5}}));
+// a plane against them: the set's points on both sides (vertices, the roof's ridge line, a half-space's plane)
+static_assert(intersects(ph::unit_cube_cut, plane3{{1, 1, 1}, 2.5}) && !intersects(plane3{{1, 1, 1}, 0x1.4000000000001p1}, ph::unit_cube_cut));
+static_assert(intersects(ph::roof, plane3{{0, 0, 1}, 0}) && !intersects(ph::roof, plane3{{0, 0, 1}, 0x1p-1074}));
+static_assert(intersects(ph::half_space, plane3{{-2, 0, 0}, 2}) && !intersects(ph::half_space, plane3{{1, 0, 0}, 0x1p-1074}));
+static_assert(intersects(ph::integer_frustum, plane3{{1, 1, 0}, 8}) && !intersects(ph::integer_frustum, plane3{{1, 1, 0}, 0x1.0000000000001p3}));
+// two half-space sets: a face with the other beyond it, a point inside both, the feasibility test
+static_assert(intersects(ph::roof, convex_polyhedron3{{plane3{{0, 0, -1}, 0}}, 1}) && !intersects(ph::roof, convex_polyhedron3{{plane3{{0, 0, -1}, -0x1p-1074}}, 1}));
+static_assert(intersects(ph::unit_cube_cut, ph::unit_cube_cut) && !intersects(ph::empty_slab, ph::half_space));
+static_assert(intersects(ph::half_space, ph::integer_frustum) && !intersects(convex_polyhedron3{{plane3{{0, 0, -1}, -0x1.0000000000001p2}}, 1}, ph::integer_frustum));
+static_assert(intersects(support::corner_cut, plane3{{1, 1, 1}, 2.5}) && !intersects(plane3{{1, 1, 1}, 0x1.4000000000001p1}, support::corner_cut));
 // the same in the plane
 static_assert(intersects(segment2{{0, 0}, {2, 0}}, segment2{{2, 0}, {3, 5}}));
 static_assert(!intersects(segment2{{0, 0}, {2, 0}}, segment2{{0x1.0000000000001p1, 0}, {3, 0}}));

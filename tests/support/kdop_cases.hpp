@@ -133,7 +133,9 @@ std::optional<std::pair<incidence::kdop<K>, B>> kdop_near(rng& r) {
         d = cross(nd, d);
         if (d.x == 0 && d.y == 0 && d.z == 0) d = cross(nd, vec3{1, 2, 3});
     }
-    const auto b = place<B>(r, X, d, r.coin());
+    auto b = place<B>(r, X, d, r.coin());
+    if constexpr (std::is_same_v<B, plane3>) // the face's own plane through X, either orientation: touching
+        if (r.integer(0, 2) == 0) b = {r.coin() ? nd : -nd, X};
     transform tr = random_transform(r, true, true);
     for (auto& p : pts) p = moved(p, tr);
     const auto kd = kdop_around<K>(pts);

@@ -203,6 +203,29 @@ inline halfspace_set frustum_near_set(rng& r) {
     return h;
 }
 
+// A polyhedron at X for a second half-space set: 4 to 12 supporting half-spaces of a small dyadic
+// cloud that contains X and lies on the outer side of f (when f is not zero), and two times in
+// three the half-space beyond that face through X (-f . x <= -f . X), so the two sets meet at most
+// in the face's plane.
+inline halfspace_set polyhedron_near_at(rng& r, incidence::point3 X, incidence::vec3 f) {
+    using namespace incidence;
+    std::vector<point3> pts{X};
+    for (int i = r.integer(3, 7); i > 0; --i) {
+        vec3 w{r.integer(-8, 8) * 0.25, r.integer(-8, 8) * 0.25, r.integer(-8, 8) * 0.25};
+        if (dot(f, w) < 0) w = -w;
+        pts.push_back(X + w);
+    }
+    halfspace_set h;
+    for (int i = r.integer(4, 12); i > 0; --i) {
+        const vec3 n = small_normal(r);
+        h.planes.push_back({n, extreme(pts, n)});
+    }
+    if (!(f.x == 0 && f.y == 0 && f.z == 0) && r.integer(0, 2) != 0) h.planes.push_back({-f, X});
+    h.X = X;
+    h.face = -f;
+    return h;
+}
+
 template <class P>
 struct is_halfspace_shape : std::bool_constant<std::is_same_v<P, incidence::convex_polyhedron3> || std::is_same_v<P, incidence::frustum3>> {};
 
@@ -211,25 +234,41 @@ template <class P, class B>
 std::optional<std::pair<P, B>> halfspace_near(rng& r) {
     using namespace incidence;
     const halfspace_set h = std::is_same_v<P, frustum3> ? frustum_near_set(r) : polyhedron_near_set(r);
-    vec3 d = small_dir(r);
-    const bool has_face = !(h.face.x == 0 && h.face.y == 0 && h.face.z == 0);
-    if (has_face && r.coin()) { // along the face
-        d = cross(h.face, d);
-        if (d.x == 0 && d.y == 0 && d.z == 0) d = cross(h.face, vec3{1, 2, 3});
+    if constexpr (std::is_same_v<B, convex_polyhedron3>) { // a second polyhedron at X, beyond the face
+        const halfspace_set h2 = polyhedron_near_at(r, h.X, h.face);
+        transform tr = random_transform(r, true, true);
+        P a;
+        if constexpr (std::is_same_v<P, frustum3>) a = realise_frustum(h, tr);
+        else a = realise_polyhedron(h, tr);
+        const convex_polyhedron3 b = realise_polyhedron(h2, tr);
+        if (!finite_shape(a) || !finite_shape(b)) return std::nullopt;
+        return std::pair{a, b};
+    } else {
+        vec3 d = small_dir(r);
+        const bool has_face = !(h.face.x == 0 && h.face.y == 0 && h.face.z == 0);
+        if (has_face && r.coin()) { // along the face
+            d = cross(h.face, d);
+            if (d.x == 0 && d.y == 0 && d.z == 0) d = cross(h.face, vec3{1, 2, 3});
+        }
+        auto b = place<B>(r, h.X, d, r.coin());
+        if constexpr (std::is_same_v<B, plane3>) // a face's own plane through X, either orientation: touching
+            if (has_face && r.integer(0, 2) == 0) b = {r.coin() ? h.face : -h.face, h.X};
+        transform tr = random_transform(r, true, true);
+        P a;
+        if constexpr (std::is_same_v<P, frustum3>) a = realise_frustum(h, tr);
+        else a = realise_polyhedron(h, tr);
+        const B bb = realise(b, tr);
+        if (!finite_shape(a)) return std::nullopt;
+        return std::pair{a, bb};
     }
-    const auto b = place<B>(r, h.X, d, r.coin());
-    transform tr = random_transform(r, true, true);
-    P a;
-    if constexpr (std::is_same_v<P, frustum3>) a = realise_frustum(h, tr);
-    else a = realise_polyhedron(h, tr);
-    const B bb = realise(b, tr);
-    if (!finite_shape(a)) return std::nullopt;
-    return std::pair{a, bb};
 }
 template <class P, class B>
 std::optional<std::pair<P, B>> halfspace_random(rng& r) {
     using namespace incidence;
-    const auto b = random_shape<B>(r, false, 0.0);
+    const auto b = [&] {
+        if constexpr (std::is_same_v<B, convex_polyhedron3>) return polyhedron_random_set(r);
+        else return random_shape<B>(r, false, 0.0);
+    }();
     transform tr = random_transform(r, false, true);
     P a;
     if constexpr (std::is_same_v<P, frustum3>) {
@@ -242,8 +281,10 @@ std::optional<std::pair<P, B>> halfspace_random(rng& r) {
     } else {
         a = realise_polyhedron(polyhedron_random_set(r), tr);
     }
-    const B bb = realise(b, tr);
-    if (!finite_shape(a)) return std::nullopt;
+    B bb;
+    if constexpr (std::is_same_v<B, convex_polyhedron3>) bb = realise_polyhedron(b, tr);
+    else bb = realise(b, tr);
+    if (!finite_shape(a) || !finite_shape(bb)) return std::nullopt;
     return std::pair{a, bb};
 }
 

@@ -597,6 +597,14 @@ struct near_boundary<kdop<14>, line3> {
     }
 };
 template <>
+struct near_boundary<kdop<14>, plane3> {
+    static std::pair<kdop<14>, plane3> touching(rng& r) { // the face's plane through p, either orientation
+        const auto t = touching_kdop(r);
+        const vec3 n = t.o * (r.coin() ? double(r.integer(1, 3)) : -double(r.integer(1, 3)));
+        return {t.box, plane3{n, dot(n, t.p - point3{0, 0, 0})}};
+    }
+};
+template <>
 struct near_boundary<kdop<14>, kdop<14>> {
     static std::pair<kdop<14>, kdop<14>> touching(rng& r) { // a cloud from p outwards, p included
         const auto t = touching_kdop(r);
@@ -725,11 +733,38 @@ struct near_boundary<P, B> {
             const point3 q = t.p + vec3{side(t.o.x), side(t.o.y), side(t.o.z)};
             return {t.shape, aabb3{{std::min(t.p.x, q.x), std::min(t.p.y, q.y), std::min(t.p.z, q.z)},
                                    {std::max(t.p.x, q.x), std::max(t.p.y, q.y), std::max(t.p.z, q.z)}}};
+        } else if constexpr (std::is_same_v<B, convex_polyhedron3>) {
+            // the supporting planes of an integer cloud from p outwards (p included), and two times
+            // in three the face's opposite half-space through p: touching at p at least
+            point3 pts[8];
+            const int n = r.integer(3, 8);
+            pts[0] = t.p;
+            for (int i = 1; i < n; ++i) pts[i] = t.p + outward(r, t.o, 300);
+            convex_polyhedron3 q{};
+            q.count = r.integer(4, 10);
+            for (int i = 0; i < q.count; ++i) {
+                const vec3 d = int_vec(r, 3);
+                double top = dot(d, pts[0] - point3{0, 0, 0});
+                for (int j = 1; j < n; ++j) top = std::max(top, dot(d, pts[j] - point3{0, 0, 0})); // exact: integers
+                q.planes[static_cast<unsigned>(i)] = plane3{d, top};
+            }
+            if (r.integer(0, 2) != 0) q.planes[static_cast<unsigned>(q.count++)] = plane3{-t.o, -dot(t.o, t.p - point3{0, 0, 0})};
+            return {t.shape, q};
+        } else if constexpr (std::is_same_v<B, plane3>) { // the face's plane through p, either orientation
+            const vec3 n = t.o * (r.coin() ? double(r.integer(1, 3)) : -double(r.integer(1, 3)));
+            return {t.shape, plane3{n, dot(n, t.p - point3{0, 0, 0})}};
         } else { // through p, in the face's plane
             vec3 d = cross(t.o, int_vec(r, 8));
             if (d.x == 0 && d.y == 0 && d.z == 0) d = cross(t.o, vec3{1, 2, 3});
             return {t.shape, line3{t.p, d}};
         }
+    }
+};
+template <>
+struct near_boundary<convex_polyhedron3, frustum3> { // the polyhedron first, as in the catalog
+    static std::pair<convex_polyhedron3, frustum3> touching(rng& r) {
+        const auto [f, c] = near_boundary<frustum3, convex_polyhedron3>::touching(r);
+        return {c, f};
     }
 };
 template <class P>
