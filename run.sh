@@ -99,7 +99,7 @@ test)
     setup
     data
     start=$(date +%s)
-    echo "== release build: unit, oracle, static, consumer-from-install, benchmark smoke, corpus replay"
+    echo "== release build: unit, oracle, static, consumer-from-install, benchmark smoke"
     build release
     run_tests release
     echo "== debug build (-O0) with AddressSanitizer + UndefinedBehaviorSanitizer: the tests (the oracle tests of"
