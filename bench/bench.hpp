@@ -186,8 +186,11 @@ inline std::vector<bb> aabb_aabb_set(bool near) {
     return v;
 }
 
+// The registering functions below are not inlined: each bench file calls many of them once, and
+// inlined they made one function per file that took most of its compile time. The timed loops
+// are the registered lambdas, not these.
 template <class Case, class Truth, class Tiered>
-void tiers(const std::string& pair, const std::string& dist, const std::vector<Case>& cs, Truth truth_of, Tiered f) {
+[[gnu::noinline]] void tiers(const std::string& pair, const std::string& dist, const std::vector<Case>& cs, Truth truth_of, Tiered f) {
     std::vector<bool> truth;
     for (const auto& c : cs) truth.push_back(truth_of(c));
     reg("exact/intersects/" + pair + "/" + dist, cs, truth, check::exact, [f](const Case& c) { return f(exact{}, c); });
@@ -198,7 +201,7 @@ void tiers(const std::string& pair, const std::string& dist, const std::vector<C
 
 // An OBB pair on the tests' generators (tests/support/obb_cases.hpp), the LP oracle as truth.
 template <class A, class B>
-std::vector<std::pair<A, B>> obb_tiers(const std::string& pair, bool near) {
+[[gnu::noinline]] std::vector<std::pair<A, B>> obb_tiers(const std::string& pair, bool near) {
     const std::string dist = near ? "near_degenerate" : "random";
     support::rng r(20261122 + (near ? 1 : 0));
     std::vector<std::pair<A, B>> cs;
@@ -211,7 +214,7 @@ std::vector<std::pair<A, B>> obb_tiers(const std::string& pair, bool near) {
 // A flat pair (points, lines, rays, segments, planes, triangles) on the tests' generators
 // (tests/support/flat_cases.hpp) at scale 1, CGAL Epeck as truth, and CGAL Epick's do_intersect.
 template <class A, class B>
-void flat_tiers(const std::string& pair, bool near) {
+[[gnu::noinline]] void flat_tiers(const std::string& pair, bool near) {
     const std::string dist = near ? "near_degenerate" : "random";
     support::rng r(20261122 + (near ? 1 : 0));
     std::vector<std::pair<A, B>> cs;
@@ -227,7 +230,7 @@ void flat_tiers(const std::string& pair, bool near) {
 // A pair of a mesh or a polygon (a view of arrays a store owns) on the tests' generators, its
 // oracle as truth: make_case(rng, store, other, near) returns the partner (for a view, other's view).
 template <class Store, class B, class Gen, class Truth>
-void view_tiers(const std::string& pair, bool near, Gen make_case, Truth truth_of) {
+[[gnu::noinline]] void view_tiers(const std::string& pair, bool near, Gen make_case, Truth truth_of) {
     struct view_case {
         Store m, other;
         B b{};
@@ -272,7 +275,7 @@ void polygon_tiers(const std::string& pair, bool near) {
 // A k-DOP pair (tests/support/kdop_cases.hpp: the k-DOP of a few points, at every scale the
 // tests use), the LP oracle as truth.
 template <int K, class B>
-void kdop_tiers(const std::string& pair, bool near) {
+[[gnu::noinline]] void kdop_tiers(const std::string& pair, bool near) {
     const std::string dist = near ? "near_degenerate" : "random";
     support::rng r(20261122 + (near ? 1 : 0));
     std::vector<std::pair<kdop<K>, B>> cs;
@@ -284,7 +287,7 @@ void kdop_tiers(const std::string& pair, bool near) {
 // A half-space pair (tests/support/polyhedron_cases.hpp: supporting half-spaces of a cloud, or a
 // camera frustum; near-degenerate: integer normals through boundary points), the LP as truth.
 template <class P, class B>
-std::vector<std::pair<P, B>> halfspace_tiers(const std::string& pair, bool near) {
+[[gnu::noinline]] std::vector<std::pair<P, B>> halfspace_tiers(const std::string& pair, bool near) {
     const std::string dist = near ? "near_degenerate" : "random";
     support::rng r(20261122 + (near ? 1 : 0));
     std::vector<std::pair<P, B>> cs;

@@ -7,6 +7,7 @@
 // Source: Ericson, Real-Time Collision Detection (2005), section 4.2 (AABB overlap).
 export module incidence.query:aabb_aabb;
 import incidence.core;
+import incidence.arith;
 import incidence.shapes;
 
 export namespace incidence::pair {
@@ -54,4 +55,10 @@ template <class K>
     return true;
 }
 
+} // namespace incidence::pair
+
+// The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
+namespace incidence::pair {
+extern template bool intersects(arith::exact_kernel&, const aabb3&, const aabb3&);
+extern template bool contains(arith::exact_kernel&, const aabb3&, const aabb3&);
 } // namespace incidence::pair

@@ -173,3 +173,9 @@ template <class K>
 }
 
 } // namespace incidence::pair
+
+// The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
+namespace incidence::pair {
+extern template bool intersects(arith::exact_kernel&, const aabb3&, const convex_polyhedron3&);
+extern template bool contains(arith::exact_kernel&, const convex_polyhedron3&, const aabb3&);
+} // namespace incidence::pair

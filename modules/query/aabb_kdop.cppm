@@ -42,3 +42,19 @@ template <class K, int N>
 }
 
 } // namespace incidence::pair
+
+// The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
+namespace incidence::pair {
+extern template bool intersects(arith::exact_kernel&, const aabb3&, const kdop<6>&);
+extern template bool intersects(arith::exact_kernel&, const aabb3&, const kdop<14>&);
+extern template bool intersects(arith::exact_kernel&, const aabb3&, const kdop<18>&);
+extern template bool intersects(arith::exact_kernel&, const aabb3&, const kdop<26>&);
+extern template bool contains(arith::exact_kernel&, const kdop<6>&, const aabb3&);
+extern template bool contains(arith::exact_kernel&, const kdop<14>&, const aabb3&);
+extern template bool contains(arith::exact_kernel&, const kdop<18>&, const aabb3&);
+extern template bool contains(arith::exact_kernel&, const kdop<26>&, const aabb3&);
+extern template bool contains(arith::exact_kernel&, const kdop<6>&, const segment3&);
+extern template bool contains(arith::exact_kernel&, const kdop<14>&, const segment3&);
+extern template bool contains(arith::exact_kernel&, const kdop<18>&, const segment3&);
+extern template bool contains(arith::exact_kernel&, const kdop<26>&, const segment3&);
+} // namespace incidence::pair

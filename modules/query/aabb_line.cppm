@@ -39,3 +39,8 @@ template <class K>
 [[nodiscard]] constexpr bool intersects_approximate(const aabb3& b, const line3& l) { return aabb_line_slab(b, l); }
 
 } // namespace incidence::pair
+
+// The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
+namespace incidence::pair {
+extern template bool intersects(arith::exact_kernel&, const aabb3&, const line3&);
+} // namespace incidence::pair

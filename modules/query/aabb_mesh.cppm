@@ -25,3 +25,8 @@ template <class K>
 }
 
 } // namespace incidence::pair
+
+// The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
+namespace incidence::pair {
+extern template bool intersects(arith::exact_kernel&, const aabb3&, const mesh3&);
+} // namespace incidence::pair

@@ -76,3 +76,9 @@ template <class Tier>
 }
 
 } // namespace incidence::pair
+
+// The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
+namespace incidence::pair {
+extern template bool intersects(arith::exact_kernel&, const aabb3&, const point3&);
+extern template bool contains(arith::exact_kernel&, const aabb3&, const point3&);
+} // namespace incidence::pair

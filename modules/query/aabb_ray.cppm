@@ -178,3 +178,8 @@ export namespace incidence::pair {
 // The approximate tier of intersects(aabb3, ray3) is the classic slab method.
 [[nodiscard]] constexpr bool intersects_approximate(const aabb3& b, const ray3& r) { return aabb_ray_slab(b, r).has_value(); }
 } // namespace incidence::pair
+
+// The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
+namespace incidence::pair {
+extern template bool intersects(arith::exact_kernel&, const aabb3&, const ray3&);
+} // namespace incidence::pair

@@ -32,3 +32,8 @@ template <class K>
 [[nodiscard]] constexpr bool intersects_approximate(const aabb3& b, const segment3& s) { return aabb_segment_slab(b, s); }
 
 } // namespace incidence::pair
+
+// The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
+namespace incidence::pair {
+extern template bool intersects(arith::exact_kernel&, const aabb3&, const segment3&);
+} // namespace incidence::pair

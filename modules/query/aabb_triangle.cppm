@@ -146,3 +146,8 @@ template <class K>
 [[nodiscard]] constexpr bool intersects_approximate(const aabb3& b, const triangle3& t) { return aabb_triangle_sat(b, t); }
 
 } // namespace incidence::pair
+
+// The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
+namespace incidence::pair {
+extern template bool intersects(arith::exact_kernel&, const aabb3&, const triangle3&);
+} // namespace incidence::pair

@@ -110,3 +110,9 @@ template <class K>
 [[nodiscard]] constexpr bool contains(K& k, const convex_polyhedron3& c, const point3& p) { return intersects(k, c, p); }
 
 } // namespace incidence::pair
+
+// The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
+namespace incidence::pair {
+extern template bool intersects(arith::exact_kernel&, const convex_polyhedron3&, const point3&);
+extern template bool contains(arith::exact_kernel&, const convex_polyhedron3&, const point3&);
+} // namespace incidence::pair

@@ -25,3 +25,9 @@ template <class K>
 [[nodiscard]] constexpr bool contains(K& k, const frustum3& f, const point3& p) { return intersects(k, f, p); }
 
 } // namespace incidence::pair
+
+// The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
+namespace incidence::pair {
+extern template bool intersects(arith::exact_kernel&, const frustum3&, const point3&);
+extern template bool contains(arith::exact_kernel&, const frustum3&, const point3&);
+} // namespace incidence::pair

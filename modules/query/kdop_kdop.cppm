@@ -226,3 +226,23 @@ template <class K, int A, int B>
 }
 
 } // namespace incidence::pair
+
+// The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
+namespace incidence::pair {
+extern template bool intersects(arith::exact_kernel&, const kdop<6>&, const kdop<6>&);
+extern template bool intersects(arith::exact_kernel&, const kdop<6>&, const kdop<14>&);
+extern template bool intersects(arith::exact_kernel&, const kdop<6>&, const kdop<18>&);
+extern template bool intersects(arith::exact_kernel&, const kdop<6>&, const kdop<26>&);
+extern template bool intersects(arith::exact_kernel&, const kdop<14>&, const kdop<6>&);
+extern template bool intersects(arith::exact_kernel&, const kdop<14>&, const kdop<14>&);
+extern template bool intersects(arith::exact_kernel&, const kdop<14>&, const kdop<18>&);
+extern template bool intersects(arith::exact_kernel&, const kdop<14>&, const kdop<26>&);
+extern template bool intersects(arith::exact_kernel&, const kdop<18>&, const kdop<6>&);
+extern template bool intersects(arith::exact_kernel&, const kdop<18>&, const kdop<14>&);
+extern template bool intersects(arith::exact_kernel&, const kdop<18>&, const kdop<18>&);
+extern template bool intersects(arith::exact_kernel&, const kdop<18>&, const kdop<26>&);
+extern template bool intersects(arith::exact_kernel&, const kdop<26>&, const kdop<6>&);
+extern template bool intersects(arith::exact_kernel&, const kdop<26>&, const kdop<14>&);
+extern template bool intersects(arith::exact_kernel&, const kdop<26>&, const kdop<18>&);
+extern template bool intersects(arith::exact_kernel&, const kdop<26>&, const kdop<26>&);
+} // namespace incidence::pair

@@ -22,3 +22,11 @@ template <class K, int N>
 }
 
 } // namespace incidence::pair
+
+// The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
+namespace incidence::pair {
+extern template bool intersects(arith::exact_kernel&, const kdop<6>&, const line3&);
+extern template bool intersects(arith::exact_kernel&, const kdop<14>&, const line3&);
+extern template bool intersects(arith::exact_kernel&, const kdop<18>&, const line3&);
+extern template bool intersects(arith::exact_kernel&, const kdop<26>&, const line3&);
+} // namespace incidence::pair

@@ -133,3 +133,15 @@ template <class K, int N>
 } // namespace kdopq
 
 } // namespace incidence::pair
+
+// The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
+namespace incidence::pair {
+extern template bool intersects(arith::exact_kernel&, const kdop<6>&, const point3&);
+extern template bool intersects(arith::exact_kernel&, const kdop<14>&, const point3&);
+extern template bool intersects(arith::exact_kernel&, const kdop<18>&, const point3&);
+extern template bool intersects(arith::exact_kernel&, const kdop<26>&, const point3&);
+extern template bool contains(arith::exact_kernel&, const kdop<6>&, const point3&);
+extern template bool contains(arith::exact_kernel&, const kdop<14>&, const point3&);
+extern template bool contains(arith::exact_kernel&, const kdop<18>&, const point3&);
+extern template bool contains(arith::exact_kernel&, const kdop<26>&, const point3&);
+} // namespace incidence::pair

@@ -153,3 +153,9 @@ template <class K>
 [[nodiscard]] constexpr bool contains(K& k, const mesh3& m, const point3& p) { return intersects(k, m, p); }
 
 } // namespace incidence::pair
+
+// The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
+namespace incidence::pair {
+extern template bool intersects(arith::exact_kernel&, const mesh3&, const point3&);
+extern template bool contains(arith::exact_kernel&, const mesh3&, const point3&);
+} // namespace incidence::pair

@@ -24,3 +24,8 @@ template <class K>
 }
 
 } // namespace incidence::pair
+
+// The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
+namespace incidence::pair {
+extern template bool intersects(arith::exact_kernel&, const mesh3&, const ray3&);
+} // namespace incidence::pair

@@ -108,3 +108,9 @@ template <class K>
 [[nodiscard]] constexpr bool contains(K& k, const polygon2& g, const point2& p) { return intersects(k, p, g); }
 
 } // namespace incidence::pair
+
+// The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
+namespace incidence::pair {
+extern template bool intersects(arith::exact_kernel&, const point2&, const polygon2&);
+extern template bool contains(arith::exact_kernel&, const polygon2&, const point2&);
+} // namespace incidence::pair

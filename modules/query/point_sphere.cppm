@@ -26,3 +26,9 @@ template <class K>
 }
 
 } // namespace incidence::pair
+
+// The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
+namespace incidence::pair {
+extern template bool intersects(arith::exact_kernel&, const point3&, const sphere3&);
+extern template bool contains(arith::exact_kernel&, const sphere3&, const point3&);
+} // namespace incidence::pair

@@ -154,3 +154,12 @@ template <class K>
 }
 
 } // namespace incidence::pair
+
+// The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
+namespace incidence::pair {
+extern template bool intersects(arith::exact_kernel&, const point3&, const tetrahedron3&);
+extern template bool contains(arith::exact_kernel&, const tetrahedron3&, const point3&);
+extern template bool contains(arith::exact_kernel&, const tetrahedron3&, const segment3&);
+extern template bool contains(arith::exact_kernel&, const tetrahedron3&, const triangle3&);
+extern template bool contains(arith::exact_kernel&, const tetrahedron3&, const tetrahedron3&);
+} // namespace incidence::pair

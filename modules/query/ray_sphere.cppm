@@ -136,3 +136,8 @@ export namespace incidence::pair {
     return ray_sphere_geometric(r, s).has_value();
 }
 } // namespace incidence::pair
+
+// The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
+namespace incidence::pair {
+extern template bool intersects(arith::exact_kernel&, const ray3&, const sphere3&);
+} // namespace incidence::pair

@@ -282,3 +282,8 @@ export namespace incidence::pair {
     return ray_triangle_watertight(r, t).has_value();
 }
 } // namespace incidence::pair
+
+// The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
+namespace incidence::pair {
+extern template bool intersects(arith::exact_kernel&, const ray3&, const triangle3&);
+} // namespace incidence::pair

@@ -32,3 +32,9 @@ template <class K>
 }
 
 } // namespace incidence::pair
+
+// The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
+namespace incidence::pair {
+extern template bool intersects(arith::exact_kernel&, const sphere3&, const sphere3&);
+extern template bool contains(arith::exact_kernel&, const sphere3&, const sphere3&);
+} // namespace incidence::pair

@@ -61,8 +61,10 @@ inline long violations(const std::string& name, const counts& c) {
 }
 
 // --- stability -------------------------------------------------------------------------------
+// Not inlined (nor tradeoff_family): each part's fold calls every family once, and inlining them
+// all made one function that took most of a part's compile time.
 template <class Family>
-void stability_family(audit::json& j, const Family& fam, unsigned index, const options& o, long& total_violations) {
+[[gnu::noinline]] void stability_family(audit::json& j, const Family& fam, unsigned index, const options& o, long& total_violations) {
     using A = typename Family::first_type;
     using B = typename Family::second_type;
     const auto ms = audit::methods_of(fam);
@@ -135,7 +137,7 @@ std::vector<double> time_methods(const std::vector<M>& ms, const std::vector<A>&
 }
 
 template <class Family>
-void tradeoff_family(audit::json& j, const Family& fam, unsigned index, const options& o) {
+[[gnu::noinline]] void tradeoff_family(audit::json& j, const Family& fam, unsigned index, const options& o) {
     using A = typename Family::first_type;
     using B = typename Family::second_type;
     const auto ms = audit::methods_of(fam);

@@ -110,26 +110,35 @@ bool epick_accepts(const S&) { return true; }
 template <class A, class B>
 [[nodiscard]] bool peer_accepts(const A& a, const B& b) { return peer::epick_accepts(a) && peer::epick_accepts(b); }
 
-// The methods of one family; the exact tier comes first (it is the reference).
-template <class Family>
+// A method's test, or none when only the names are wanted (the generic lambda is then never
+// instantiated).
+template <bool WithTests, class A, class B>
+[[nodiscard]] auto test_of(auto f) -> bool (*)(const A&, const B&) {
+    if constexpr (WithTests) return f;
+    else return nullptr;
+}
+// The methods of one family; the exact tier comes first (it is the reference). With WithTests
+// false they carry names only, for a file that lists the methods without running them.
+template <bool WithTests = true, class Family>
 [[nodiscard]] auto methods_of(const Family& f) {
     using A = typename Family::first_type;
     using B = typename Family::second_type;
+    const auto test = [](auto l) { return test_of<WithTests, A, B>(l); };
     std::vector<method<A, B>> m;
     m.push_back({"exact", "tier", "filter, then expansions, then exact dyadic integers",
-                 [](const A& a, const B& b) { return intersects<exact>(a, b); }});
+                 test([](const auto& a, const auto& b) { return intersects<exact>(a, b); })});
     m.push_back({"conservative", "tier", "filter; uncertain answers yes",
-                 [](const A& a, const B& b) { return intersects<conservative>(a, b); }});
+                 test([](const auto& a, const auto& b) { return intersects<conservative>(a, b); })});
     m.push_back({"aggressive", "tier", "filter; uncertain answers no",
-                 [](const A& a, const B& b) { return intersects<aggressive>(a, b); }});
+                 test([](const auto& a, const auto& b) { return intersects<aggressive>(a, b); })});
     m.push_back({"approximate", "tier", f.approximate_method,
-                 [](const A& a, const B& b) { return intersects<approximate>(a, b); }});
+                 test([](const auto& a, const auto& b) { return intersects<approximate>(a, b); })});
     m.push_back({"signs_in_double", "sign algorithm", "the exact tier's sign algorithm evaluated in plain double",
-                 [](const A& a, const B& b) { return catalog::signs_in_double(a, b); }});
+                 test([](const auto& a, const auto& b) { return catalog::signs_in_double(a, b); })});
     for (const auto& alt : f.alternatives) m.push_back({alt.name, "alternative", alt.source, alt.test});
     if constexpr (peer::has_epick<A, B>)
         m.push_back({"cgal_epick", "peer", "CGAL 5.5 do_intersect, Exact_predicates_inexact_constructions_kernel",
-                     [](const A& a, const B& b) { return peer::epick(a, b); }});
+                     test([](const auto& a, const auto& b) { return peer::epick(a, b); })});
     return m;
 }
 

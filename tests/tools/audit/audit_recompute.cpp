@@ -124,8 +124,9 @@ int truth(const A& a, const B& b) {
     return support::flat_truth(a, b);
 }
 
+// Not inlined: main's fold calls every family's instantiation once.
 template <class Family>
-void recompute(const Family& fam, std::uint64_t seed, long cases, unsigned index, int level) {
+[[gnu::noinline]] void recompute(const Family& fam, std::uint64_t seed, long cases, unsigned index, int level) {
     using A = typename Family::first_type;
     using B = typename Family::second_type;
     const auto ms = audit::methods_of(fam);
