@@ -26,6 +26,10 @@ void register_halfspace(bool near) {
     halfspace_tiers<frustum3, plane3>("frustum_plane", near);
     halfspace_tiers<convex_polyhedron3, convex_polyhedron3>("convex_polyhedron_convex_polyhedron", near);
     halfspace_tiers<frustum3, convex_polyhedron3>("convex_polyhedron_frustum", near);
+    halfspace_tiers<convex_polyhedron3, kdop<14>>("convex_polyhedron_kdop_14", near);
+    halfspace_tiers<convex_polyhedron3, kdop<26>>("convex_polyhedron_kdop_26", near);
+    halfspace_tiers<frustum3, kdop<14>>("frustum_kdop_14", near);
+    halfspace_tiers<frustum3, kdop<26>>("frustum_kdop_26", near);
     halfspace_tiers<convex_polyhedron3, aabb3>("aabb_convex_polyhedron", near);
     {
         const auto cs = halfspace_tiers<frustum3, aabb3>("aabb_frustum", near);

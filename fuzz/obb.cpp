@@ -9,8 +9,8 @@
 // with the k-DOP as its slab rows. The half-space pairs too (convex_polyhedron_point, _segment,
 // _ray, _line with 1 to 6 planes from the same doubles, so empty, flat and unbounded sets occur;
 // frustum_point, _segment, _ray, _line with six; aabb_convex_polyhedron and aabb_frustum;
-// convex_polyhedron_plane and frustum_plane; convex_polyhedron_convex_polyhedron and
-// convex_polyhedron_frustum;
+// convex_polyhedron_plane and frustum_plane; convex_polyhedron_convex_polyhedron,
+// convex_polyhedron_frustum, convex_polyhedron_kdop and frustum_kdop;
 // contains(., point | segment | box)), against the LP with the half-spaces as rows. Any finding
 // aborts.
 #include "../tests/oracle/cgal_oracle.hpp"
@@ -107,6 +107,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     check(line, w);
     check(w, tri);
     check(w, pl);
+    // 1 to 6 planes (from byte 1), and a frustum of six, from the doubles.
+    convex_polyhedron3 cp{};
+    cp.count = size < 2 ? 1 : 1 + data[1] % 6;
+    for (unsigned i = 0; i < static_cast<unsigned>(cp.count); ++i)
+        cp.planes[i] = plane3{{v[(4 * i + 6) % 24], v[(4 * i + 7) % 24], v[(4 * i + 8) % 24]}, v[(4 * i + 9) % 24]};
+    frustum3 fr{};
+    for (unsigned i = 0; i < 6; ++i) fr.planes[i] = plane3{{v[(4 * i + 1) % 24], v[(4 * i + 2) % 24], v[(4 * i + 3) % 24]}, v[4 * i % 24]};
     // The k-DOP pairs (the slab family): K from byte 0, bounds from the doubles (maybe inverted or
     // jointly empty, both of which the LP's slab rows express exactly).
     auto kdops = [&]<int K>() {
@@ -125,6 +132,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         for (unsigned i = 0; i < 7; ++i) kd14.min[i] = v[(i + 3) % 24], kd14.max[i] = v[(i + 16) % 24];
         check(kd, kd2);
         check(kd14, kd);
+        // a half-space set against the k-DOP (its slab rows): the polyhedron of 1 to 6 planes, the frustum
+        check(cp, kd);
+        check(kd, fr);
         if (box.min.x <= box.max.x && box.min.y <= box.max.y && box.min.z <= box.max.z) {
             check(box, kd);
             bool all = true;
@@ -133,7 +143,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
         if (contains(kd, seg) != (intersects(kd, seg.a) && intersects(kd, seg.b))) std::abort();
     };
-    // The half-space pairs: 1 to 6 planes (from byte 1), and a frustum of six, from the doubles.
+    // The half-space pairs, on cp and fr above.
     auto halfspaces = [&](const auto& h) {
         check(h, p);
         check(h, seg);
@@ -150,13 +160,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         } else if (intersects(box, h)) std::abort();
     };
     {
-        convex_polyhedron3 cp{};
-        cp.count = size < 2 ? 1 : 1 + data[1] % 6;
-        for (unsigned i = 0; i < static_cast<unsigned>(cp.count); ++i)
-            cp.planes[i] = plane3{{v[(4 * i + 6) % 24], v[(4 * i + 7) % 24], v[(4 * i + 8) % 24]}, v[(4 * i + 9) % 24]};
         halfspaces(cp);
-        frustum3 fr{};
-        for (unsigned i = 0; i < 6; ++i) fr.planes[i] = plane3{{v[(4 * i + 1) % 24], v[(4 * i + 2) % 24], v[(4 * i + 3) % 24]}, v[4 * i % 24]};
         halfspaces(fr);
         // two half-space sets: a second polyhedron of 1 to 6 planes from other doubles (byte 2)
         convex_polyhedron3 cp2{};

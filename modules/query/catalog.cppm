@@ -157,6 +157,9 @@ inline constexpr std::tuple families{
     // Two half-space sets: a face with the other set beyond it, a point inside both, else feasibility.
     family<convex_polyhedron3, convex_polyhedron3, 0>{"convex_polyhedron_convex_polyhedron", "obb", "signs in double", {}},
     family<convex_polyhedron3, frustum3, 0>{"convex_polyhedron_frustum", "obb", "signs in double", {}},
+    // A half-space set against a k-DOP (its K half-spaces): the same test of two sets.
+    family<convex_polyhedron3, kdop<14>, 0>{"convex_polyhedron_kdop", "obb", "signs in double", {}},
+    family<frustum3, kdop<14>, 0>{"frustum_kdop", "obb", "signs in double", {}},
 };
 
 inline constexpr std::size_t family_count = std::tuple_size_v<decltype(families)>;

@@ -22,9 +22,10 @@ import :convex_polyhedron_plane;
 
 export namespace incidence::pair {
 
-template <class K, int N>
-[[nodiscard]] constexpr bool intersects(K& k, const kdop<N>& b, const plane3& p) {
-    if (!kdopq::well_formed(b.min.data(), b.max.data(), N / 2)) return false;
+namespace kdopq {
+// The k-DOP's K half-spaces d_i . x <= max_i and -d_i . x <= -min_i (integer directions: exact).
+template <int N>
+[[nodiscard]] constexpr std::array<plane3, N> halfspaces(const kdop<N>& b) {
     const auto d = kdop<N>::directions();
     std::array<plane3, N> rows{};
     for (unsigned i = 0; i < N / 2; ++i) {
@@ -32,6 +33,14 @@ template <class K, int N>
         rows[2 * i] = plane3{n, b.max[i]};
         rows[2 * i + 1] = plane3{-n, -b.min[i]};
     }
+    return rows;
+}
+} // namespace kdopq
+
+template <class K, int N>
+[[nodiscard]] constexpr bool intersects(K& k, const kdop<N>& b, const plane3& p) {
+    if (!kdopq::well_formed(b.min.data(), b.max.data(), N / 2)) return false;
+    const auto rows = kdopq::halfspaces(b);
     return polyq::plane_meets(k, rows.data(), N, p);
 }
 

@@ -112,6 +112,8 @@ export import :frustum_plane;
 export import :kdop_plane;
 export import :convex_polyhedron_convex_polyhedron;
 export import :convex_polyhedron_frustum;
+export import :convex_polyhedron_kdop;
+export import :frustum_kdop;
 import incidence.core;
 import incidence.arith;
 import incidence.shapes;

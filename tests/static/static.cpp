@@ -206,6 +206,10 @@ static_assert(intersects(ph::roof, convex_polyhedron3{{plane3{{0, 0, -1}, 0}}, 1
 static_assert(intersects(ph::unit_cube_cut, ph::unit_cube_cut) && !intersects(ph::empty_slab, ph::half_space));
 static_assert(intersects(ph::half_space, ph::integer_frustum) && !intersects(convex_polyhedron3{{plane3{{0, 0, -1}, -0x1.0000000000001p2}}, 1}, ph::integer_frustum));
 static_assert(intersects(support::corner_cut, plane3{{1, 1, 1}, 2.5}) && !intersects(plane3{{1, 1, 1}, 0x1.4000000000001p1}, support::corner_cut));
+// a half-space set against a k-DOP: the k-DOP's slabs as half-spaces, the test of two sets
+static_assert(intersects(ph::unit_cube_cut, kdop<14>{{0.5, 0.5, 0.5, 2.5, -5, -5, -5}, {1, 1, 1, 3, 5, 5, 5}}) &&
+              !intersects(kdop<14>{{0.5, 0.5, 0.5, 0x1.4000000000001p1, -5, -5, -5}, {1, 1, 1, 3, 5, 5, 5}}, ph::unit_cube_cut));
+static_assert(intersects(kdop<6>{{4, 4, 4}, {5, 5, 5}}, ph::integer_frustum) && !intersects(ph::integer_frustum, kdop<6>{{4, 4, 0x1.0000000000001p2}, {5, 5, 5}}));
 // the same in the plane
 static_assert(intersects(segment2{{0, 0}, {2, 0}}, segment2{{2, 0}, {3, 5}}));
 static_assert(!intersects(segment2{{0, 0}, {2, 0}}, segment2{{0x1.0000000000001p1, 0}, {3, 0}}));

@@ -16,7 +16,12 @@
 // within 0.6 of a centre in [-0.5, 0.5]^3, or a camera frustum (frustum3::from_camera: eye in [-1, 1]^3, any
 // view direction, fov 0.3 to 2.5, aspect 0.5 to 2, near 0.05 to 0.5, far up to 3.5 beyond),
 // against a random shape of flat_cases.hpp, at one random scale.
+// A k-DOP partner (kdop_cases.hpp): near-degenerate, the k-DOP of a small dyadic cloud at X on the
+// outer side of the face there (X one of its points two times in three, else the cloud starts a
+// quarter out), moved by the same transform; random, the k-DOP of 4 to 8 random points within
+// 0.4 of a centre in [-0.6, 0.6]^3.
 #pragma once
+#include "kdop_cases.hpp"
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -243,6 +248,23 @@ std::optional<std::pair<P, B>> halfspace_near(rng& r) {
         const convex_polyhedron3 b = realise_polyhedron(h2, tr);
         if (!finite_shape(a) || !finite_shape(b)) return std::nullopt;
         return std::pair{a, b};
+    } else if constexpr (is_kdop<B>::value) { // the k-DOP of a cloud at X, on or beyond the face
+        std::vector<point3> pts;
+        const bool at_x = r.integer(0, 2) != 0;
+        for (int i = r.integer(3, 7); i > 0; --i) {
+            vec3 w{r.integer(-8, 8) * 0.25, r.integer(-8, 8) * 0.25, r.integer(-8, 8) * 0.25};
+            if (dot(h.face, w) < 0) w = -w;
+            pts.push_back(h.X + w + (at_x ? vec3{0, 0, 0} : h.face * 0.25));
+        }
+        if (at_x) pts.push_back(h.X);
+        transform tr = random_transform(r, true, true);
+        P a;
+        if constexpr (std::is_same_v<P, frustum3>) a = realise_frustum(h, tr);
+        else a = realise_polyhedron(h, tr);
+        for (auto& p : pts) p = moved(p, tr);
+        const auto b = kdop_around<B::slabs * 2>(pts);
+        if (!b || !finite_shape(a)) return std::nullopt;
+        return std::pair{a, *b};
     } else {
         vec3 d = small_dir(r);
         const bool has_face = !(h.face.x == 0 && h.face.y == 0 && h.face.z == 0);
@@ -267,7 +289,12 @@ std::optional<std::pair<P, B>> halfspace_random(rng& r) {
     using namespace incidence;
     const auto b = [&] {
         if constexpr (std::is_same_v<B, convex_polyhedron3>) return polyhedron_random_set(r);
-        else return random_shape<B>(r, false, 0.0);
+        else if constexpr (is_kdop<B>::value) {
+            const point3 c{r.uniform(-0.6, 0.6), r.uniform(-0.6, 0.6), r.uniform(-0.6, 0.6)};
+            std::vector<point3> pts;
+            for (int i = r.integer(4, 8); i > 0; --i) pts.push_back({c.x + r.uniform(-0.4, 0.4), c.y + r.uniform(-0.4, 0.4), c.z + r.uniform(-0.4, 0.4)});
+            return pts;
+        } else return random_shape<B>(r, false, 0.0);
     }();
     transform tr = random_transform(r, false, true);
     P a;
@@ -283,7 +310,13 @@ std::optional<std::pair<P, B>> halfspace_random(rng& r) {
     }
     B bb;
     if constexpr (std::is_same_v<B, convex_polyhedron3>) bb = realise_polyhedron(b, tr);
-    else bb = realise(b, tr);
+    else if constexpr (is_kdop<B>::value) {
+        std::vector<point3> pts = b;
+        for (auto& p : pts) p = moved(p, tr);
+        const auto kd = kdop_around<B::slabs * 2>(pts);
+        if (!kd) return std::nullopt;
+        bb = *kd;
+    } else bb = realise(b, tr);
     if (!finite_shape(a) || !finite_shape(bb)) return std::nullopt;
     return std::pair{a, bb};
 }

@@ -750,6 +750,14 @@ struct near_boundary<P, B> {
             }
             if (r.integer(0, 2) != 0) q.planes[static_cast<unsigned>(q.count++)] = plane3{-t.o, -dot(t.o, t.p - point3{0, 0, 0})};
             return {t.shape, q};
+        } else if constexpr (std::is_same_v<B, kdop<14>>) {
+            // the 14-DOP of an integer cloud from p outwards, p included two times in three (else
+            // the cloud starts one step out): touching at p, or whether the slabs reach the face
+            point3 pts[8];
+            const int n = r.integer(3, 8);
+            pts[0] = r.integer(0, 2) != 0 ? t.p : t.p + t.o + outward(r, t.o, 2);
+            for (int i = 1; i < n; ++i) pts[i] = t.p + outward(r, t.o, 300);
+            return {t.shape, kdop_of_points(pts, n)};
         } else if constexpr (std::is_same_v<B, plane3>) { // the face's plane through p, either orientation
             const vec3 n = t.o * (r.coin() ? double(r.integer(1, 3)) : -double(r.integer(1, 3)));
             return {t.shape, plane3{n, dot(n, t.p - point3{0, 0, 0})}};
