@@ -92,19 +92,20 @@ std::optional<std::pair<incidence::kdop<K>, incidence::kdop<M>>> kdop_pair_near(
     }
     return kdops_of<K, M>(P, Q, random_transform(r, true, true));
 }
+// 4 to 8 random points within 0.4 of a centre in [-0.6, 0.6]^3.
+inline std::vector<incidence::point3> random_cloud(rng& r) {
+    const incidence::point3 c{r.uniform(-0.6, 0.6), r.uniform(-0.6, 0.6), r.uniform(-0.6, 0.6)};
+    std::vector<incidence::point3> v;
+    for (int i = r.integer(4, 8); i > 0; --i) v.push_back({c.x + r.uniform(-0.4, 0.4), c.y + r.uniform(-0.4, 0.4), c.z + r.uniform(-0.4, 0.4)});
+    return v;
+}
 // Two k-DOPs, random: the k-DOPs of two clouds of 4 to 8 random points within 0.4 of centres in
 // [-0.6, 0.6]^3, at one random scale.
 template <int K, int M>
 std::optional<std::pair<incidence::kdop<K>, incidence::kdop<M>>> kdop_pair_random(rng& r) {
     using namespace incidence;
-    std::vector<point3> P, Q;
-    auto cloud = [&](std::vector<point3>& v) {
-        const point3 c{r.uniform(-0.6, 0.6), r.uniform(-0.6, 0.6), r.uniform(-0.6, 0.6)};
-        const int n = r.integer(4, 8);
-        for (int i = 0; i < n; ++i) v.push_back({c.x + r.uniform(-0.4, 0.4), c.y + r.uniform(-0.4, 0.4), c.z + r.uniform(-0.4, 0.4)});
-    };
-    cloud(P);
-    cloud(Q);
+    std::vector<point3> P = random_cloud(r);
+    std::vector<point3> Q = random_cloud(r);
     return kdops_of<K, M>(P, Q, random_transform(r, false, true));
 }
 

@@ -289,12 +289,8 @@ std::optional<std::pair<P, B>> halfspace_random(rng& r) {
     using namespace incidence;
     const auto b = [&] {
         if constexpr (std::is_same_v<B, convex_polyhedron3>) return polyhedron_random_set(r);
-        else if constexpr (is_kdop<B>::value) {
-            const point3 c{r.uniform(-0.6, 0.6), r.uniform(-0.6, 0.6), r.uniform(-0.6, 0.6)};
-            std::vector<point3> pts;
-            for (int i = r.integer(4, 8); i > 0; --i) pts.push_back({c.x + r.uniform(-0.4, 0.4), c.y + r.uniform(-0.4, 0.4), c.z + r.uniform(-0.4, 0.4)});
-            return pts;
-        } else return random_shape<B>(r, false, 0.0);
+        else if constexpr (is_kdop<B>::value) return random_cloud(r);
+        else return random_shape<B>(r, false, 0.0);
     }();
     transform tr = random_transform(r, false, true);
     P a;
