@@ -19,6 +19,7 @@
 // permanent (tests/query/aabb_convex_polyhedron.cpp).
 module;
 #include <array>
+#include <type_traits>
 export module incidence.query:aabb_convex_polyhedron;
 import incidence.core;
 import incidence.arith;
@@ -29,6 +30,22 @@ import :convex_polyhedron_point;
 export namespace incidence::pair {
 
 namespace polyq {
+
+// The sign of a low-degree polynomial that decides which candidate points exist (a determinant of
+// normals, a component of a cross product), which is often exactly zero (a camera frustum's two
+// side planes and its near plane are dependent; axis-aligned normals cross in zeros): a zero the
+// filter cannot prove would end its run, so the filter kernel evaluates it exactly at once.
+template <class K, class F>
+[[nodiscard]] constexpr sign settled(K& k, const F& f) {
+    const sign s = arith::probe(k, f);
+    if (s != sign::zero) return s;
+    if constexpr (std::is_same_v<K, arith::filter_kernel>) {
+        arith::exact_kernel e;
+        const sign x = e.sgn(f);
+        if (e.valid) return x;
+    }
+    return k.sgn(f);
+}
 
 // Is the set of the `total` half-spaces n_i . x <= c_i (finite numbers) not empty? It may be
 // unbounded. A nonempty set's minimal faces are {x : n_i . x = c_i for i in I} with rank(n_I) the
@@ -61,20 +78,29 @@ template <class K>
             for (unsigned l = j + 1; l < total; ++l) {
                 if (zero(l) || parallel(i, l) || parallel(j, l)) continue;
                 const plane3 a = rows[i], c = rows[j], e = rows[l];
-                const sign d = k.sgn([=](auto L) { return arith::det3(arith::lift(L, a.normal), arith::lift(L, c.normal), arith::lift(L, e.normal)); });
+                const sign d = settled(k, [=](auto L) { return arith::det3(arith::lift(L, a.normal), arith::lift(L, c.normal), arith::lift(L, e.normal)); });
                 if (d == sign::zero) continue; // no single point
                 independent = true;
+                auto beyond = [=](unsigned r) { // c_h D - n_h . V, with n_h . (n_j x n_k) = det(n_h, n_j, n_k)
+                    const plane3 h = rows[r];
+                    return [=](auto L) {
+                        const auto na = arith::lift(L, a.normal), nc = arith::lift(L, c.normal), ne = arith::lift(L, e.normal);
+                        const auto nh = arith::lift(L, h.normal);
+                        return L(h.offset) * arith::det3(na, nc, ne) -
+                               (L(a.offset) * arith::det3(nh, nc, ne) + L(c.offset) * arith::det3(nh, ne, na) + L(e.offset) * arith::det3(nh, na, nc));
+                    };
+                };
+                // a row the filter proves the vertex outside of rejects it before any sign is
+                // decided (a zero sign elsewhere, such as a fourth plane through the same point,
+                // would otherwise end the filter's run)
+                bool rejected = false;
+                for (unsigned r = 0; r < total && !rejected; ++r)
+                    if (r != i && r != j && r != l) rejected = arith::probe(k, beyond(r)) == -d;
+                if (rejected) continue;
                 bool vertex_inside = true;
                 for (unsigned r = 0; r < total && vertex_inside; ++r) {
                     if (r == i || r == j || r == l) continue;
-                    const plane3 h = rows[r];
-                    const sign s = k.sgn([=](auto L) {
-                        const auto na = arith::lift(L, a.normal), nc = arith::lift(L, c.normal), ne = arith::lift(L, e.normal);
-                        const auto nh = arith::lift(L, h.normal);
-                        // c_h D - n_h . V, with n_h . (n_j x n_k) = det(n_h, n_j, n_k)
-                        return L(h.offset) * arith::det3(na, nc, ne) -
-                               (L(a.offset) * arith::det3(nh, nc, ne) + L(c.offset) * arith::det3(nh, ne, na) + L(e.offset) * arith::det3(nh, na, nc));
-                    });
+                    const sign s = k.sgn(beyond(r));
                     vertex_inside = s == sign::zero || s == d;
                 }
                 if (vertex_inside) return true;
@@ -90,9 +116,9 @@ template <class K>
             if (zero(j) || parallel(i, j)) continue;
             const vec3 a = rows[i].normal, c = rows[j].normal;
             const double ca = rows[i].offset, cc = rows[j].offset;
-            const sign w[3] = {k.sgn([=](auto L) { return arith::cross(arith::lift(L, a), arith::lift(L, c)).x; }),
-                               k.sgn([=](auto L) { return arith::cross(arith::lift(L, a), arith::lift(L, c)).y; }),
-                               k.sgn([=](auto L) { return arith::cross(arith::lift(L, a), arith::lift(L, c)).z; })};
+            const sign w[3] = {settled(k, [=](auto L) { return arith::cross(arith::lift(L, a), arith::lift(L, c)).x; }),
+                               settled(k, [=](auto L) { return arith::cross(arith::lift(L, a), arith::lift(L, c)).y; }),
+                               settled(k, [=](auto L) { return arith::cross(arith::lift(L, a), arith::lift(L, c)).z; })};
             if (w[0] == sign::zero && w[1] == sign::zero && w[2] == sign::zero) continue; // parallel
             independent = true;
             bool line_inside = true;
