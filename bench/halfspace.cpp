@@ -1,5 +1,5 @@
 // Benchmarks: the k-DOP pairs and the half-space pairs (convex_polyhedron3, frustum3; against a box
-// also the frustum culling test), the LP as truth.
+// also the frustum culling test and the separating-axis test in double), the LP as truth.
 #include "bench.hpp"
 
 namespace bench {
@@ -13,6 +13,8 @@ void register_halfspace(bool near) {
     kdop_tiers<26, kdop<26>>("kdop_kdop", near);
     kdop_tiers<14, aabb3>("aabb_kdop", near);
     kdop_tiers<14, plane3>("kdop_plane", near);
+    kdop_tiers<14, triangle3>("kdop_triangle", near);
+    kdop_tiers<26, triangle3>("kdop_triangle", near);
     kdop_tiers<26, plane3>("kdop_plane", near);
     halfspace_tiers<convex_polyhedron3, point3>("convex_polyhedron_point", near);
     halfspace_tiers<convex_polyhedron3, segment3>("convex_polyhedron_segment", near);
@@ -26,6 +28,9 @@ void register_halfspace(bool near) {
     halfspace_tiers<frustum3, plane3>("frustum_plane", near);
     halfspace_tiers<convex_polyhedron3, convex_polyhedron3>("convex_polyhedron_convex_polyhedron", near);
     halfspace_tiers<frustum3, convex_polyhedron3>("convex_polyhedron_frustum", near);
+    halfspace_tiers<frustum3, frustum3>("frustum_frustum", near);
+    halfspace_tiers<convex_polyhedron3, triangle3>("convex_polyhedron_triangle", near);
+    halfspace_tiers<frustum3, triangle3>("frustum_triangle", near);
     halfspace_tiers<convex_polyhedron3, kdop<14>>("convex_polyhedron_kdop_14", near);
     halfspace_tiers<convex_polyhedron3, kdop<26>>("convex_polyhedron_kdop_26", near);
     halfspace_tiers<frustum3, kdop<14>>("frustum_kdop_14", near);
@@ -37,6 +42,8 @@ void register_halfspace(bool near) {
         for (const auto& c : cs) t.push_back(oracle::lp_intersect(support::lp(c.first), support::lp(c.second)));
         reg(std::string("culling/intersects/aabb_frustum/") + (near ? "near_degenerate" : "random"), cs, t, check::approximate,
             [](const std::pair<frustum3, aabb3>& c) { return method::aabb_frustum_culling(c.second, c.first); });
+        reg(std::string("sat/intersects/aabb_frustum/") + (near ? "near_degenerate" : "random"), cs, t, check::approximate,
+            [](const std::pair<frustum3, aabb3>& c) { return method::aabb_frustum_sat(c.second, c.first); });
     }
 }
 } // namespace bench

@@ -10,7 +10,8 @@
 // _ray, _line with 1 to 6 planes from the same doubles, so empty, flat and unbounded sets occur;
 // frustum_point, _segment, _ray, _line with six; aabb_convex_polyhedron and aabb_frustum;
 // convex_polyhedron_plane and frustum_plane; convex_polyhedron_convex_polyhedron,
-// convex_polyhedron_frustum, convex_polyhedron_kdop and frustum_kdop;
+// convex_polyhedron_frustum, convex_polyhedron_kdop, frustum_kdop and frustum_frustum;
+// convex_polyhedron_triangle, frustum_triangle and kdop_triangle;
 // contains(., point | segment | box)), against the LP with the half-spaces as rows. Any finding
 // aborts.
 #include "../tests/oracle/cgal_oracle.hpp"
@@ -85,6 +86,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         (void)intersects<exact>(cp, cp);
         (void)intersects<conservative>(fr, cp);
         (void)classify(cp, fr);
+        (void)intersects<approximate>(fr, fr);
+        (void)intersects<aggressive>(tri, cp);
+        (void)classify(fr, tri);
+        (void)contains<conservative>(cp, tri);
     }
     for (double x : v)
         if (!std::isfinite(x)) return 0;
@@ -124,6 +129,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         check(kd, ray);
         check(kd, line);
         check(kd, pl);
+        check(kd, tri);
+        if (contains(kd, tri) != (intersects(kd, tri.a) && intersects(kd, tri.b) && intersects(kd, tri.c))) std::abort();
         if (contains(kd, p) != intersects(kd, p)) std::abort();
         // two k-DOPs (the same K, and a 14-DOP), a box: slab overlap and the Farkas certificates
         kdop<K> kd2{};
@@ -150,6 +157,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         check(h, ray);
         check(h, line);
         check(h, pl); // the feasibility test of possibly unbounded sets
+        check(h, tri); // the triangle's edges, then the set's edges across its plane
+        if (contains(h, tri) != (intersects(h, tri.a) && intersects(h, tri.b) && intersects(h, tri.c))) std::abort();
         if (contains(h, p) != intersects(h, p)) std::abort();
         if (contains(h, seg) != (intersects(h, seg.a) && intersects(h, seg.b))) std::abort();
         if (box.min.x <= box.max.x && box.min.y <= box.max.y && box.min.z <= box.max.z) { // the vertex test
@@ -169,6 +178,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             cp2.planes[i] = plane3{{v[(4 * i + 13) % 24], v[(4 * i + 14) % 24], v[(4 * i + 15) % 24]}, v[(4 * i + 3) % 24]};
         check(cp, cp2);
         check(cp2, fr);
+        // a second frustum: the planes of fr in another order of the doubles
+        frustum3 fr2{};
+        for (unsigned i = 0; i < 6; ++i) fr2.planes[i] = plane3{{v[(4 * i + 5) % 24], v[(4 * i + 22) % 24], v[(4 * i + 11) % 24]}, v[(4 * i + 2) % 24]};
+        check(fr, fr2);
     }
     switch (size == 0 ? 0 : data[0] % 4) {
     case 0: kdops.template operator()<6>(); break;

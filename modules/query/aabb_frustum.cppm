@@ -8,8 +8,9 @@
 // Source: vertex enumeration for LP feasibility (Schrijver, Theory of Linear and Integer
 // Programming, 1986, section 8.5); the plane-box rejection of frustum culling (Assarsson and
 // Moeller, "Optimized view frustum culling algorithms for bounding boxes", JGT 5(1), 2000).
-// Kept for comparison in the benchmarks (not a catalog alternative, since it errs far from the
-// boundary too): aabb_frustum_culling, the culling test alone in double (no plane has the whole
+// The catalog's alternative: aabb_frustum_sat, the separating-axis test in double (below). Kept for
+// comparison in the benchmarks (not a catalog alternative, since it errs far from the boundary
+// too): aabb_frustum_culling, the culling test alone in double (no plane has the whole
 // box beyond it: yes), which answers yes for boxes beside the frustum's edges and corners.
 // Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
 // magnitudes lie in [2^-500, 2^500], wrong only when a deciding sign is within 2^-40 of its
@@ -36,6 +37,54 @@ template <class K>
     for (const plane3& p : f.planes) {
         const point3 q = least_corner(b, p.normal);
         if (p.normal.x * q.x + p.normal.y * q.y + p.normal.z * q.z > p.offset) return false;
+    }
+    return true;
+}
+// The separating-axis test in plain double, the catalog's alternative: the box's three axes, the
+// frustum's six face normals and the cross products of the box axes with the frustum's twelve
+// edge directions (n_i x n_j for the near and far faces with each side, and the four side
+// edges), the frustum projected through its eight corners (plane triples: near or far, left or
+// right, bottom or top), so the six planes must bound a frustum of a camera's shape; where a
+// corner does not exist, the vertex test in double decides.
+// Source: Gottschalk, Lin and Manocha, "OBBTree", SIGGRAPH 1996, section 5 (the axes of two convex
+// polyhedra); Ericson, Real-Time Collision Detection, 2005, section 5.2.1 (box projection radius).
+[[nodiscard]] constexpr bool aabb_frustum_sat(const aabb3& b, const frustum3& f) {
+    if (!well_formed_finite(b) || !polyq::well_formed(f.planes.data(), 6, 6)) return false;
+    const plane3* pl = f.planes.data();
+    point3 corner[8];
+    for (unsigned m = 0; m < 8; ++m) {
+        const plane3 p = pl[m & 1u], q = pl[2 + ((m >> 1) & 1u)], r = pl[4 + ((m >> 2) & 1u)];
+        const vec3 qr = cross(q.normal, r.normal), rp = cross(r.normal, p.normal), pq = cross(p.normal, q.normal);
+        const double d = dot(p.normal, qr);
+        const vec3 v = (qr * p.offset + rp * q.offset + pq * r.offset) * (1.0 / d);
+        if (!(d != 0) || !finite(v)) {
+            arith::approx_kernel k;
+            return polyq::box_meets(k, b, pl, 6);
+        }
+        corner[m] = point3{v.x, v.y, v.z};
+    }
+    const point3 c{0.5 * b.min.x + 0.5 * b.max.x, 0.5 * b.min.y + 0.5 * b.max.y, 0.5 * b.min.z + 0.5 * b.max.z};
+    const vec3 h{0.5 * b.max.x - 0.5 * b.min.x, 0.5 * b.max.y - 0.5 * b.min.y, 0.5 * b.max.z - 0.5 * b.min.z};
+    auto mag = [](double x) { return x < 0 ? -x : x; };
+    auto separates = [&](vec3 a) {
+        double lo = __builtin_huge_val(), hi = -__builtin_huge_val();
+        for (const point3& x : corner) {
+            const double t = dot(a, x - c);
+            lo = t < lo ? t : lo, hi = t > hi ? t : hi;
+        }
+        const double r = h.x * mag(a.x) + h.y * mag(a.y) + h.z * mag(a.z);
+        return lo > r || hi < -r;
+    };
+    const vec3 axis[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (const vec3& a : axis)
+        if (separates(a)) return false;
+    for (const plane3& p : f.planes)
+        if (separates(p.normal)) return false;
+    constexpr unsigned edge[12][2] = {{0, 2}, {0, 3}, {0, 4}, {0, 5}, {1, 2}, {1, 3}, {1, 4}, {1, 5}, {2, 4}, {2, 5}, {3, 4}, {3, 5}};
+    for (const auto& e : edge) {
+        const vec3 d = cross(pl[e[0]].normal, pl[e[1]].normal);
+        for (const vec3& a : axis)
+            if (separates(cross(a, d))) return false;
     }
     return true;
 }

@@ -149,7 +149,9 @@ inline constexpr std::tuple families{
     family<frustum3, line3, 0>{"frustum_line", "obb", "signs in double", {}},
     // A box against a half-space set: the vertex test on the set's and the box's planes.
     family<aabb3, convex_polyhedron3, 0>{"aabb_convex_polyhedron", "obb", "signs in double", {}},
-    family<aabb3, frustum3, 0>{"aabb_frustum", "obb", "signs in double", {}},
+    family<aabb3, frustum3, 1>{"aabb_frustum", "obb", "signs in double",
+                               {{{"sat", "separating axes in double: Gottschalk, Lin and Manocha, OBBTree, SIGGRAPH 1996",
+                                  [](const aabb3& b, const frustum3& f) { return method::aabb_frustum_sat(b, f); }}}}},
     // A plane against a half-space set: the set's points on both sides (two feasibility tests).
     family<convex_polyhedron3, plane3, 0>{"convex_polyhedron_plane", "obb", "signs in double", {}},
     family<frustum3, plane3, 0>{"frustum_plane", "obb", "signs in double", {}},
@@ -157,9 +159,14 @@ inline constexpr std::tuple families{
     // Two half-space sets: a face with the other set beyond it, a point inside both, else feasibility.
     family<convex_polyhedron3, convex_polyhedron3, 0>{"convex_polyhedron_convex_polyhedron", "obb", "signs in double", {}},
     family<convex_polyhedron3, frustum3, 0>{"convex_polyhedron_frustum", "obb", "signs in double", {}},
+    family<frustum3, frustum3, 0>{"frustum_frustum", "obb", "signs in double", {}},
     // A half-space set against a k-DOP (its K half-spaces): the same test of two sets.
     family<convex_polyhedron3, kdop<14>, 0>{"convex_polyhedron_kdop", "obb", "signs in double", {}},
     family<frustum3, kdop<14>, 0>{"frustum_kdop", "obb", "signs in double", {}},
+    // A triangle against a half-space set: its edges, then where the set's edges cross its plane.
+    family<convex_polyhedron3, triangle3, 0>{"convex_polyhedron_triangle", "obb", "signs in double", {}},
+    family<frustum3, triangle3, 0>{"frustum_triangle", "obb", "signs in double", {}},
+    family<kdop<14>, triangle3, 0>{"kdop_triangle", "obb", "signs in double", {}},
 };
 
 inline constexpr std::size_t family_count = std::tuple_size_v<decltype(families)>;

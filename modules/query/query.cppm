@@ -114,6 +114,10 @@ export import :convex_polyhedron_convex_polyhedron;
 export import :convex_polyhedron_frustum;
 export import :convex_polyhedron_kdop;
 export import :frustum_kdop;
+export import :frustum_frustum;
+export import :convex_polyhedron_triangle;
+export import :frustum_triangle;
+export import :kdop_triangle;
 import incidence.core;
 import incidence.arith;
 import incidence.shapes;
@@ -279,6 +283,7 @@ namespace method {
 }
 [[nodiscard]] constexpr bool obb_obb_gottschalk(const obb3& a, const obb3& b) { return pair::obb_obb_gottschalk(a, b); }
 [[nodiscard]] constexpr bool aabb_frustum_culling(const aabb3& b, const frustum3& f) { return pair::aabb_frustum_culling(b, f); }
+[[nodiscard]] constexpr bool aabb_frustum_sat(const aabb3& b, const frustum3& f) { return pair::aabb_frustum_sat(b, f); }
 } // namespace method
 
 } // namespace incidence

@@ -148,10 +148,15 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
         every_tier(pl, fr, yes);
         every_tier(cp, cp, yes);
         every_tier(fr, cp, yes);
+        every_tier(fr, fr, yes);
+        every_tier(cp, t, yes);
+        every_tier(t, fr, yes);
+        every_tier(kd, t, yes);
         every_tier(cp, kd, yes);
         every_tier(kd2, fr, yes);
         yes += contains(fr, q) + contains(fr, seg) + contains(cp, q) + contains(cp, seg) + contains(fr, b) + contains(cp, b);
-        n += 16 * 5 + 6;
+        yes += contains(fr, t) + contains(cp, t) + contains(kd, t);
+        n += 20 * 5 + 9;
         // in the plane
         auto p2 = [&] { return point2{special(r), special(r)}; };
         auto v2 = [&] { return vec2{special(r), special(r)}; };

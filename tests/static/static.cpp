@@ -210,6 +210,17 @@ static_assert(intersects(support::corner_cut, plane3{{1, 1, 1}, 2.5}) && !inters
 static_assert(intersects(ph::unit_cube_cut, kdop<14>{{0.5, 0.5, 0.5, 2.5, -5, -5, -5}, {1, 1, 1, 3, 5, 5, 5}}) &&
               !intersects(kdop<14>{{0.5, 0.5, 0.5, 0x1.4000000000001p1, -5, -5, -5}, {1, 1, 1, 3, 5, 5, 5}}, ph::unit_cube_cut));
 static_assert(intersects(kdop<6>{{4, 4, 4}, {5, 5, 5}}, ph::integer_frustum) && !intersects(ph::integer_frustum, kdop<6>{{4, 4, 0x1.0000000000001p2}, {5, 5, 5}}));
+// two frustums: the integer frustum reflected through its far corner (x -> 2c - x) touches it there;
+// through a point 2^-38 beyond that corner, it misses
+static_assert(intersects(ph::integer_frustum, ph::reflected(ph::integer_frustum, {4, 4, 4})) &&
+              !intersects(ph::reflected(ph::integer_frustum, {0x1.0000000001p2, 4, 4}), ph::integer_frustum));
+// a triangle against a half-space set: a large triangle whose edges miss the set (its section lies
+// inside), on a face and one ulp beyond; a corner on the cut face and one ulp off
+static_assert(intersects(ph::unit_cube_cut, ph::wide_triangle(0.5)) && intersects(ph::wide_triangle(1), ph::unit_cube_cut) && !intersects(ph::unit_cube_cut, ph::wide_triangle(0x1.0000000000001p0)));
+static_assert(intersects(ph::integer_frustum, ph::wide_triangle(2)) && intersects(ph::integer_frustum, ph::wide_triangle(4)) && !intersects(ph::wide_triangle(0x1.0000000000001p2), ph::integer_frustum));
+static_assert(intersects(support::corner_cut, triangle3{{1, 1, 0.5}, {3, 3, 3}, {3, 2, 3}}) &&
+              !intersects(triangle3{{1, 1, 0x1.0000000000001p-1}, {3, 3, 3}, {3, 2, 3}}, support::corner_cut));
+static_assert(contains(ph::integer_frustum, triangle3{{1, 1, 1}, {-4, -4, 4}, {4, -4, 4}}) && !contains(support::corner_cut, triangle3{{0, 0, 0}, {1, 1, 0.5}, {1, 1, 1}}));
 // the same in the plane
 static_assert(intersects(segment2{{0, 0}, {2, 0}}, segment2{{2, 0}, {3, 5}}));
 static_assert(!intersects(segment2{{0, 0}, {2, 0}}, segment2{{0x1.0000000000001p1, 0}, {3, 0}}));

@@ -186,6 +186,10 @@ std::optional<std::pair<incidence::kdop<K>, B>> kdop_inside_case(rng& r) {
         b = realise(aabb3{pt(), pt()}, tr);
         for (int i = 0; i < 8; ++i) pts.push_back({(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z});
         if (r.coin()) b.max.z = std::nextafter(b.max.z, 1e308);
+    } else if constexpr (std::is_same_v<B, triangle3>) {
+        b = realise(triangle3{pt(), pt(), pt()}, tr);
+        pts.push_back(b.a), pts.push_back(b.b), pts.push_back(b.c);
+        if (r.coin()) b.c.y = std::nextafter(b.c.y, r.coin() ? 1e308 : -1e308);
     } else {
         b = realise(segment3{pt(), pt()}, tr);
         pts.push_back(b.a), pts.push_back(b.b);

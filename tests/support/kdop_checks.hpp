@@ -63,7 +63,7 @@ void kdop_symmetries(const std::string& name, long n) {
     CHECK(yes > 0);
 }
 
-// contains(kdop, B) for B = aabb3 or segment3 against the LP oracle (B's vertices each in the
+// contains(kdop, B) for B = aabb3, segment3 or triangle3 against the LP oracle (B's vertices each in the
 // k-DOP's slabs): every tier contract, on near-degenerate, random and inside cases.
 template <int K, class B>
 void kdop_contains_oracle(const std::string& name, long n, double approx_bound) {
@@ -79,7 +79,8 @@ void kdop_contains_oracle(const std::string& name, long n, double approx_bound) 
         if constexpr (std::is_same_v<B, aabb3>) {
             if (!(b.min.x <= b.max.x && b.min.y <= b.max.y && b.min.z <= b.max.z)) continue;
             for (int j = 0; j < 8; ++j) v.push_back({(j & 1) ? b.max.x : b.min.x, (j & 2) ? b.max.y : b.min.y, (j & 4) ? b.max.z : b.min.z});
-        } else v = {b.a, b.b};
+        } else if constexpr (std::is_same_v<B, triangle3>) v = {b.a, b.b, b.c};
+        else v = {b.a, b.b};
         bool truth = true;
         for (const auto& p : v) truth = truth && oracle::lp_intersect(lp(a), lp(p));
         yes += truth;

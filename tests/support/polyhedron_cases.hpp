@@ -16,6 +16,8 @@
 // within 0.6 of a centre in [-0.5, 0.5]^3, or a camera frustum (frustum3::from_camera: eye in [-1, 1]^3, any
 // view direction, fov 0.3 to 2.5, aspect 0.5 to 2, near 0.05 to 0.5, far up to 3.5 beyond),
 // against a random shape of flat_cases.hpp, at one random scale.
+// A frustum partner: near-degenerate, the first reflected through X or another moved to X, a third
+// of the time then moved out along the face; random, a second camera frustum.
 // A k-DOP partner (kdop_cases.hpp): near-degenerate, the k-DOP of a small dyadic cloud at X on the
 // outer side of the face there (X one of its points two times in three, else the cloud starts a
 // quarter out), moved by the same transform; random, the k-DOP of 4 to 8 random points within
@@ -135,6 +137,13 @@ inline incidence::frustum3 realise_frustum(const halfspace_set& h, transform& tr
     return f;
 }
 
+// The set as P: a frustum (six planes) or a polyhedron.
+template <class P>
+P realise_as(const halfspace_set& h, transform& tr) {
+    if constexpr (std::is_same_v<P, incidence::frustum3>) return realise_frustum(h, tr);
+    else return realise_polyhedron(h, tr);
+}
+
 inline halfspace_set polyhedron_near_set(rng& r) {
     using namespace incidence;
     const point3 c = small_point(r);
@@ -242,10 +251,29 @@ std::optional<std::pair<P, B>> halfspace_near(rng& r) {
     if constexpr (std::is_same_v<B, convex_polyhedron3>) { // a second polyhedron at X, beyond the face
         const halfspace_set h2 = polyhedron_near_at(r, h.X, h.face);
         transform tr = random_transform(r, true, true);
-        P a;
-        if constexpr (std::is_same_v<P, frustum3>) a = realise_frustum(h, tr);
-        else a = realise_polyhedron(h, tr);
+        const P a = realise_as<P>(h, tr);
         const convex_polyhedron3 b = realise_polyhedron(h2, tr);
+        if (!finite_shape(a) || !finite_shape(b)) return std::nullopt;
+        return std::pair{a, b};
+    } else if constexpr (std::is_same_v<B, frustum3>) {
+        // a second frustum at X: the first reflected through X (it touches the first within the
+        // plane of a face through X, or at X) or another one moved so that its X is here; a third
+        // of the time then moved a quarter or 2^-20 out along the face
+        halfspace_set h2 = h;
+        if (r.coin()) {
+            for (auto& p : h2.planes) p = {-p.n, h.X + (h.X - p.x)};
+        } else {
+            h2 = frustum_near_set(r);
+            const vec3 v = h.X - h2.X;
+            for (auto& p : h2.planes) p.x = p.x + v;
+        }
+        if (r.integer(0, 2) == 0) {
+            const vec3 v = h.face * (r.coin() ? 0.25 : 0x1p-20);
+            for (auto& p : h2.planes) p.x = p.x + v;
+        }
+        transform tr = random_transform(r, true, true);
+        const P a = realise_as<P>(h, tr);
+        const frustum3 b = realise_frustum(h2, tr);
         if (!finite_shape(a) || !finite_shape(b)) return std::nullopt;
         return std::pair{a, b};
     } else if constexpr (is_kdop<B>::value) { // the k-DOP of a cloud at X, on or beyond the face
@@ -258,9 +286,7 @@ std::optional<std::pair<P, B>> halfspace_near(rng& r) {
         }
         if (at_x) pts.push_back(h.X);
         transform tr = random_transform(r, true, true);
-        P a;
-        if constexpr (std::is_same_v<P, frustum3>) a = realise_frustum(h, tr);
-        else a = realise_polyhedron(h, tr);
+        const P a = realise_as<P>(h, tr);
         for (auto& p : pts) p = moved(p, tr);
         const auto b = kdop_around<B::slabs * 2>(pts);
         if (!b || !finite_shape(a)) return std::nullopt;
@@ -276,13 +302,21 @@ std::optional<std::pair<P, B>> halfspace_near(rng& r) {
         if constexpr (std::is_same_v<B, plane3>) // a face's own plane through X, either orientation: touching
             if (has_face && r.integer(0, 2) == 0) b = {r.coin() ? h.face : -h.face, h.X};
         transform tr = random_transform(r, true, true);
-        P a;
-        if constexpr (std::is_same_v<P, frustum3>) a = realise_frustum(h, tr);
-        else a = realise_polyhedron(h, tr);
+        const P a = realise_as<P>(h, tr);
         const B bb = realise(b, tr);
         if (!finite_shape(a)) return std::nullopt;
         return std::pair{a, bb};
     }
+}
+// A random camera frustum (frustum3::from_camera), its eye in [-1, 1]^3 moved by tr.
+inline std::optional<incidence::frustum3> camera_frustum(rng& r, transform& tr) {
+    using namespace incidence;
+    const point3 eye{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)};
+    const vec3 fw{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)}, up{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)};
+    const double zn = r.uniform(0.05, 0.5), zf = zn + r.uniform(0.5, 3.0);
+    const auto f = frustum3::from_camera(moved(eye, tr), fw, up, r.uniform(0.3, 2.5), r.uniform(0.5, 2.0), tr.scale_only(zn), tr.scale_only(zf));
+    if (!f.has_value()) return std::nullopt;
+    return f.value();
 }
 template <class P, class B>
 std::optional<std::pair<P, B>> halfspace_random(rng& r) {
@@ -290,23 +324,25 @@ std::optional<std::pair<P, B>> halfspace_random(rng& r) {
     const auto b = [&] {
         if constexpr (std::is_same_v<B, convex_polyhedron3>) return polyhedron_random_set(r);
         else if constexpr (is_kdop<B>::value) return random_cloud(r);
+        else if constexpr (std::is_same_v<B, frustum3>) return 0; // drawn below, once the transform is known
         else return random_shape<B>(r, false, 0.0);
     }();
     transform tr = random_transform(r, false, true);
     P a;
     if constexpr (std::is_same_v<P, frustum3>) {
-        const point3 eye{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)};
-        const vec3 fw{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)}, up{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)};
-        const double zn = r.uniform(0.05, 0.5), zf = zn + r.uniform(0.5, 3.0);
-        const auto f = frustum3::from_camera(moved(eye, tr), fw, up, r.uniform(0.3, 2.5), r.uniform(0.5, 2.0), tr.scale_only(zn), tr.scale_only(zf));
-        if (!f.has_value()) return std::nullopt;
-        a = f.value();
+        const auto f = camera_frustum(r, tr);
+        if (!f) return std::nullopt;
+        a = *f;
     } else {
         a = realise_polyhedron(polyhedron_random_set(r), tr);
     }
     B bb;
     if constexpr (std::is_same_v<B, convex_polyhedron3>) bb = realise_polyhedron(b, tr);
-    else if constexpr (is_kdop<B>::value) {
+    else if constexpr (std::is_same_v<B, frustum3>) {
+        const auto f = camera_frustum(r, tr);
+        if (!f) return std::nullopt;
+        bb = *f;
+    } else if constexpr (is_kdop<B>::value) {
         std::vector<point3> pts = b;
         for (auto& p : pts) p = moved(p, tr);
         const auto kd = kdop_around<B::slabs * 2>(pts);
@@ -317,22 +353,30 @@ std::optional<std::pair<P, B>> halfspace_random(rng& r) {
     return std::pair{a, bb};
 }
 
-// contains(P, segment3) cases: a segment between two points of the near-degenerate set's boundary
-// or inside (the extreme points and X), then one end nudged by one ulp or not.
-template <class P>
-std::optional<std::pair<P, incidence::segment3>> halfspace_inside_case(rng& r) {
+// contains(P, segment3 | triangle3) cases: a segment (or triangle) between points of the
+// near-degenerate set's boundary or inside (the extreme points and X), then its last end nudged
+// by one ulp or not.
+template <class P, class S = incidence::segment3>
+std::optional<std::pair<P, S>> halfspace_inside_case(rng& r) {
     using namespace incidence;
     const halfspace_set h = std::is_same_v<P, frustum3> ? frustum_near_set(r) : polyhedron_near_set(r);
     std::vector<point3> on{h.X};
     for (const auto& p : h.planes) on.push_back(p.x);
-    segment3 s{on[static_cast<std::size_t>(r.integer(0, static_cast<int>(on.size()) - 1))],
-               on[static_cast<std::size_t>(r.integer(0, static_cast<int>(on.size()) - 1))]};
+    auto pick = [&] { return on[static_cast<std::size_t>(r.integer(0, static_cast<int>(on.size()) - 1))]; };
+    S s;
+    if constexpr (std::is_same_v<S, triangle3>) {
+        const point3 a = pick(), b = pick();
+        s = {a, b, pick()};
+    } else {
+        const point3 a = pick();
+        s = {a, pick()};
+    }
     transform tr = random_transform(r, r.coin(), true);
-    P a;
-    if constexpr (std::is_same_v<P, frustum3>) a = realise_frustum(h, tr);
-    else a = realise_polyhedron(h, tr);
+    const P a = realise_as<P>(h, tr);
     s = realise(s, tr);
-    if (r.coin()) s.b.x = std::nextafter(s.b.x, r.coin() ? 1e308 : -1e308);
+    if constexpr (std::is_same_v<S, triangle3>) {
+        if (r.coin()) s.c.x = std::nextafter(s.c.x, r.coin() ? 1e308 : -1e308);
+    } else if (r.coin()) s.b.x = std::nextafter(s.b.x, r.coin() ? 1e308 : -1e308);
     if (!finite_shape(a)) return std::nullopt;
     return std::pair{a, s};
 }

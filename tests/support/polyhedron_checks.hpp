@@ -66,7 +66,7 @@ void halfspace_symmetries(const std::string& name, long n) {
     CHECK(yes > 0);
 }
 
-// contains(P, B) for B = point3, segment3 or aabb3 against the LP (each vertex in the half-spaces), on
+// contains(P, B) for B = point3, segment3, triangle3 or aabb3 against the LP (each vertex in the half-spaces), on
 // near-degenerate, random and inside cases: n of each.
 template <class P, class B>
 void halfspace_contains_oracle(const std::string& name, long n, double approx_bound) {
@@ -77,8 +77,8 @@ void halfspace_contains_oracle(const std::string& name, long n, double approx_bo
     for (long i = 0; i < 3 * n; ++i) {
         std::optional<std::pair<P, B>> c;
         if (i % 3 == 2) {
-            const auto s = halfspace_inside_case<P>(r);
-            if (s) {
+            if constexpr (std::is_same_v<B, triangle3>) c = halfspace_inside_case<P, triangle3>(r);
+            else if (const auto s = halfspace_inside_case<P>(r)) {
                 if constexpr (std::is_same_v<B, segment3>) c = s;
                 else if constexpr (std::is_same_v<B, aabb3>) c = std::pair{s->first, ordered(aabb3{s->second.a, s->second.b})};
                 else c = std::pair{s->first, s->second.b};
@@ -88,6 +88,7 @@ void halfspace_contains_oracle(const std::string& name, long n, double approx_bo
         const auto& [a, b] = *c;
         std::vector<point3> v;
         if constexpr (std::is_same_v<B, segment3>) v = {b.a, b.b};
+        else if constexpr (std::is_same_v<B, triangle3>) v = {b.a, b.b, b.c};
         else if constexpr (std::is_same_v<B, aabb3>)
             for (int k = 0; k < 8; ++k) v.push_back({(k & 1) ? b.max.x : b.min.x, (k & 2) ? b.max.y : b.min.y, (k & 4) ? b.max.z : b.min.z});
         else v = {b};

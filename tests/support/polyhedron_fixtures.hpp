@@ -22,6 +22,17 @@ inline constexpr convex_polyhedron3 roof{{plane3{{-1, 0, 1}, 0}, plane3{{1, 0, 1
 // corners (+-1, +-1, 1) and (+-4, +-4, 4), all exact.
 inline constexpr frustum3 integer_frustum{{plane3{{0, 0, -1}, -1}, plane3{{0, 0, 1}, 4}, plane3{{-1, 0, -1}, 0}, plane3{{1, 0, -1}, 0},
                                            plane3{{0, -1, -1}, 0}, plane3{{0, 1, -1}, 0}}};
+// f reflected through the point c (x -> 2c - x): a plane n . x <= d becomes -n . x <= d - 2 n . c
+// (exact when that offset is).
+constexpr frustum3 reflected(const frustum3& f, point3 c) {
+    frustum3 g = f;
+    for (auto& p : g.planes) p = plane3{-p.normal, p.offset - 2 * dot(p.normal, c - point3{0, 0, 0})};
+    return g;
+}
+// A large triangle in the plane z = z0 (corners (-10, -10), (10, -10), (0, 10)): its edges miss the
+// unit cube, and the integer frustum's section |x|, |y| <= z0 while z0 < 10/3, so where it meets
+// those, it is by its interior.
+constexpr triangle3 wide_triangle(double z0) { return {{-10, -10, z0}, {10, -10, z0}, {0, 10, z0}}; }
 // Looking down -z from the origin, 90 degrees, square, near 1, far 100 (computed planes).
 inline const frustum3 camera = frustum3::from_camera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 1.5707963267948966, 1.0, 1.0, 100.0).value();
 

@@ -616,6 +616,13 @@ struct near_boundary<kdop<14>, kdop<14>> {
     }
 };
 template <>
+struct near_boundary<kdop<14>, triangle3> {
+    static std::pair<kdop<14>, triangle3> touching(rng& r) { // a corner at p, the others outwards
+        const auto t = touching_kdop(r);
+        return {t.box, triangle3{t.p, t.p + outward(r, t, 300), t.p + outward(r, t, 300)}};
+    }
+};
+template <>
 struct near_boundary<aabb3, kdop<14>> {
     static std::pair<aabb3, kdop<14>> touching(rng& r) { // a box with its corner at p, outwards
         const auto t = touching_kdop(r);
@@ -750,6 +757,14 @@ struct near_boundary<P, B> {
             }
             if (r.integer(0, 2) != 0) q.planes[static_cast<unsigned>(q.count++)] = plane3{-t.o, -dot(t.o, t.p - point3{0, 0, 0})};
             return {t.shape, q};
+        } else if constexpr (std::is_same_v<B, triangle3>) { // a corner at p, the others outwards
+            return {t.shape, triangle3{t.p, t.p + outward(r, t.o, 300), t.p + outward(r, t.o, 300)}};
+        } else if constexpr (std::is_same_v<B, frustum3> && std::is_same_v<P, frustum3>) {
+            // the frustum reflected through its corner p (x -> 2p - x, exact: integers): the two
+            // touch at p only
+            frustum3 g = t.shape;
+            for (auto& h : g.planes) h = plane3{h.normal * -1.0, h.offset - 2 * dot(h.normal, t.p - point3{0, 0, 0})};
+            return {t.shape, g};
         } else if constexpr (std::is_same_v<B, kdop<14>>) {
             // the 14-DOP of an integer cloud from p outwards, p included two times in three (else
             // the cloud starts one step out): touching at p, or whether the slabs reach the face
