@@ -32,17 +32,18 @@ export namespace incidence::pair {
 namespace polyq {
 
 // The sign of a low-degree polynomial that decides which candidate points exist (a determinant of
-// normals, a component of a cross product), which is often exactly zero (a camera frustum's two
-// side planes and its near plane are dependent; axis-aligned normals cross in zeros): a zero the
-// filter cannot prove would end its run, so the filter kernel evaluates it exactly at once.
+// normals, a component of a cross product), which is often exactly zero or nearly (a camera
+// frustum's two side planes and its near plane are dependent; k-DOP directions and axis-aligned
+// normals give exact zeros): a sign the filter cannot prove would end its run, so the filter
+// kernel then tries the exact fallback's two cheap stages, plain double with every operation
+// exact, then double-double, and only then gives up.
 template <class K, class F>
 [[nodiscard]] constexpr sign settled(K& k, const F& f) {
     const sign s = arith::probe(k, f);
     if (s != sign::zero) return s;
     if constexpr (std::is_same_v<K, arith::filter_kernel>) {
-        arith::exact_kernel e;
-        const sign x = e.sgn(f);
-        if (e.valid) return x;
+        if (const arith::exact_double x = f(arith::lift_exact_double{}); x.exact) return arith::sign_of_double(x.v);
+        if (const int t = arith::proven_sign(f(arith::lift_filter2{})); t != 0) return arith::to_sign(t);
     }
     return k.sgn(f);
 }

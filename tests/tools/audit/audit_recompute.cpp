@@ -1,13 +1,14 @@
 // Recomputes one point of the audit's stability curves independently of the audit's truth: the
 // same generated cases (tools/audit/generators.hpp, same seed streams), with the true answer
-// from CGAL Epeck instead of the exact tier. Prints one JSON object:
+// from CGAL Epeck instead of the exact tier. Prints one JSON object per level, one per line:
 //   {"family": ..., "level": L, "skipped": n, "methods": {"name": [cases, wrong, fp, fn], ...}}
-// Usage: audit_recompute SEED CASES FAMILY_INDEX LEVEL      or      audit_recompute --families
+// Usage: audit_recompute SEED CASES FAMILY_INDEX LEVEL[,LEVEL...]   or   audit_recompute --families
 #include "../../oracle/cgal_oracle.hpp"
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <type_traits>
+#include <vector>
 import incidence;
 #include "../../../tools/audit/generators.hpp"
 #include "../../../tools/audit/methods.hpp"
@@ -162,20 +163,36 @@ int main(int argc, char** argv) {
         return 0;
     }
     if (argc != 5) {
-        std::fprintf(stderr, "usage: audit_recompute SEED CASES FAMILY_INDEX LEVEL | --families\n");
+        std::fprintf(stderr, "usage: audit_recompute SEED CASES FAMILY_INDEX LEVEL[,LEVEL...] | --families\n");
         return 2;
     }
     const auto seed = std::strtoull(argv[1], nullptr, 10);
     const long cases = std::strtol(argv[2], nullptr, 10);
     const auto index = unsigned(std::strtoul(argv[3], nullptr, 10));
-    const int level = int(std::strtol(argv[4], nullptr, 10));
-    if (index >= catalog::family_count || level < 0 || level >= audit::level_count) {
+    // one JSON line per level, in the order given (one process for a family's sample)
+    std::vector<int> levels;
+    for (const char* p = argv[4]; *p;) {
+        char* end = nullptr;
+        levels.push_back(int(std::strtol(p, &end, 10)));
+        if (end == p || (*end != ',' && *end != 0)) {
+            std::fprintf(stderr, "audit_recompute: LEVEL is a comma-separated list of integers\n");
+            return 2;
+        }
+        p = *end == ',' ? end + 1 : end;
+    }
+    if (index >= catalog::family_count) {
         std::fprintf(stderr, "audit_recompute: family index or level out of range\n");
         return 2;
     }
+    for (const int level : levels)
+        if (level < 0 || level >= audit::level_count) {
+            std::fprintf(stderr, "audit_recompute: family index or level out of range\n");
+            return 2;
+        }
     unsigned i = 0;
     catalog::for_each_family([&](const auto& f) {
-        if (i++ == index) recompute(f, seed, cases, index, level);
+        if (i++ == index)
+            for (const int level : levels) recompute(f, seed, cases, index, level);
     });
     return 0;
 }

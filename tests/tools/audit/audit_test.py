@@ -248,8 +248,10 @@ sample_levels = [0, 25, 45, 60, 61, 62, 69]
 st = {f["name"]: f for f in d["stability"]["families"]}
 points = 0
 for fi, name in enumerate(families):
-    for level in sample_levels:
-        rec = json.loads(run(RECOMPUTE, str(seed), str(cases), str(fi), str(level)))
+    recs = [json.loads(line) for line in run(RECOMPUTE, str(seed), str(cases), str(fi), ",".join(map(str, sample_levels))).splitlines()]
+    check(len(recs) == len(sample_levels), f"{name}: one record per sampled level")
+    for level, rec in zip(sample_levels, recs):
+        check(rec["level"] == level, f"{name}: records in the order of the levels")
         check(rec["skipped"] == 0, f"{name} level {level}: CGAL preconditions")
         for m in st[name]["methods"]:
             got = rec["methods"][m["name"]]
