@@ -96,18 +96,23 @@ template <class K>
 } // namespace polyq
 
 namespace polyq {
-// A fixed order of two polyhedra (count, then the numbers in turn), so the test runs on the same
-// order of its arguments whichever way they come: the approximate tier then answers the same for
-// both orders too.
-[[nodiscard]] constexpr bool before(const convex_polyhedron3& a, const convex_polyhedron3& b) {
-    if (a.count != b.count) return a.count < b.count;
-    for (int i = 0; i < a.count && i < convex_polyhedron3::capacity; ++i) {
-        const plane3 p = a.planes[static_cast<unsigned>(i)], q = b.planes[static_cast<unsigned>(i)];
+// A fixed order of two lists of n planes (the numbers in turn; NaN compares as equal), so a test
+// of two sets runs on the same order of its arguments whichever way they come: the approximate
+// tier then answers the same for both orders too.
+[[nodiscard]] constexpr bool planes_before(const plane3* a, const plane3* b, int n) {
+    for (int i = 0; i < n; ++i) {
+        const plane3 p = a[i], q = b[i];
         const double x[4] = {p.normal.x, p.normal.y, p.normal.z, p.offset}, y[4] = {q.normal.x, q.normal.y, q.normal.z, q.offset};
         for (int j = 0; j < 4; ++j)
             if (x[j] != y[j] && x[j] == x[j] && y[j] == y[j]) return x[j] < y[j];
     }
     return false;
+}
+// Two polyhedra: the count, then the planes.
+[[nodiscard]] constexpr bool before(const convex_polyhedron3& a, const convex_polyhedron3& b) {
+    if (a.count != b.count) return a.count < b.count;
+    const int n = a.count < 0 ? 0 : (a.count > convex_polyhedron3::capacity ? convex_polyhedron3::capacity : a.count);
+    return planes_before(a.planes.data(), b.planes.data(), n);
 }
 } // namespace polyq
 

@@ -19,16 +19,8 @@ import :convex_polyhedron_convex_polyhedron;
 export namespace incidence::pair {
 
 namespace polyq {
-// A fixed order of two frustums (the numbers of their planes in turn; NaN compares as equal).
-[[nodiscard]] constexpr bool before(const frustum3& a, const frustum3& b) {
-    for (unsigned i = 0; i < 6; ++i) {
-        const plane3 p = a.planes[i], q = b.planes[i];
-        const double x[4] = {p.normal.x, p.normal.y, p.normal.z, p.offset}, y[4] = {q.normal.x, q.normal.y, q.normal.z, q.offset};
-        for (int j = 0; j < 4; ++j)
-            if (x[j] != y[j] && x[j] == x[j] && y[j] == y[j]) return x[j] < y[j];
-    }
-    return false;
-}
+// A fixed order of two frustums: their six planes in turn.
+[[nodiscard]] constexpr bool before(const frustum3& a, const frustum3& b) { return planes_before(a.planes.data(), b.planes.data(), 6); }
 } // namespace polyq
 
 template <class K>
