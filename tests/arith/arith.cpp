@@ -5,6 +5,8 @@
 import incidence;
 #include "../support/testing.hpp"
 
+namespace test_arith_arith { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using rational = boost::multiprecision::cpp_rational;
 
@@ -131,3 +133,5 @@ TEST_CASE("arith: the double-double filter never claims a wrong sign, near cance
     std::printf("[cases] double-double filter: %ld near-cancelling, proven %ld, wrong %ld\n", n, proven, wrong);
     CHECK(wrong == 0);
 }
+
+} // namespace test_arith_arith

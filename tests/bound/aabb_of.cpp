@@ -5,6 +5,8 @@ import incidence;
 #include "../support/testing.hpp"
 #include "../support/point_sets.hpp"
 
+namespace test_bound_aabb_of { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 TEST_CASE("aabb_of: every generated and real set", "[bound][aabb_of]") {
@@ -60,3 +62,5 @@ TEST_CASE("every construction: a million copies of one point", "[bound]") {
     CHECK(bound::volume(o) < 1e-30);
     std::printf("[cases] 1e6 copies of one point: every construction gives the point (or a box of volume %g around it)\n", bound::volume(o));
 }
+
+} // namespace test_bound_aabb_of

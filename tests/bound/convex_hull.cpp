@@ -11,6 +11,8 @@ import incidence;
 #include "../support/testing.hpp"
 #include "../support/point_sets.hpp"
 
+namespace test_bound_convex_hull { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -99,3 +101,5 @@ TEST_CASE("convex_hull: lower dimensions and bad input", "[bound][convex_hull]")
     const point3 nan_pt[] = {{0, 0, 0}, {__builtin_nan(""), 0, 0}};
     CHECK(bound::convex_hull(std::span<const point3>(nan_pt)).error().code == errc::not_finite);
 }
+
+} // namespace test_bound_convex_hull

@@ -6,6 +6,8 @@ import incidence;
 #include "../support/testing.hpp"
 #include "../support/point_sets.hpp"
 
+namespace test_bound_kdop_of { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -62,3 +64,5 @@ TEST_CASE("kdop_of: bad input and overflow", "[bound][kdop_of]") {
     constexpr point3 cp[] = {{1, 2, 3}, {-1, 5, 0}};
     static_assert(bound::kdop_of<14>(std::span<const point3>(cp)).value().max[3] == 6.0);
 }
+
+} // namespace test_bound_kdop_of

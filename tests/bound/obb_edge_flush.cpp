@@ -13,6 +13,8 @@ import incidence;
 #include "../support/point_sets.hpp"
 #include "../support/box_checks.hpp"
 
+namespace test_bound_obb_edge_flush { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -95,3 +97,5 @@ TEST_CASE("obb_edge_flush: no larger than obb_min_volume or CGAL's box", "[bound
     CHECK(above_minvol == 0);
     CHECK(above_cgal == 0);
 }
+
+} // namespace test_bound_obb_edge_flush

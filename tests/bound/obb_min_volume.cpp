@@ -9,8 +9,12 @@ import incidence;
 #include "../support/point_sets.hpp"
 #include "../support/box_checks.hpp"
 
+namespace test_bound_obb_min_volume { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 TEST_CASE("obb_min_volume: every generated and real set", "[bound][obb_min_volume]") {
     support::check_obb_construction("obb_min_volume", [](std::span<const point3> pts) { return bound::obb_min_volume(pts); });
 }
+
+} // namespace test_bound_obb_min_volume

@@ -9,6 +9,8 @@ import incidence;
 #include "../support/point_sets.hpp"
 #include "../support/sphere_checks.hpp"
 
+namespace test_bound_sphere_from_aabb { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 TEST_CASE("sphere_from_aabb and _farthest: every generated and real set", "[bound][sphere_from_aabb]") {
@@ -39,3 +41,5 @@ TEST_CASE("sphere_from_aabb: bad input", "[bound][sphere_from_aabb]") {
     constexpr aabb3 unit{{0, 0, 0}, {2, 2, 2}};
     static_assert(bound::sphere_from_aabb(unit).value().center == point3{1, 1, 1});
 }
+
+} // namespace test_bound_sphere_from_aabb

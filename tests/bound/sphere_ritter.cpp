@@ -8,6 +8,8 @@ import incidence;
 #include "../support/point_sets.hpp"
 #include "../support/sphere_checks.hpp"
 
+namespace test_bound_sphere_ritter { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 TEST_CASE("sphere_ritter: every generated and real set", "[bound][sphere_ritter]") {
@@ -28,3 +30,5 @@ TEST_CASE("sphere_ritter: every generated and real set", "[bound][sphere_ritter]
     }
     CHECK(bound::sphere_ritter(std::span<const point3>()).error().code == errc::empty_input);
 }
+
+} // namespace test_bound_sphere_ritter

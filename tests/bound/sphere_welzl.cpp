@@ -10,6 +10,8 @@ import incidence;
 #include "../support/point_sets.hpp"
 #include "../support/sphere_checks.hpp"
 
+namespace test_bound_sphere_welzl { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -91,3 +93,5 @@ TEST_CASE("sphere_welzl: fuzzer regression, nearly collinear points at 2^-871", 
     CHECK(oracle::is_rounded_min_sphere_sqradius(xyz.data(), 5, w.value().squared_radius));
     CHECK(support::all_inside(std::span<const point3>(pts), w.value().sphere));
 }
+
+} // namespace test_bound_sphere_welzl

@@ -2,6 +2,8 @@
 #include <catch2/catch_test_macros.hpp>
 import incidence;
 
+namespace test_core_core { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 TEST_CASE("core: points and vectors", "[core]") {
@@ -20,3 +22,5 @@ TEST_CASE("core: sign and certainty", "[core]") {
     CHECK(!certainty::uncertain == certainty::uncertain);
     static_assert(tier<exact> && tier<approximate> && !tier<int>);
 }
+
+} // namespace test_core_core

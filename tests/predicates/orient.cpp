@@ -9,6 +9,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/sphere_points.hpp"
 
+namespace test_predicates_orient { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::arr;
 
@@ -132,3 +134,5 @@ TEST_CASE("predicates: subnormal and near-underflow orient3d (the classic filter
     std::printf("[cases] orient3d subnormal: %ld cases, %ld exact disagreements\n", n, wrong);
     CHECK(wrong == 0);
 }
+
+} // namespace test_predicates_orient

@@ -10,6 +10,8 @@ import incidence;
 #include <algorithm>
 #include <vector>
 
+namespace test_query_aabb_aabb { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::arr;
 
@@ -125,3 +127,5 @@ TEST_CASE("aabb_aabb: covers against the independent arrangement oracle", "[aabb
     std::printf("[cases] aabb_aabb covers: %ld cases (%ld covered), %ld wrong\n", n, yes, wrong);
     CHECK(wrong == 0);
 }
+
+} // namespace test_query_aabb_aabb

@@ -14,6 +14,8 @@ import incidence;
 #include "../support/polyhedron_checks.hpp"
 #include "../support/polyhedron_fixtures.hpp"
 
+namespace test_query_aabb_convex_polyhedron { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using namespace support::polyhedron_fixtures;
 
@@ -46,3 +48,5 @@ TEST_CASE("aabb_convex_polyhedron: rewrites of both shapes and exact translation
 TEST_CASE("aabb_convex_polyhedron: contains", "[aabb_convex_polyhedron][oracle]") {
     support::halfspace_contains_oracle<convex_polyhedron3, aabb3>("aabb_convex_polyhedron", support::cases(2000), approx_bound);
 }
+
+} // namespace test_query_aabb_convex_polyhedron

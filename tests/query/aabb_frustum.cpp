@@ -15,6 +15,8 @@ import incidence;
 #include "../support/polyhedron_checks.hpp"
 #include "../support/polyhedron_fixtures.hpp"
 
+namespace test_query_aabb_frustum { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using namespace support::polyhedron_fixtures;
 
@@ -69,3 +71,5 @@ TEST_CASE("aabb_frustum: the culling test's and the separating-axis test's wrong
     CHECK(culling_yes_wrongly > 0); // its known weakness: boxes beside an edge or a corner
     CHECK(sat_wrong[0] == 0);       // the axes are complete: wrong only by rounding, at the boundary
 }
+
+} // namespace test_query_aabb_frustum

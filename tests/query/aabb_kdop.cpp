@@ -18,6 +18,8 @@ import incidence;
 #include "../support/kdop_checks.hpp"
 #include "../support/kdop_fixtures.hpp"
 
+namespace test_query_aabb_kdop { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::corner_cut;
 using support::edge_cut;
@@ -63,3 +65,5 @@ TEST_CASE("aabb_kdop: both orders and exact translations give the same answer", 
     const long n = support::cases(5000);
     support::kdop_symmetries_every_k<aabb3>("aabb_kdop", n);
 }
+
+} // namespace test_query_aabb_kdop

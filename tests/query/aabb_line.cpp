@@ -8,6 +8,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/box_linear_cases.hpp"
 
+namespace test_query_aabb_line { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::arr;
 
@@ -71,3 +73,5 @@ TEST_CASE("aabb_line: the reversed direction gives the same answer", "[aabb_line
     std::printf("[cases] aabb_line reversed direction: %ld, %ld differ\n", n, bad);
     CHECK(bad == 0);
 }
+
+} // namespace test_query_aabb_line

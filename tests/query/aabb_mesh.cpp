@@ -15,6 +15,8 @@ import incidence;
 #include "../support/mesh_checks.hpp"
 #include "../support/mesh_fixtures.hpp"
 
+namespace test_query_aabb_mesh { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::cube;
 using support::dented;
@@ -37,3 +39,5 @@ TEST_CASE("aabb_mesh: oracle, random and near-degenerate", "[aabb_mesh][oracle]"
 TEST_CASE("aabb_mesh: rewrites of either shape and exact translations give the same answer", "[aabb_mesh]") {
     support::mesh_symmetries<aabb3>("aabb_mesh", support::cases(20000));
 }
+
+} // namespace test_query_aabb_mesh

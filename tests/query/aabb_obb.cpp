@@ -10,6 +10,8 @@ import incidence;
 #include "../support/obb_cases.hpp"
 #include "../support/obb_check.hpp"
 
+namespace test_query_aabb_obb { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -37,3 +39,5 @@ TEST_CASE("aabb_obb: oracle", "[aabb_obb][oracle]") {
 TEST_CASE("aabb_obb: rewritten shapes give the same answer", "[aabb_obb]") {
     support::run_rewritten<aabb3, obb3>("aabb_obb", support::cases(20000), near_case, random_case, variants);
 }
+
+} // namespace test_query_aabb_obb

@@ -8,6 +8,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/plane_cases.hpp"
 
+namespace test_query_aabb_plane { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::arr;
 
@@ -65,3 +67,5 @@ TEST_CASE("aabb_plane: the flipped plane (-n, -offset) gives the same answer", "
     std::printf("[cases] aabb_plane flipped: %ld, %ld differ\n", n, bad);
     CHECK(bad == 0);
 }
+
+} // namespace test_query_aabb_plane

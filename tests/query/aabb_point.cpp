@@ -7,6 +7,8 @@ import incidence;
 #include "../support/testing.hpp"
 #include "../support/check.hpp"
 
+namespace test_query_aabb_point { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::arr;
 
@@ -84,3 +86,5 @@ TEST_CASE("aabb_point: distances are correctly rounded (exact) and enclosed (int
     CHECK(not_enclosed == 0);
     CHECK(approx_bad == 0);
 }
+
+} // namespace test_query_aabb_point

@@ -7,6 +7,8 @@ import incidence;
 #include "../support/testing.hpp"
 #include "../support/check.hpp"
 
+namespace test_query_aabb_ray { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::arr;
 
@@ -130,3 +132,5 @@ TEST_CASE("aabb_ray: Woo's method against the oracle (independent second algorit
     std::printf("[cases] aabb_ray Woo: %ld cases, %ld wrong, %ld outside the stated bound\n", n, wrong, outside);
     CHECK(outside == 0);
 }
+
+} // namespace test_query_aabb_ray

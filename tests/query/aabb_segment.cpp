@@ -9,6 +9,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/box_linear_cases.hpp"
 
+namespace test_query_aabb_segment { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::arr;
 
@@ -64,3 +66,5 @@ TEST_CASE("aabb_segment: reversed end points give the same answer", "[aabb_segme
     std::printf("[cases] aabb_segment reversed: %ld, %ld differ\n", n, bad);
     CHECK(bad == 0);
 }
+
+} // namespace test_query_aabb_segment

@@ -12,6 +12,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_aabb_tetrahedron { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -42,3 +44,5 @@ TEST_CASE("aabb_tetrahedron: oracle, random and near-degenerate", "[aabb_tetrahe
 TEST_CASE("aabb_tetrahedron: rewrites of either shape and exact translations give the same answer", "[aabb_tetrahedron]") {
     support::flat_symmetries<aabb3, tetrahedron3>("aabb_tetrahedron", support::cases(20000));
 }
+
+} // namespace test_query_aabb_tetrahedron

@@ -9,6 +9,8 @@ import incidence;
 #include "../support/testing.hpp"
 #include "../support/check.hpp"
 
+namespace test_query_aabb_triangle { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::arr;
 
@@ -149,3 +151,5 @@ TEST_CASE("aabb_triangle: vertex order, axis permutations and mirror images give
     std::printf("[cases] aabb_triangle symmetries: %ld, %ld differ\n", n, bad);
     CHECK(bad == 0);
 }
+
+} // namespace test_query_aabb_triangle

@@ -12,6 +12,8 @@ import incidence;
 #include "../support/mesh_fixtures.hpp"
 #include "../support/polygon_fixtures.hpp"
 
+namespace test_query_bad_input { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -245,3 +247,5 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
     fr.planes[5].offset = nan_;
     CHECK_FALSE(intersects(fr, line3{{0.5, 0.5, 0.5}, {1, 1, 1}}));
 }
+
+} // namespace test_query_bad_input

@@ -11,6 +11,8 @@ import incidence;
 #include "../support/testing.hpp"
 #include "../../tools/audit/generators.hpp"
 
+namespace test_query_catalog { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 TEST_CASE("catalog: one family per query file, each with a test file", "[catalog]") {
@@ -57,3 +59,5 @@ TEST_CASE("catalog: alternatives agree with the exact tier away from the boundar
     CHECK(checked > 1000);
     CHECK(wrong == 0);
 }
+
+} // namespace test_query_catalog

@@ -18,6 +18,8 @@ import incidence;
 #include "../support/polyhedron_checks.hpp"
 #include "../support/polyhedron_fixtures.hpp"
 
+namespace test_query_convex_polyhedron_convex_polyhedron { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using namespace support::polyhedron_fixtures;
 
@@ -53,3 +55,5 @@ TEST_CASE("convex_polyhedron_convex_polyhedron: rewrites of both shapes and exac
           "[convex_polyhedron_convex_polyhedron]") {
     support::halfspace_symmetries<convex_polyhedron3, convex_polyhedron3>("convex_polyhedron_convex_polyhedron", support::cases(5000));
 }
+
+} // namespace test_query_convex_polyhedron_convex_polyhedron

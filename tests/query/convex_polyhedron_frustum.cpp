@@ -17,6 +17,8 @@ import incidence;
 #include "../support/polyhedron_checks.hpp"
 #include "../support/polyhedron_fixtures.hpp"
 
+namespace test_query_convex_polyhedron_frustum { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using namespace support::polyhedron_fixtures;
 
@@ -45,3 +47,5 @@ TEST_CASE("convex_polyhedron_frustum: oracle, random and near-degenerate", "[con
 TEST_CASE("convex_polyhedron_frustum: rewrites of both shapes and exact translations give the same answer", "[convex_polyhedron_frustum]") {
     support::halfspace_symmetries<frustum3, convex_polyhedron3>("convex_polyhedron_frustum", support::cases(5000));
 }
+
+} // namespace test_query_convex_polyhedron_frustum

@@ -16,6 +16,8 @@ import incidence;
 #include "../support/polyhedron_fixtures.hpp"
 #include "../support/kdop_fixtures.hpp"
 
+namespace test_query_convex_polyhedron_kdop { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using namespace support::polyhedron_fixtures;
 
@@ -47,3 +49,5 @@ TEST_CASE("convex_polyhedron_kdop: rewrites of the set and exact translations gi
     support::halfspace_symmetries<convex_polyhedron3, kdop<14>>("convex_polyhedron_kdop K = 14", support::cases(2500));
     support::halfspace_symmetries<convex_polyhedron3, kdop<26>>("convex_polyhedron_kdop K = 26", support::cases(2500));
 }
+
+} // namespace test_query_convex_polyhedron_kdop

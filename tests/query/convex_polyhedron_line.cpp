@@ -14,6 +14,8 @@ import incidence;
 #include "../support/polyhedron_checks.hpp"
 #include "../support/polyhedron_fixtures.hpp"
 
+namespace test_query_convex_polyhedron_line { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using namespace support::polyhedron_fixtures;
 
@@ -36,3 +38,5 @@ TEST_CASE("convex_polyhedron_line: oracle, random and near-degenerate", "[convex
 TEST_CASE("convex_polyhedron_line: rewrites of both shapes and exact translations give the same answer", "[convex_polyhedron_line]") {
     support::halfspace_symmetries<convex_polyhedron3, line3>("convex_polyhedron_line", support::cases(10000));
 }
+
+} // namespace test_query_convex_polyhedron_line

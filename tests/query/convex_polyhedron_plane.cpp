@@ -17,6 +17,8 @@ import incidence;
 #include "../support/polyhedron_checks.hpp"
 #include "../support/polyhedron_fixtures.hpp"
 
+namespace test_query_convex_polyhedron_plane { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using namespace support::polyhedron_fixtures;
 
@@ -49,3 +51,5 @@ TEST_CASE("convex_polyhedron_plane: oracle, random and near-degenerate", "[conve
 TEST_CASE("convex_polyhedron_plane: rewrites of both shapes and exact translations give the same answer", "[convex_polyhedron_plane]") {
     support::halfspace_symmetries<convex_polyhedron3, plane3>("convex_polyhedron_plane", support::cases(5000));
 }
+
+} // namespace test_query_convex_polyhedron_plane

@@ -14,6 +14,8 @@ import incidence;
 #include "../support/polyhedron_checks.hpp"
 #include "../support/polyhedron_fixtures.hpp"
 
+namespace test_query_convex_polyhedron_point { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using namespace support::polyhedron_fixtures;
 
@@ -40,3 +42,5 @@ TEST_CASE("convex_polyhedron_point: rewrites of both shapes and exact translatio
 TEST_CASE("convex_polyhedron_point: contains", "[convex_polyhedron_point][oracle]") {
     support::halfspace_contains_oracle<convex_polyhedron3, point3>("convex_polyhedron_point", support::cases(2000), approx_bound);
 }
+
+} // namespace test_query_convex_polyhedron_point

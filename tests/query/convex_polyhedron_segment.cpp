@@ -14,6 +14,8 @@ import incidence;
 #include "../support/polyhedron_checks.hpp"
 #include "../support/polyhedron_fixtures.hpp"
 
+namespace test_query_convex_polyhedron_segment { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using namespace support::polyhedron_fixtures;
 
@@ -40,3 +42,5 @@ TEST_CASE("convex_polyhedron_segment: rewrites of both shapes and exact translat
 TEST_CASE("convex_polyhedron_segment: contains", "[convex_polyhedron_segment][oracle]") {
     support::halfspace_contains_oracle<convex_polyhedron3, segment3>("convex_polyhedron_segment", support::cases(2000), approx_bound);
 }
+
+} // namespace test_query_convex_polyhedron_segment

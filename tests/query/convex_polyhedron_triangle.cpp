@@ -17,6 +17,8 @@ import incidence;
 #include "../support/polyhedron_checks.hpp"
 #include "../support/polyhedron_fixtures.hpp"
 
+namespace test_query_convex_polyhedron_triangle { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using namespace support::polyhedron_fixtures;
 
@@ -46,3 +48,5 @@ TEST_CASE("convex_polyhedron_triangle: rewrites of both shapes and exact transla
 TEST_CASE("convex_polyhedron_triangle: contains", "[convex_polyhedron_triangle][oracle]") {
     support::halfspace_contains_oracle<convex_polyhedron3, triangle3>("convex_polyhedron_triangle", support::cases(2000), approx_bound);
 }
+
+} // namespace test_query_convex_polyhedron_triangle

@@ -17,6 +17,8 @@ import incidence;
 #include "../support/polyhedron_checks.hpp"
 #include "../support/polyhedron_fixtures.hpp"
 
+namespace test_query_frustum_frustum { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using namespace support::polyhedron_fixtures;
 
@@ -44,3 +46,5 @@ TEST_CASE("frustum_frustum: oracle, random and near-degenerate", "[frustum_frust
 TEST_CASE("frustum_frustum: rewrites of both shapes and exact translations give the same answer", "[frustum_frustum]") {
     support::halfspace_symmetries<frustum3, frustum3>("frustum_frustum", support::cases(5000));
 }
+
+} // namespace test_query_frustum_frustum

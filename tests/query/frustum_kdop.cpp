@@ -16,6 +16,8 @@ import incidence;
 #include "../support/polyhedron_fixtures.hpp"
 #include "../support/kdop_fixtures.hpp"
 
+namespace test_query_frustum_kdop { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using namespace support::polyhedron_fixtures;
 
@@ -43,3 +45,5 @@ TEST_CASE("frustum_kdop: rewrites of the set and exact translations give the sam
     support::halfspace_symmetries<frustum3, kdop<14>>("frustum_kdop K = 14", support::cases(2500));
     support::halfspace_symmetries<frustum3, kdop<26>>("frustum_kdop K = 26", support::cases(2500));
 }
+
+} // namespace test_query_frustum_kdop

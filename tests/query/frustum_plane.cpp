@@ -16,6 +16,8 @@ import incidence;
 #include "../support/polyhedron_checks.hpp"
 #include "../support/polyhedron_fixtures.hpp"
 
+namespace test_query_frustum_plane { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using namespace support::polyhedron_fixtures;
 
@@ -45,3 +47,5 @@ TEST_CASE("frustum_plane: oracle, random and near-degenerate", "[frustum_plane][
 TEST_CASE("frustum_plane: rewrites of both shapes and exact translations give the same answer", "[frustum_plane]") {
     support::halfspace_symmetries<frustum3, plane3>("frustum_plane", support::cases(5000));
 }
+
+} // namespace test_query_frustum_plane

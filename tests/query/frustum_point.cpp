@@ -14,6 +14,8 @@ import incidence;
 #include "../support/polyhedron_checks.hpp"
 #include "../support/polyhedron_fixtures.hpp"
 
+namespace test_query_frustum_point { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using namespace support::polyhedron_fixtures;
 
@@ -40,3 +42,5 @@ TEST_CASE("frustum_point: rewrites of both shapes and exact translations give th
 TEST_CASE("frustum_point: contains", "[frustum_point][oracle]") {
     support::halfspace_contains_oracle<frustum3, point3>("frustum_point", support::cases(2000), approx_bound);
 }
+
+} // namespace test_query_frustum_point

@@ -14,6 +14,8 @@ import incidence;
 #include "../support/polyhedron_checks.hpp"
 #include "../support/polyhedron_fixtures.hpp"
 
+namespace test_query_frustum_ray { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using namespace support::polyhedron_fixtures;
 
@@ -35,3 +37,5 @@ TEST_CASE("frustum_ray: oracle, random and near-degenerate", "[frustum_ray][orac
 TEST_CASE("frustum_ray: rewrites of both shapes and exact translations give the same answer", "[frustum_ray]") {
     support::halfspace_symmetries<frustum3, ray3>("frustum_ray", support::cases(10000));
 }
+
+} // namespace test_query_frustum_ray

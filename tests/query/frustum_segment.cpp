@@ -14,6 +14,8 @@ import incidence;
 #include "../support/polyhedron_checks.hpp"
 #include "../support/polyhedron_fixtures.hpp"
 
+namespace test_query_frustum_segment { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using namespace support::polyhedron_fixtures;
 
@@ -39,3 +41,5 @@ TEST_CASE("frustum_segment: rewrites of both shapes and exact translations give 
 TEST_CASE("frustum_segment: contains", "[frustum_segment][oracle]") {
     support::halfspace_contains_oracle<frustum3, segment3>("frustum_segment", support::cases(2000), approx_bound);
 }
+
+} // namespace test_query_frustum_segment

@@ -16,6 +16,8 @@ import incidence;
 #include "../support/polyhedron_checks.hpp"
 #include "../support/polyhedron_fixtures.hpp"
 
+namespace test_query_frustum_triangle { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using namespace support::polyhedron_fixtures;
 
@@ -44,3 +46,5 @@ TEST_CASE("frustum_triangle: rewrites of both shapes and exact translations give
 TEST_CASE("frustum_triangle: contains", "[frustum_triangle][oracle]") {
     support::halfspace_contains_oracle<frustum3, triangle3>("frustum_triangle", support::cases(2000), approx_bound);
 }
+
+} // namespace test_query_frustum_triangle

@@ -18,6 +18,8 @@ import incidence;
 #include "../support/kdop_checks.hpp"
 #include "../support/kdop_fixtures.hpp"
 
+namespace test_query_kdop_kdop { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::corner_cut;
 using support::edge_cut;
@@ -121,3 +123,5 @@ TEST_CASE("kdop_kdop: the cases reach pairs that slab overlap alone gets wrong",
     CHECK(count.template operator()<18>() > 0);
     CHECK(count.template operator()<26>() > 0);
 }
+
+} // namespace test_query_kdop_kdop

@@ -15,6 +15,8 @@ import incidence;
 #include "../support/kdop_checks.hpp"
 #include "../support/kdop_fixtures.hpp"
 
+namespace test_query_kdop_plane { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::corner_cut;
 using support::empty14;
@@ -46,3 +48,5 @@ TEST_CASE("kdop_plane: oracle, random and near-degenerate, K = 6, 14, 18, 26", "
 TEST_CASE("kdop_plane: rewrites of the other shape and exact translations give the same answer", "[kdop_plane]") {
     support::kdop_symmetries_every_k<plane3>("kdop_plane", support::cases(2000));
 }
+
+} // namespace test_query_kdop_plane

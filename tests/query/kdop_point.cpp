@@ -16,6 +16,8 @@ import incidence;
 #include "../support/kdop_checks.hpp"
 #include "../support/kdop_fixtures.hpp"
 
+namespace test_query_kdop_point { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::corner_cut;
 using support::edge_cut;
@@ -54,3 +56,5 @@ TEST_CASE("kdop_point: rewrites of the other shape and exact translations give t
     const long n = support::cases(5000);
     support::kdop_symmetries_every_k<point3>("kdop_point", n);
 }
+
+} // namespace test_query_kdop_point

@@ -16,6 +16,8 @@ import incidence;
 #include "../support/kdop_checks.hpp"
 #include "../support/kdop_fixtures.hpp"
 
+namespace test_query_kdop_ray { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::corner_cut;
 using support::edge_cut;
@@ -45,3 +47,5 @@ TEST_CASE("kdop_ray: rewrites of the other shape and exact translations give the
     const long n = support::cases(5000);
     support::kdop_symmetries_every_k<ray3>("kdop_ray", n);
 }
+
+} // namespace test_query_kdop_ray

@@ -16,6 +16,8 @@ import incidence;
 #include "../support/kdop_checks.hpp"
 #include "../support/kdop_fixtures.hpp"
 
+namespace test_query_kdop_segment { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::corner_cut;
 using support::edge_cut;
@@ -46,3 +48,5 @@ TEST_CASE("kdop_segment: rewrites of the other shape and exact translations give
     const long n = support::cases(5000);
     support::kdop_symmetries_every_k<segment3>("kdop_segment", n);
 }
+
+} // namespace test_query_kdop_segment

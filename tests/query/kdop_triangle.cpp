@@ -15,6 +15,8 @@ import incidence;
 #include "../support/kdop_checks.hpp"
 #include "../support/kdop_fixtures.hpp"
 
+namespace test_query_kdop_triangle { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::corner_cut;
 using support::empty14;
@@ -47,3 +49,5 @@ TEST_CASE("kdop_triangle: contains", "[kdop_triangle][oracle]") {
     support::kdop_contains_oracle<14, triangle3>("kdop_triangle", support::cases(2000), approx_bound);
     support::kdop_contains_oracle<26, triangle3>("kdop_triangle", support::cases(1000), approx_bound);
 }
+
+} // namespace test_query_kdop_triangle

@@ -8,6 +8,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_line2_line2 { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -36,3 +38,5 @@ TEST_CASE("line2_line2: oracle, random and near-degenerate", "[line2_line2][orac
 TEST_CASE("line2_line2: rewrites of either shape and exact translations give the same answer", "[line2_line2]") {
     support::flat_symmetries<line2, line2>("line2_line2", support::cases(20000));
 }
+
+} // namespace test_query_line2_line2

@@ -8,6 +8,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_line2_point2 { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -27,3 +29,5 @@ TEST_CASE("line2_point2: oracle, random and near-degenerate", "[line2_point2][or
 TEST_CASE("line2_point2: rewrites of either shape and exact translations give the same answer", "[line2_point2]") {
     support::flat_symmetries<line2, point2>("line2_point2", support::cases(20000));
 }
+
+} // namespace test_query_line2_point2

@@ -16,6 +16,8 @@ import incidence;
 #include "../support/polygon_checks.hpp"
 #include "../support/polygon_fixtures.hpp"
 
+namespace test_query_line2_polygon2 { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::c_shape;
 using support::frame;
@@ -40,3 +42,5 @@ TEST_CASE("line2_polygon2: oracle, random and near-degenerate", "[line2_polygon2
 TEST_CASE("line2_polygon2: rewrites of either shape and exact translations give the same answer", "[line2_polygon2]") {
     support::polygon_symmetries<line2>("line2_polygon2", support::cases(20000));
 }
+
+} // namespace test_query_line2_polygon2

@@ -8,6 +8,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_line2_ray2 { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -28,3 +30,5 @@ TEST_CASE("line2_ray2: oracle, random and near-degenerate", "[line2_ray2][oracle
 TEST_CASE("line2_ray2: rewrites of either shape and exact translations give the same answer", "[line2_ray2]") {
     support::flat_symmetries<line2, ray2>("line2_ray2", support::cases(20000));
 }
+
+} // namespace test_query_line2_ray2

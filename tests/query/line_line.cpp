@@ -9,6 +9,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_line_line { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -31,3 +33,5 @@ TEST_CASE("line_line: oracle, random and near-degenerate", "[line_line][oracle]"
 TEST_CASE("line_line: rewrites of either shape and exact translations give the same answer", "[line_line]") {
     support::flat_symmetries<line3, line3>("line_line", support::cases(20000));
 }
+
+} // namespace test_query_line_line

@@ -15,6 +15,8 @@ import incidence;
 #include "../support/mesh_checks.hpp"
 #include "../support/mesh_fixtures.hpp"
 
+namespace test_query_line_mesh { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::cube;
 using support::dented;
@@ -35,3 +37,5 @@ TEST_CASE("line_mesh: oracle, random and near-degenerate", "[line_mesh][oracle]"
 TEST_CASE("line_mesh: rewrites of either shape and exact translations give the same answer", "[line_mesh]") {
     support::mesh_symmetries<line3>("line_mesh", support::cases(20000));
 }
+
+} // namespace test_query_line_mesh

@@ -9,6 +9,8 @@ import incidence;
 #include "../support/obb_cases.hpp"
 #include "../support/obb_check.hpp"
 
+namespace test_query_line_obb { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -34,3 +36,5 @@ TEST_CASE("line_obb: oracle", "[line_obb][oracle]") {
 TEST_CASE("line_obb: rewritten shapes give the same answer", "[line_obb]") {
     support::run_rewritten<line3, obb3>("line_obb", support::cases(20000), near_case, random_case, variants);
 }
+
+} // namespace test_query_line_obb

@@ -9,6 +9,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_line_plane { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -31,3 +33,5 @@ TEST_CASE("line_plane: oracle, random and near-degenerate", "[line_plane][oracle
 TEST_CASE("line_plane: rewrites of either shape and exact translations give the same answer", "[line_plane]") {
     support::flat_symmetries<line3, plane3>("line_plane", support::cases(20000));
 }
+
+} // namespace test_query_line_plane

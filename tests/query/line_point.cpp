@@ -9,6 +9,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_line_point { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -29,3 +31,5 @@ TEST_CASE("line_point: oracle, random and near-degenerate", "[line_point][oracle
 TEST_CASE("line_point: rewrites of either shape and exact translations give the same answer", "[line_point]") {
     support::flat_symmetries<line3, point3>("line_point", support::cases(200000)); // about 0.2% of the cases meet
 }
+
+} // namespace test_query_line_point

@@ -9,6 +9,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_line_ray { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -38,3 +40,5 @@ TEST_CASE("line_ray: oracle, random and near-degenerate", "[line_ray][oracle]") 
 TEST_CASE("line_ray: rewrites of either shape and exact translations give the same answer", "[line_ray]") {
     support::flat_symmetries<line3, ray3>("line_ray", support::cases(20000));
 }
+
+} // namespace test_query_line_ray

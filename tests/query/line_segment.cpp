@@ -9,6 +9,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_line_segment { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -30,3 +32,5 @@ TEST_CASE("line_segment: oracle, random and near-degenerate", "[line_segment][or
 TEST_CASE("line_segment: rewrites of either shape and exact translations give the same answer", "[line_segment]") {
     support::flat_symmetries<line3, segment3>("line_segment", support::cases(20000));
 }
+
+} // namespace test_query_line_segment

@@ -12,6 +12,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_line_tetrahedron { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -38,3 +40,5 @@ TEST_CASE("line_tetrahedron: oracle, random and near-degenerate", "[line_tetrahe
 TEST_CASE("line_tetrahedron: rewrites of either shape and exact translations give the same answer", "[line_tetrahedron]") {
     support::flat_symmetries<line3, tetrahedron3>("line_tetrahedron", support::cases(20000));
 }
+
+} // namespace test_query_line_tetrahedron

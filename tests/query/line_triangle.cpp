@@ -9,6 +9,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_line_triangle { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -32,3 +34,5 @@ TEST_CASE("line_triangle: oracle, random and near-degenerate", "[line_triangle][
 TEST_CASE("line_triangle: rewrites of either shape and exact translations give the same answer", "[line_triangle]") {
     support::flat_symmetries<line3, triangle3>("line_triangle", support::cases(20000));
 }
+
+} // namespace test_query_line_triangle

@@ -14,6 +14,8 @@ import incidence;
 #include "../support/mesh_checks.hpp"
 #include "../support/mesh_fixtures.hpp"
 
+namespace test_query_mesh_mesh { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::cube;
 using support::dented;
@@ -38,3 +40,5 @@ TEST_CASE("mesh_mesh: oracle, random and near-degenerate", "[mesh_mesh][oracle]"
 TEST_CASE("mesh_mesh: rewrites of either shape give the same answer", "[mesh_mesh]") {
     support::mesh_symmetries<mesh3>("mesh_mesh", support::cases(20000));
 }
+
+} // namespace test_query_mesh_mesh

@@ -13,6 +13,8 @@ import incidence;
 #include "../support/mesh_checks.hpp"
 #include "../support/mesh_fixtures.hpp"
 
+namespace test_query_mesh_obb { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::cube;
 using support::dented;
@@ -35,3 +37,5 @@ TEST_CASE("mesh_obb: oracle, random and near-degenerate", "[mesh_obb][oracle]") 
 TEST_CASE("mesh_obb: rewrites of either shape give the same answer", "[mesh_obb]") {
     support::mesh_symmetries<obb3>("mesh_obb", support::cases(20000));
 }
+
+} // namespace test_query_mesh_obb

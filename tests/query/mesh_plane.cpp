@@ -15,6 +15,8 @@ import incidence;
 #include "../support/mesh_checks.hpp"
 #include "../support/mesh_fixtures.hpp"
 
+namespace test_query_mesh_plane { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::cube;
 using support::dented;
@@ -37,3 +39,5 @@ TEST_CASE("mesh_plane: oracle, random and near-degenerate", "[mesh_plane][oracle
 TEST_CASE("mesh_plane: rewrites of either shape and exact translations give the same answer", "[mesh_plane]") {
     support::mesh_symmetries<plane3>("mesh_plane", support::cases(20000));
 }
+
+} // namespace test_query_mesh_plane

@@ -16,6 +16,8 @@ import incidence;
 #include "../support/mesh_checks.hpp"
 #include "../support/mesh_fixtures.hpp"
 
+namespace test_query_mesh_point { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::cube;
 using support::dented;
@@ -53,3 +55,5 @@ TEST_CASE("mesh_point: oracle, random and near-degenerate", "[mesh_point][oracle
 TEST_CASE("mesh_point: rewrites of either shape and exact translations give the same answer", "[mesh_point]") {
     support::mesh_symmetries<point3>("mesh_point", support::cases(20000));
 }
+
+} // namespace test_query_mesh_point

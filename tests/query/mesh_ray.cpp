@@ -15,6 +15,8 @@ import incidence;
 #include "../support/mesh_checks.hpp"
 #include "../support/mesh_fixtures.hpp"
 
+namespace test_query_mesh_ray { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::cube;
 using support::dented;
@@ -36,3 +38,5 @@ TEST_CASE("mesh_ray: oracle, random and near-degenerate", "[mesh_ray][oracle]") 
 TEST_CASE("mesh_ray: rewrites of either shape and exact translations give the same answer", "[mesh_ray]") {
     support::mesh_symmetries<ray3>("mesh_ray", support::cases(20000));
 }
+
+} // namespace test_query_mesh_ray

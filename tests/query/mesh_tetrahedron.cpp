@@ -15,6 +15,8 @@ import incidence;
 #include "../support/mesh_checks.hpp"
 #include "../support/mesh_fixtures.hpp"
 
+namespace test_query_mesh_tetrahedron { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::cube;
 using support::dented;
@@ -35,3 +37,5 @@ TEST_CASE("mesh_tetrahedron: oracle, random and near-degenerate", "[mesh_tetrahe
 TEST_CASE("mesh_tetrahedron: rewrites of either shape and exact translations give the same answer", "[mesh_tetrahedron]") {
     support::mesh_symmetries<tetrahedron3>("mesh_tetrahedron", support::cases(20000));
 }
+
+} // namespace test_query_mesh_tetrahedron

@@ -14,6 +14,8 @@ import incidence;
 #include "../support/mesh_checks.hpp"
 #include "../support/mesh_fixtures.hpp"
 
+namespace test_query_mesh_triangle { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::cube;
 using support::dented;
@@ -35,3 +37,5 @@ TEST_CASE("mesh_triangle: oracle, random and near-degenerate", "[mesh_triangle][
 TEST_CASE("mesh_triangle: rewrites of either shape and exact translations give the same answer", "[mesh_triangle]") {
     support::mesh_symmetries<triangle3>("mesh_triangle", support::cases(20000));
 }
+
+} // namespace test_query_mesh_triangle

@@ -11,6 +11,8 @@ import incidence;
 #include "../support/obb_cases.hpp"
 #include "../support/obb_check.hpp"
 
+namespace test_query_obb_obb { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -48,3 +50,5 @@ TEST_CASE("obb_obb: oracle", "[obb_obb][oracle]") {
 TEST_CASE("obb_obb: rewritten boxes and swapped arguments give the same answer", "[obb_obb]") {
     support::run_rewritten<obb3, obb3>("obb_obb", support::cases(20000), near_case, random_case, variants);
 }
+
+} // namespace test_query_obb_obb

@@ -9,6 +9,8 @@ import incidence;
 #include "../support/obb_cases.hpp"
 #include "../support/obb_check.hpp"
 
+namespace test_query_obb_plane { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -35,3 +37,5 @@ TEST_CASE("obb_plane: oracle", "[obb_plane][oracle]") {
 TEST_CASE("obb_plane: rewritten shapes give the same answer", "[obb_plane]") {
     support::run_rewritten<obb3, plane3>("obb_plane", support::cases(20000), near_case, random_case, variants);
 }
+
+} // namespace test_query_obb_plane

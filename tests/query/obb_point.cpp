@@ -9,6 +9,8 @@ import incidence;
 #include "../support/obb_cases.hpp"
 #include "../support/obb_check.hpp"
 
+namespace test_query_obb_point { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -34,3 +36,5 @@ TEST_CASE("obb_point: oracle", "[obb_point][oracle]") {
 TEST_CASE("obb_point: rewritten shapes give the same answer", "[obb_point]") {
     support::run_rewritten<obb3, point3>("obb_point", support::cases(20000), near_case, random_case, variants);
 }
+
+} // namespace test_query_obb_point

@@ -9,6 +9,8 @@ import incidence;
 #include "../support/obb_cases.hpp"
 #include "../support/obb_check.hpp"
 
+namespace test_query_obb_ray { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -34,3 +36,5 @@ TEST_CASE("obb_ray: oracle", "[obb_ray][oracle]") {
 TEST_CASE("obb_ray: rewritten shapes give the same answer", "[obb_ray]") {
     support::run_rewritten<obb3, ray3>("obb_ray", support::cases(20000), near_case, random_case, variants);
 }
+
+} // namespace test_query_obb_ray

@@ -10,6 +10,8 @@ import incidence;
 #include "../support/obb_cases.hpp"
 #include "../support/obb_check.hpp"
 
+namespace test_query_obb_segment { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -36,3 +38,5 @@ TEST_CASE("obb_segment: oracle", "[obb_segment][oracle]") {
 TEST_CASE("obb_segment: rewritten shapes give the same answer", "[obb_segment]") {
     support::run_rewritten<obb3, segment3>("obb_segment", support::cases(20000), near_case, random_case, variants);
 }
+
+} // namespace test_query_obb_segment

@@ -11,6 +11,8 @@ import incidence;
 #include "../support/obb_cases.hpp"
 #include "../support/obb_check.hpp"
 
+namespace test_query_obb_tetrahedron { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -46,3 +48,5 @@ TEST_CASE("obb_tetrahedron: oracle", "[obb_tetrahedron][oracle]") {
 TEST_CASE("obb_tetrahedron: rewritten shapes give the same answer", "[obb_tetrahedron]") {
     support::run_rewritten<obb3, tetrahedron3>("obb_tetrahedron", support::cases(20000), near_case, random_case, variants);
 }
+
+} // namespace test_query_obb_tetrahedron

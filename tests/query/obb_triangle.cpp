@@ -10,6 +10,8 @@ import incidence;
 #include "../support/obb_cases.hpp"
 #include "../support/obb_check.hpp"
 
+namespace test_query_obb_triangle { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -36,3 +38,5 @@ TEST_CASE("obb_triangle: oracle", "[obb_triangle][oracle]") {
 TEST_CASE("obb_triangle: rewritten shapes give the same answer", "[obb_triangle]") {
     support::run_rewritten<obb3, triangle3>("obb_triangle", support::cases(20000), near_case, random_case, variants);
 }
+
+} // namespace test_query_obb_triangle

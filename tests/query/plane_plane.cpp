@@ -9,6 +9,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_plane_plane { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -31,3 +33,5 @@ TEST_CASE("plane_plane: oracle, random and near-degenerate", "[plane_plane][orac
 TEST_CASE("plane_plane: rewrites of either shape and exact translations give the same answer", "[plane_plane]") {
     support::flat_symmetries<plane3, plane3>("plane_plane", support::cases(20000));
 }
+
+} // namespace test_query_plane_plane

@@ -9,6 +9,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_plane_point { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -29,3 +31,5 @@ TEST_CASE("plane_point: oracle, random and near-degenerate", "[plane_point][orac
 TEST_CASE("plane_point: rewrites of either shape and exact translations give the same answer", "[plane_point]") {
     support::flat_symmetries<plane3, point3>("plane_point", support::cases(20000));
 }
+
+} // namespace test_query_plane_point

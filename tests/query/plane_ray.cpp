@@ -9,6 +9,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_plane_ray { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -31,3 +33,5 @@ TEST_CASE("plane_ray: oracle, random and near-degenerate", "[plane_ray][oracle]"
 TEST_CASE("plane_ray: rewrites of either shape and exact translations give the same answer", "[plane_ray]") {
     support::flat_symmetries<plane3, ray3>("plane_ray", support::cases(20000));
 }
+
+} // namespace test_query_plane_ray

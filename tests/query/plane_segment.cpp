@@ -8,6 +8,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/plane_cases.hpp"
 
+namespace test_query_plane_segment { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::arr;
 
@@ -61,3 +63,5 @@ TEST_CASE("plane_segment: reversed end points and the flipped plane give the sam
     std::printf("[cases] plane_segment symmetries: %ld, %ld differ\n", n, bad);
     CHECK(bad == 0);
 }
+
+} // namespace test_query_plane_segment

@@ -11,6 +11,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_plane_tetrahedron { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -37,3 +39,5 @@ TEST_CASE("plane_tetrahedron: oracle, random and near-degenerate", "[plane_tetra
 TEST_CASE("plane_tetrahedron: rewrites of either shape and exact translations give the same answer", "[plane_tetrahedron]") {
     support::flat_symmetries<plane3, tetrahedron3>("plane_tetrahedron", support::cases(20000));
 }
+
+} // namespace test_query_plane_tetrahedron

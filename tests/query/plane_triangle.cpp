@@ -8,6 +8,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/plane_cases.hpp"
 
+namespace test_query_plane_triangle { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::arr;
 
@@ -68,3 +70,5 @@ TEST_CASE("plane_triangle: vertex order and the flipped plane give the same answ
     std::printf("[cases] plane_triangle symmetries: %ld, %ld differ\n", n, bad);
     CHECK(bad == 0);
 }
+
+} // namespace test_query_plane_triangle

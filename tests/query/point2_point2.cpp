@@ -8,6 +8,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_point2_point2 { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -25,3 +27,5 @@ TEST_CASE("point2_point2: oracle, random and near-degenerate", "[point2_point2][
 TEST_CASE("point2_point2: rewrites of either shape and exact translations give the same answer", "[point2_point2]") {
     support::flat_symmetries<point2, point2>("point2_point2", support::cases(20000));
 }
+
+} // namespace test_query_point2_point2

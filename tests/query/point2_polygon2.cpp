@@ -18,6 +18,8 @@ import incidence;
 #include "../support/polygon_checks.hpp"
 #include "../support/polygon_fixtures.hpp"
 
+namespace test_query_point2_polygon2 { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::c_shape;
 using support::frame;
@@ -74,3 +76,5 @@ TEST_CASE("point2_polygon2: oracle, random and near-degenerate", "[point2_polygo
 TEST_CASE("point2_polygon2: rewrites of either shape and exact translations give the same answer", "[point2_polygon2]") {
     support::polygon_symmetries<point2>("point2_polygon2", support::cases(20000));
 }
+
+} // namespace test_query_point2_polygon2

@@ -8,6 +8,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_point2_ray2 { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -28,3 +30,5 @@ TEST_CASE("point2_ray2: oracle, random and near-degenerate", "[point2_ray2][orac
 TEST_CASE("point2_ray2: rewrites of either shape and exact translations give the same answer", "[point2_ray2]") {
     support::flat_symmetries<point2, ray2>("point2_ray2", support::cases(20000));
 }
+
+} // namespace test_query_point2_ray2

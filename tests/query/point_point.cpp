@@ -9,6 +9,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_point_point { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -27,3 +29,5 @@ TEST_CASE("point_point: oracle, random and near-degenerate", "[point_point][orac
 TEST_CASE("point_point: rewrites of either shape and exact translations give the same answer", "[point_point]") {
     support::flat_symmetries<point3, point3>("point_point", support::cases(200000)); // about 0.2% of the cases meet
 }
+
+} // namespace test_query_point_point

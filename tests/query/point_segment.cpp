@@ -9,6 +9,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_point_segment { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -29,3 +31,5 @@ TEST_CASE("point_segment: oracle, random and near-degenerate", "[point_segment][
 TEST_CASE("point_segment: rewrites of either shape and exact translations give the same answer", "[point_segment]") {
     support::flat_symmetries<point3, segment3>("point_segment", support::cases(200000)); // about 0.2% of the cases meet
 }
+
+} // namespace test_query_point_segment

@@ -7,6 +7,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/sphere_points.hpp"
 
+namespace test_query_point_sphere { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::arr;
 
@@ -50,3 +52,5 @@ TEST_CASE("point_sphere: oracle, random", "[point_sphere][oracle]") {
 TEST_CASE("point_sphere: oracle, near-degenerate", "[point_sphere][oracle]") {
     support::run_oracle("point_sphere near-degenerate", support::cases(100000), approx_bound, near_case, truth, skip, describe);
 }
+
+} // namespace test_query_point_sphere

@@ -12,6 +12,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_point_tetrahedron { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -63,3 +65,5 @@ TEST_CASE("point_tetrahedron: contains against the oracle", "[point_tetrahedron]
 TEST_CASE("point_tetrahedron: rewrites of either shape and exact translations give the same answer", "[point_tetrahedron]") {
     support::flat_symmetries<point3, tetrahedron3>("point_tetrahedron", support::cases(20000));
 }
+
+} // namespace test_query_point_tetrahedron

@@ -9,6 +9,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_point_triangle { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -31,3 +33,5 @@ TEST_CASE("point_triangle: oracle, random and near-degenerate", "[point_triangle
 TEST_CASE("point_triangle: rewrites of either shape and exact translations give the same answer", "[point_triangle]") {
     support::flat_symmetries<point3, triangle3>("point_triangle", support::cases(20000));
 }
+
+} // namespace test_query_point_triangle

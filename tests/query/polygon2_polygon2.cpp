@@ -16,6 +16,8 @@ import incidence;
 #include "../support/polygon_checks.hpp"
 #include "../support/polygon_fixtures.hpp"
 
+namespace test_query_polygon2_polygon2 { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::c_shape;
 using support::frame;
@@ -44,3 +46,5 @@ TEST_CASE("polygon2_polygon2: oracle, random and near-degenerate", "[polygon2_po
 TEST_CASE("polygon2_polygon2: rewrites of either shape and exact translations give the same answer", "[polygon2_polygon2]") {
     support::polygon_symmetries<polygon2>("polygon2_polygon2", support::cases(20000));
 }
+
+} // namespace test_query_polygon2_polygon2

@@ -16,6 +16,8 @@ import incidence;
 #include "../support/polygon_checks.hpp"
 #include "../support/polygon_fixtures.hpp"
 
+namespace test_query_polygon2_ray2 { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::c_shape;
 using support::frame;
@@ -42,3 +44,5 @@ TEST_CASE("polygon2_ray2: oracle, random and near-degenerate", "[polygon2_ray2][
 TEST_CASE("polygon2_ray2: rewrites of either shape and exact translations give the same answer", "[polygon2_ray2]") {
     support::polygon_symmetries<ray2>("polygon2_ray2", support::cases(20000));
 }
+
+} // namespace test_query_polygon2_ray2

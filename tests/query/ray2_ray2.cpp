@@ -8,6 +8,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_ray2_ray2 { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -29,3 +31,5 @@ TEST_CASE("ray2_ray2: oracle, random and near-degenerate", "[ray2_ray2][oracle]"
 TEST_CASE("ray2_ray2: rewrites of either shape and exact translations give the same answer", "[ray2_ray2]") {
     support::flat_symmetries<ray2, ray2>("ray2_ray2", support::cases(20000));
 }
+
+} // namespace test_query_ray2_ray2

@@ -8,6 +8,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_ray2_segment2 { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -28,3 +30,5 @@ TEST_CASE("ray2_segment2: oracle, random and near-degenerate", "[ray2_segment2][
 TEST_CASE("ray2_segment2: rewrites of either shape and exact translations give the same answer", "[ray2_segment2]") {
     support::flat_symmetries<ray2, segment2>("ray2_segment2", support::cases(20000));
 }
+
+} // namespace test_query_ray2_segment2

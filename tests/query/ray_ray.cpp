@@ -9,6 +9,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_ray_ray { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -37,3 +39,5 @@ TEST_CASE("ray_ray: oracle, random and near-degenerate", "[ray_ray][oracle]") {
 TEST_CASE("ray_ray: rewrites of either shape and exact translations give the same answer", "[ray_ray]") {
     support::flat_symmetries<ray3, ray3>("ray_ray", support::cases(20000));
 }
+
+} // namespace test_query_ray_ray

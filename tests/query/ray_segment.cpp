@@ -9,6 +9,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_ray_segment { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -30,3 +32,5 @@ TEST_CASE("ray_segment: oracle, random and near-degenerate", "[ray_segment][orac
 TEST_CASE("ray_segment: rewrites of either shape and exact translations give the same answer", "[ray_segment]") {
     support::flat_symmetries<ray3, segment3>("ray_segment", support::cases(20000));
 }
+
+} // namespace test_query_ray_segment

@@ -9,6 +9,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/sphere_points.hpp"
 
+namespace test_query_ray_sphere { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::arr;
 
@@ -106,3 +108,5 @@ TEST_CASE("ray_sphere: exact first hit is correctly rounded; algebraic method ag
     CHECK(bad == 0);
     CHECK(algebraic_outside == 0);
 }
+
+} // namespace test_query_ray_sphere

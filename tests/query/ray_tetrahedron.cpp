@@ -12,6 +12,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_ray_tetrahedron { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -39,3 +41,5 @@ TEST_CASE("ray_tetrahedron: oracle, random and near-degenerate", "[ray_tetrahedr
 TEST_CASE("ray_tetrahedron: rewrites of either shape and exact translations give the same answer", "[ray_tetrahedron]") {
     support::flat_symmetries<ray3, tetrahedron3>("ray_tetrahedron", support::cases(20000));
 }
+
+} // namespace test_query_ray_tetrahedron

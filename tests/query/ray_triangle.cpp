@@ -6,6 +6,8 @@ import incidence;
 #include "../support/testing.hpp"
 #include "../support/check.hpp"
 
+namespace test_query_ray_triangle { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -198,3 +200,5 @@ TEST_CASE("ray_triangle: coplanar rays report their first contact, correctly rou
     CHECK(hits > support::cases(20000) / 20); // the generator must actually produce coplanar hits
     CHECK(bad == 0);
 }
+
+} // namespace test_query_ray_triangle

@@ -8,6 +8,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_segment2_segment2 { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -30,3 +32,5 @@ TEST_CASE("segment2_segment2: oracle, random and near-degenerate", "[segment2_se
 TEST_CASE("segment2_segment2: rewrites of either shape and exact translations give the same answer", "[segment2_segment2]") {
     support::flat_symmetries<segment2, segment2>("segment2_segment2", support::cases(20000));
 }
+
+} // namespace test_query_segment2_segment2

@@ -9,6 +9,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_segment_segment { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -32,3 +34,5 @@ TEST_CASE("segment_segment: oracle, random and near-degenerate", "[segment_segme
 TEST_CASE("segment_segment: rewrites of either shape and exact translations give the same answer", "[segment_segment]") {
     support::flat_symmetries<segment3, segment3>("segment_segment", support::cases(20000));
 }
+
+} // namespace test_query_segment_segment

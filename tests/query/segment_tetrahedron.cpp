@@ -12,6 +12,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_segment_tetrahedron { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -40,3 +42,5 @@ TEST_CASE("segment_tetrahedron: oracle, random and near-degenerate", "[segment_t
 TEST_CASE("segment_tetrahedron: rewrites of either shape and exact translations give the same answer", "[segment_tetrahedron]") {
     support::flat_symmetries<segment3, tetrahedron3>("segment_tetrahedron", support::cases(20000));
 }
+
+} // namespace test_query_segment_tetrahedron

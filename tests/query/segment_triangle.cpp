@@ -6,6 +6,8 @@ import incidence;
 #include "../support/testing.hpp"
 #include "../support/check.hpp"
 
+namespace test_query_segment_triangle { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::arr;
 
@@ -90,3 +92,5 @@ TEST_CASE("segment_triangle: exact first contact t is correctly rounded", "[segm
                         },
                         describe);
 }
+
+} // namespace test_query_segment_triangle

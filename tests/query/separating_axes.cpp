@@ -7,6 +7,8 @@ import incidence;
 #include "../support/testing.hpp"
 #include "../support/obb_cases.hpp"
 
+namespace test_query_separating_axes { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 namespace sat = incidence::pair::sat;
 
@@ -55,3 +57,5 @@ TEST_CASE("separating_axes: configurations that need the extra axes", "[separati
         CHECK(intersects(c[0], c[1].center) == oracle::lp_intersect(support::lp(c[0]), support::lp(c[1].center)));
     }
 }
+
+} // namespace test_query_separating_axes

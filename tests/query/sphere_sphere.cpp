@@ -8,6 +8,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/sphere_points.hpp"
 
+namespace test_query_sphere_sphere { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::arr;
 
@@ -87,3 +89,5 @@ TEST_CASE("sphere_sphere: contains, every tier against the oracle", "[sphere_sph
     CHECK(t.classify_wrong == 0);
     CHECK(t.approx_outside_bound == 0);
 }
+
+} // namespace test_query_sphere_sphere

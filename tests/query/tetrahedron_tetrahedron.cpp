@@ -11,6 +11,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_tetrahedron_tetrahedron { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -39,3 +41,5 @@ TEST_CASE("tetrahedron_tetrahedron: oracle, random and near-degenerate", "[tetra
 TEST_CASE("tetrahedron_tetrahedron: rewrites of either shape and exact translations give the same answer", "[tetrahedron_tetrahedron]") {
     support::flat_symmetries<tetrahedron3, tetrahedron3>("tetrahedron_tetrahedron", support::cases(20000));
 }
+
+} // namespace test_query_tetrahedron_tetrahedron

@@ -12,6 +12,8 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
 
+namespace test_query_tetrahedron_triangle { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -39,3 +41,5 @@ TEST_CASE("tetrahedron_triangle: oracle, random and near-degenerate", "[tetrahed
 TEST_CASE("tetrahedron_triangle: rewrites of either shape and exact translations give the same answer", "[tetrahedron_triangle]") {
     support::flat_symmetries<tetrahedron3, triangle3>("tetrahedron_triangle", support::cases(20000));
 }
+
+} // namespace test_query_tetrahedron_triangle

@@ -7,6 +7,8 @@ import incidence;
 #include "../support/testing.hpp"
 #include "../support/check.hpp"
 
+namespace test_query_triangle_triangle { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 using support::arr;
 
@@ -102,3 +104,5 @@ TEST_CASE("triangle_triangle: vertex rotation and reversed winding give the same
     std::printf("[cases] triangle_triangle permutations: %ld, %ld differ\n", n, bad);
     CHECK(bad == 0);
 }
+
+} // namespace test_query_triangle_triangle

@@ -8,6 +8,8 @@
 #include <string>
 import incidence;
 
+namespace test_shapes_shapes { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
 using namespace incidence;
 
 namespace {
@@ -115,3 +117,5 @@ TEST_CASE("shapes: accepted shapes keep their members, and make() is constexpr",
     static_assert(triangle3::make({0, 0, 0}, {1, 0, 0}, {0, 1, 0}).has_value());
     static_assert(!triangle3::make({0, 0, 0}, {1, 0, 0}, {2, 0, 0}).has_value());
 }
+
+} // namespace test_shapes_shapes
