@@ -15,6 +15,8 @@ void register_halfspace(bool near) {
     kdop_tiers<14, plane3>("kdop_plane", near);
     kdop_tiers<14, triangle3>("kdop_triangle", near);
     kdop_tiers<26, triangle3>("kdop_triangle", near);
+    kdop_tiers<14, tetrahedron3>("kdop_tetrahedron", near);
+    kdop_tiers<26, tetrahedron3>("kdop_tetrahedron", near);
     kdop_tiers<26, plane3>("kdop_plane", near);
     halfspace_tiers<convex_polyhedron3, point3>("convex_polyhedron_point", near);
     halfspace_tiers<convex_polyhedron3, segment3>("convex_polyhedron_segment", near);
@@ -31,6 +33,8 @@ void register_halfspace(bool near) {
     halfspace_tiers<frustum3, frustum3>("frustum_frustum", near);
     halfspace_tiers<convex_polyhedron3, triangle3>("convex_polyhedron_triangle", near);
     halfspace_tiers<frustum3, triangle3>("frustum_triangle", near);
+    halfspace_tiers<convex_polyhedron3, tetrahedron3>("convex_polyhedron_tetrahedron", near);
+    halfspace_tiers<frustum3, tetrahedron3>("frustum_tetrahedron", near);
     halfspace_tiers<convex_polyhedron3, kdop<14>>("convex_polyhedron_kdop_14", near);
     halfspace_tiers<convex_polyhedron3, kdop<26>>("convex_polyhedron_kdop_26", near);
     halfspace_tiers<frustum3, kdop<14>>("frustum_kdop_14", near);

@@ -12,5 +12,8 @@ void register_mesh(bool near) {
     mesh_tiers<tetrahedron3>("mesh_tetrahedron", near);
     mesh_tiers<aabb3>("aabb_mesh", near);
     mesh_tiers<mesh3>("mesh_mesh", near);
+    mesh_tiers<convex_polyhedron3>("convex_polyhedron_mesh", near);
+    mesh_tiers<frustum3>("frustum_mesh", near);
+    mesh_tiers<kdop<14>>("kdop_mesh", near);
 }
 } // namespace bench

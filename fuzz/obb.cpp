@@ -11,8 +11,8 @@
 // frustum_point, _segment, _ray, _line with six; aabb_convex_polyhedron and aabb_frustum;
 // convex_polyhedron_plane and frustum_plane; convex_polyhedron_convex_polyhedron,
 // convex_polyhedron_frustum, convex_polyhedron_kdop, frustum_kdop and frustum_frustum;
-// convex_polyhedron_triangle, frustum_triangle and kdop_triangle;
-// contains(., point | segment | box)), against the LP with the half-spaces as rows. Any finding
+// convex_polyhedron_triangle, frustum_triangle and kdop_triangle; convex_polyhedron_tetrahedron,
+// frustum_tetrahedron and kdop_tetrahedron; contains(., point | segment | triangle | tetrahedron | box)), against the LP with the half-spaces as rows. Any finding
 // aborts.
 #include "../tests/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
@@ -40,6 +40,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const ray3 ray{p, d};
     const line3 line{p, d};
     const triangle3 tri{p, q, point3{v[12], v[13], v[14]}};
+    const tetrahedron3 tet{p, q, point3{v[12], v[13], v[14]}, point3{v[15], v[16], v[17]}};
     const aabb3 box{p, q}; // may be inverted: empty
     const plane3 pl{d, v[21]};
     // Every tier must finish on any bits.
@@ -131,6 +132,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         check(kd, pl);
         check(kd, tri);
         if (contains(kd, tri) != (intersects(kd, tri.a) && intersects(kd, tri.b) && intersects(kd, tri.c))) std::abort();
+        check(kd, tet);
+        if (contains(kd, tet) != (intersects(kd, tet.a) && intersects(kd, tet.b) && intersects(kd, tet.c) && intersects(kd, tet.d))) std::abort();
         if (contains(kd, p) != intersects(kd, p)) std::abort();
         // two k-DOPs (the same K, and a 14-DOP), a box: slab overlap and the Farkas certificates
         kdop<K> kd2{};
@@ -159,6 +162,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         check(h, pl); // the feasibility test of possibly unbounded sets
         check(h, tri); // the triangle's edges, then the set's edges across its plane
         if (contains(h, tri) != (intersects(h, tri.a) && intersects(h, tri.b) && intersects(h, tri.c))) std::abort();
+        check(h, tet); // its faces, then a vertex of the set inside it
+        if (contains(h, tet) != (intersects(h, tet.a) && intersects(h, tet.b) && intersects(h, tet.c) && intersects(h, tet.d))) std::abort();
         if (contains(h, p) != intersects(h, p)) std::abort();
         if (contains(h, seg) != (intersects(h, seg.a) && intersects(h, seg.b))) std::abort();
         if (box.min.x <= box.max.x && box.min.y <= box.max.y && box.min.z <= box.max.z) { // the vertex test

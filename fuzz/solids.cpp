@@ -14,7 +14,9 @@
 // doubles: a point, segment, ray, line, plane, triangle, box or tetrahedron), and
 // contains(mesh, point); with bit 0x40 of byte 0 too, against a second such mesh (18 doubles;
 // CGAL::Polygon_mesh_processing::do_intersect) or, for byte 0 % 8 == 7, an OBB (the LP per
-// triangle). Any finding aborts.
+// triangle), or for 6, 5, 4 a convex polyhedron of 1 to 4 planes, a frustum or a 14-DOP from 18
+// doubles (the LP per triangle, then crossing parity from the LP's exact point of the set). Any
+// finding aborts.
 #include "../tests/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <cmath>
@@ -189,6 +191,25 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         for (unsigned i = 0; i < 6; ++i) verts2[i] = point3{w[18 + 3 * i], w[19 + 3 * i], w[20 + 3 * i]};
         const mesh3 m{verts, octahedron};
         bool finite = true;
+        if ((data[0] & 0x40) && data[0] % 8 >= 4 && data[0] % 8 <= 6) { // a half-space set (18 doubles)
+            for (int i = 0; i < 36; ++i) finite = finite && std::isfinite(w[i]);
+            const double* h = w + 18;
+            if (data[0] % 8 == 6) { // 1 to 4 planes
+                convex_polyhedron3 c{};
+                c.count = 1 + data[0] / 8 % 4;
+                for (unsigned i = 0; i < static_cast<unsigned>(c.count); ++i) c.planes[i] = plane3{{h[4 * i % 18], h[(4 * i + 1) % 18], h[(4 * i + 2) % 18]}, h[(4 * i + 3) % 18]};
+                check_mesh(m, c, finite);
+            } else if (data[0] % 8 == 5) { // six planes, the doubles read again
+                frustum3 f{};
+                for (unsigned i = 0; i < 6; ++i) f.planes[i] = plane3{{h[4 * i % 18], h[(4 * i + 1) % 18], h[(4 * i + 2) % 18]}, h[(4 * i + 3) % 18]};
+                check_mesh(m, f, finite);
+            } else { // a 14-DOP's bounds (maybe inverted: empty)
+                kdop<14> kd{};
+                for (unsigned i = 0; i < 7; ++i) kd.min[i] = h[i], kd.max[i] = h[i + 7];
+                check_mesh(m, kd, finite);
+            }
+            return 0;
+        }
         if (data[0] & 0x40) { // a second mesh (18 doubles), or an OBB when byte 0 % 8 == 7 (its LP per triangle is slow)
             const bool box = data[0] % 8 == 7;
             for (int i = 0; i < 18 + (box ? 15 : 18); ++i) finite = finite && std::isfinite(w[i]);

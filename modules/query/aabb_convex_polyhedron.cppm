@@ -48,40 +48,50 @@ template <class K, class F>
     return k.sgn(f);
 }
 
-// Is the set of the `total` half-spaces n_i . x <= c_i (finite numbers) not empty? It may be
-// unbounded. A nonempty set's minimal faces are {x : n_i . x = c_i for i in I} with rank(n_I) the
-// rank r of all the normals (Schrijver 1986, section 8.5), so one such face point lies in every
-// half-space: for r = 3 a vertex, three planes with independent normals; for r = 2 a line where
-// two planes meet; for r = 1 a plane. Each candidate point is V / D, tested as sign(c_l D - n_l . V)
-// (zero or sign(D)): homogeneous signs of degree 4 (vertices), 5 (lines) and 3 (planes).
+// A zero normal; two normals equal or opposite (the box's faces across one axis, a frustum's near
+// and far planes, a repeated plane): no single point where they meet, known without a sign (which
+// the filter could not prove zero).
+[[nodiscard]] constexpr bool zero_normal(const plane3* rows, unsigned x) {
+    const vec3 a = rows[x].normal;
+    return a.x == 0 && a.y == 0 && a.z == 0;
+}
+[[nodiscard]] constexpr bool parallel_normals(const plane3* rows, unsigned x, unsigned y) {
+    const vec3 a = rows[x].normal, c = rows[y].normal;
+    return (a.x == c.x && a.y == c.y && a.z == c.z) || (a.x == -c.x && a.y == -c.y && a.z == -c.z);
+}
+
+// A vertex of the set of the `total` half-spaces n_i . x <= c_i: planes i, j and l, with
+// independent normals, meet at v = V / D inside every half-space, where D = det(n_i, n_j, n_l) and
+// V = c_i n_j x n_l + c_j n_l x n_i + c_l n_i x n_j (vertex_numerator); n_h . v <= c_h iff
+// sign(c_h D - n_h . V) is zero or sign(D): homogeneous signs of degree 4. `independent`: some
+// three normals are independent (the set, when not empty, then has a vertex).
+struct set_vertex {
+    bool found = false, independent = false;
+    plane3 i{}, j{}, l{};
+    sign d = sign::zero;
+};
+template <class L>
+[[nodiscard]] constexpr auto vertex_numerator(L lift, const plane3& a, const plane3& c, const plane3& e) {
+    const auto na = arith::lift(lift, a.normal), nc = arith::lift(lift, c.normal), ne = arith::lift(lift, e.normal);
+    const auto one = lift(1.0);
+    const auto ca = lift(a.offset) * one, cc = lift(c.offset) * one, ce = lift(e.offset) * one;
+    const auto x = arith::cross(nc, ne), y = arith::cross(ne, na), z = arith::cross(na, nc);
+    using T = decltype(ca * x.x + cc * y.x + ce * z.x);
+    return arith::v3<T>{ca * x.x + cc * y.x + ce * z.x, ca * x.y + cc * y.y + ce * z.y, ca * x.z + cc * y.z + ce * z.z};
+}
 template <class K>
-[[nodiscard]] constexpr bool feasible(K& k, const plane3* rows, unsigned total) {
-    // A zero normal, or two normals equal or opposite (the box's faces across one axis, a frustum's
-    // near and far planes, a repeated plane): no single point, known without a sign (which the
-    // filter could not prove zero).
-    auto zero = [rows](unsigned x) {
-        const vec3 a = rows[x].normal;
-        return a.x == 0 && a.y == 0 && a.z == 0;
-    };
-    auto parallel = [rows](unsigned x, unsigned y) {
-        const vec3 a = rows[x].normal, c = rows[y].normal;
-        return (a.x == c.x && a.y == c.y && a.z == c.z) || (a.x == -c.x && a.y == -c.y && a.z == -c.z);
-    };
-    // a zero normal is all of space (offset >= 0) or nothing: a comparison
-    for (unsigned i = 0; i < total; ++i)
-        if (zero(i) && rows[i].offset < 0) return false;
-    bool independent = false; // some candidate of the current rank was found
-    // r = 3: the vertices
+[[nodiscard]] constexpr set_vertex first_vertex(K& k, const plane3* rows, unsigned total) {
+    set_vertex found;
     for (unsigned i = 0; i < total; ++i) {
-        if (zero(i)) continue;
+        if (zero_normal(rows, i)) continue;
         for (unsigned j = i + 1; j < total; ++j) {
-            if (zero(j) || parallel(i, j)) continue;
+            if (zero_normal(rows, j) || parallel_normals(rows, i, j)) continue;
             for (unsigned l = j + 1; l < total; ++l) {
-                if (zero(l) || parallel(i, l) || parallel(j, l)) continue;
+                if (zero_normal(rows, l) || parallel_normals(rows, i, l) || parallel_normals(rows, j, l)) continue;
                 const plane3 a = rows[i], c = rows[j], e = rows[l];
                 const sign d = settled(k, [=](auto L) { return arith::det3(arith::lift(L, a.normal), arith::lift(L, c.normal), arith::lift(L, e.normal)); });
                 if (d == sign::zero) continue; // no single point
-                independent = true;
+                found.independent = true;
                 auto beyond = [=](unsigned r) { // c_h D - n_h . V, with n_h . (n_j x n_k) = det(n_h, n_j, n_k)
                     const plane3 h = rows[r];
                     return [=](auto L) {
@@ -104,10 +114,35 @@ template <class K>
                     const sign s = k.sgn(beyond(r));
                     vertex_inside = s == sign::zero || s == d;
                 }
-                if (vertex_inside) return true;
+                if (vertex_inside) {
+                    found.found = true;
+                    found.i = a, found.j = c, found.l = e, found.d = d;
+                    return found;
+                }
             }
         }
     }
+    return found;
+}
+
+// Is the set of the `total` half-spaces n_i . x <= c_i (finite numbers) not empty? It may be
+// unbounded. A nonempty set's minimal faces are {x : n_i . x = c_i for i in I} with rank(n_I) the
+// rank r of all the normals (Schrijver 1986, section 8.5), so one such face point lies in every
+// half-space: for r = 3 a vertex, three planes with independent normals (first_vertex); for r = 2
+// a line where two planes meet; for r = 1 a plane. Each candidate point is V / D, tested as
+// sign(c_l D - n_l . V) (zero or sign(D)): homogeneous signs of degree 4 (vertices), 5 (lines) and
+// 3 (planes).
+template <class K>
+[[nodiscard]] constexpr bool feasible(K& k, const plane3* rows, unsigned total) {
+    auto zero = [rows](unsigned x) { return zero_normal(rows, x); };
+    auto parallel = [rows](unsigned x, unsigned y) { return parallel_normals(rows, x, y); };
+    // a zero normal is all of space (offset >= 0) or nothing: a comparison
+    for (unsigned i = 0; i < total; ++i)
+        if (zero(i) && rows[i].offset < 0) return false;
+    // r = 3: the vertices
+    const set_vertex v = first_vertex(k, rows, total);
+    if (v.found) return true;
+    bool independent = v.independent; // some candidate of the current rank was found
     if (independent) return false;
     // r = 2: every normal is orthogonal to w = n_i x n_j (nonzero), and the line n_i . x = c_i,
     // n_j . x = c_j is V / D with V = c_i n_j x w + c_j w x n_i and D = w . w > 0

@@ -167,6 +167,10 @@ inline constexpr std::tuple families{
     family<convex_polyhedron3, triangle3, 0>{"convex_polyhedron_triangle", "obb", "signs in double", {}},
     family<frustum3, triangle3, 0>{"frustum_triangle", "obb", "signs in double", {}},
     family<kdop<14>, triangle3, 0>{"kdop_triangle", "obb", "signs in double", {}},
+    // A tetrahedron against a half-space set: its faces, then a vertex of the set inside it.
+    family<convex_polyhedron3, tetrahedron3, 0>{"convex_polyhedron_tetrahedron", "obb", "signs in double", {}},
+    family<frustum3, tetrahedron3, 0>{"frustum_tetrahedron", "obb", "signs in double", {}},
+    family<kdop<14>, tetrahedron3, 0>{"kdop_tetrahedron", "obb", "signs in double", {}},
 };
 
 inline constexpr std::size_t family_count = std::tuple_size_v<decltype(families)>;
@@ -191,6 +195,9 @@ inline constexpr std::tuple view_families{
     family<aabb3, mesh3, 0>{"aabb_mesh", "solids", "signs in double", {}},
     family<mesh3, obb3, 0>{"mesh_obb", "solids", "signs in double", {}},
     family<mesh3, mesh3, 0>{"mesh_mesh", "solids", "signs in double", {}},
+    family<convex_polyhedron3, mesh3, 0>{"convex_polyhedron_mesh", "solids", "signs in double", {}},
+    family<frustum3, mesh3, 0>{"frustum_mesh", "solids", "signs in double", {}},
+    family<kdop<14>, mesh3, 0>{"kdop_mesh", "solids", "signs in double", {}},
     family<point2, polygon2, 0>{"point2_polygon2", "flat", "signs in double", {}},
     family<polygon2, segment2, 0>{"polygon2_segment2", "flat", "signs in double", {}},
     family<polygon2, ray2, 0>{"polygon2_ray2", "flat", "signs in double", {}},

@@ -22,6 +22,7 @@
 // permanent (tests/query/convex_polyhedron_triangle.cpp).
 module;
 #include <array>
+#include <cstddef>
 export module incidence.query:convex_polyhedron_triangle;
 import incidence.core;
 import incidence.arith;
@@ -35,23 +36,30 @@ export namespace incidence::pair {
 
 namespace polyq {
 
+// One of the m planes with the n points point(0), ..., point(n - 1) all proven beyond it (by the
+// filter's probe, no exact sign): their hull misses the set.
+template <class K, class Points>
+[[nodiscard]] constexpr bool beyond_one_plane(K& k, const plane3* planes, int m, const Points& point, std::size_t n) {
+    for (int i = 0; i < m; ++i) {
+        const plane3 h = planes[i];
+        bool beyond = true;
+        for (std::size_t v = 0; v < n && beyond; ++v) {
+            const point3 x = point(v);
+            beyond = arith::probe(k, [=](auto L) { return L(h.offset) * L(1.0) - arith::dot(arith::lift(L, h.normal), arith::lift(L, x)); }) ==
+                     sign::negative;
+        }
+        if (beyond) return true;
+    }
+    return false;
+}
+
 // Does the solid triangle t meet the m <= convex_polyhedron3::capacity half-spaces n_i . x <= c_i?
 template <class K>
 [[nodiscard]] constexpr bool triangle_meets(K& k, const triangle3& t, const plane3* planes, int m) {
     constexpr int capacity = convex_polyhedron3::capacity;
     if (!well_formed(planes, m, capacity) || !finite(t)) return false;
     const point3 corner[3] = {t.a, t.b, t.c};
-    // a plane with the three corners proven beyond it
-    for (int i = 0; i < m; ++i) {
-        const plane3 h = planes[i];
-        bool beyond = true;
-        for (int v = 0; v < 3 && beyond; ++v) {
-            const point3 x = corner[v];
-            beyond = arith::probe(k, [=](auto L) { return L(h.offset) * L(1.0) - arith::dot(arith::lift(L, h.normal), arith::lift(L, x)); }) ==
-                     sign::negative;
-        }
-        if (beyond) return false;
-    }
+    if (beyond_one_plane(k, planes, m, [&](std::size_t v) { return corner[v]; }, 3)) return false;
     // the edges
     for (int v = 0; v < 3; ++v)
         if (halfspaces<slab_extent::segment>(k, planes, m, corner[v], vec3{0, 0, 0}, corner[(v + 1) % 3])) return true;

@@ -72,10 +72,31 @@ namespace meshq {
     return b;
 }
 
-// Is p, off the surface, inside (odd crossings)?
-template <class K>
-[[nodiscard]] constexpr bool inside(K& k, const mesh3& m, point3 p) {
-    if (!in_box(bounds(m), p)) return false;
+// The point whose parity is sought: a double point p (at_point) or a rational one, V / W with
+// W > 0 (the homogeneous point of a caller). pl(L, x, y) has the sign of u . ((x - p) x (y - p)),
+// ahead(L, a, b, c) that of det(a - p, b - p, c - p); near(box) is false only for a point known
+// outside the box (comparisons), and along +x a triangle whose box the ray misses is skipped.
+struct at_point {
+    point3 p;
+    template <class L>
+    [[nodiscard]] constexpr auto pl(L lift, const vec3& u, const point3& x, const point3& y) const {
+        const auto P = arith::lift(lift, p);
+        return arith::dot(arith::lift(lift, u), arith::cross(arith::lift(lift, x) - P, arith::lift(lift, y) - P));
+    }
+    template <class L>
+    [[nodiscard]] constexpr auto ahead(L lift, const point3& a, const point3& b, const point3& c) const {
+        return poly::orient3d(lift, a, b, c, p); // det(a - p, b - p, c - p)
+    }
+    [[nodiscard]] constexpr bool near(const aabb3& b) const { return in_box(b, p); }
+    [[nodiscard]] constexpr bool x_ray_misses(const aabb3& tb) const {
+        return tb.max.x < p.x || p.y < tb.min.y || p.y > tb.max.y || p.z < tb.min.z || p.z > tb.max.z;
+    }
+};
+
+// Is the point q, off the surface, inside (odd crossings)?
+template <class K, class Q>
+[[nodiscard]] constexpr bool inside_at(K& k, const mesh3& m, const Q& q) {
+    if (!q.near(bounds(m))) return false;
     const std::size_t tries = 8 * m.triangles.size() + m.vertices.size() + 8;
     bool odd = false;
     for (std::size_t j = 0; j < tries; ++j) {
@@ -87,15 +108,9 @@ template <class K>
             const triangle3 t = m.triangle(i);
             if (j == 0) { // the ray along +x misses a triangle whose box it misses (comparisons)
                 const point3 v[3] = {t.a, t.b, t.c};
-                const aabb3 tb = bounds(v, 3);
-                if (tb.max.x < p.x || p.y < tb.min.y || p.y > tb.max.y || p.z < tb.min.z || p.z > tb.max.z) continue;
+                if (q.x_ray_misses(bounds(v, 3))) continue;
             }
-            auto pl = [&](point3 x, point3 y) {
-                return k.sgn([=](auto L) {
-                    const auto P = arith::lift(L, p);
-                    return arith::dot(arith::lift(L, u), arith::cross(arith::lift(L, x) - P, arith::lift(L, y) - P));
-                });
-            };
+            auto pl = [&](point3 x, point3 y) { return k.sgn([=](auto L) { return q.pl(L, u, x, y); }); };
             const sign s0 = pl(t.a, t.b), s1 = pl(t.b, t.c), s2 = pl(t.c, t.a);
             const bool pos = s0 == sign::positive || s1 == sign::positive || s2 == sign::positive;
             const bool neg = s0 == sign::negative || s1 == sign::negative || s2 == sign::negative;
@@ -113,8 +128,8 @@ template <class K>
             }
             const sign s = pos ? sign::positive : sign::negative;
             const point3 a = t.a, b = t.b, cc = t.c;
-            const sign d = k.sgn([=](auto L) { return poly::orient3d(L, a, b, cc, p); });
-            // orient3d(a, b, c, p) = det(a - p, b - p, c - p): the crossing lies ahead iff it has sign s
+            const sign d = k.sgn([=](auto L) { return q.ahead(L, a, b, cc); });
+            // det(a - p, b - p, c - p): the crossing lies ahead iff it has sign s
             if (d != s) continue;
             if (s0 == sign::zero || s1 == sign::zero || s2 == sign::zero) clean = false; // through an edge or vertex
             else odd = !odd;
@@ -122,6 +137,10 @@ template <class K>
         if (clean) return odd;
     }
     return odd; // reached only by inexact arithmetic (the approximate tier, a filter's guess)
+}
+template <class K>
+[[nodiscard]] constexpr bool inside(K& k, const mesh3& m, point3 p) {
+    return inside_at(k, m, at_point{p});
 }
 
 // The mesh's point set against the connected shape x: a triangle meets x, or p (a point of x)

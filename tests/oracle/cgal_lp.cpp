@@ -5,6 +5,7 @@
 // lo <= n . x <= hi (n the integer directions), a convex polyhedron or a frustum its half-spaces
 // n . x <= offset.
 #include "cgal_oracle.hpp"
+#include "cgal_lp_point.hpp"
 
 #include <stdexcept>
 
@@ -80,6 +81,35 @@ std::optional<bool> lp_intersect_verified(const convex_set& a, const convex_set&
         if (s.solves_linear_program(lp)) return !s.is_infeasible();
     }
     return std::nullopt;
+}
+
+std::optional<std::array<mpq_class, 3>> lp_point(const convex_set& s) {
+    program lp(CGAL::EQUAL, false, 0.0, false, 0.0);
+    int var = 3, row = 0;
+    add(lp, var, row, s);
+    for (const auto pricing : {CGAL::QP_DANTZIG, CGAL::QP_PARTIAL_DANTZIG, CGAL::QP_BLAND}) {
+        CGAL::Quadratic_program_options options;
+        options.set_pricing_strategy(pricing);
+        auto sol = CGAL::solve_linear_program(lp, CGAL::Gmpzf(), options);
+        if (!sol.solves_linear_program(lp)) continue;
+        if (sol.is_infeasible()) return std::nullopt;
+        std::array<mpq_class, 3> x;
+        auto it = sol.variable_values_begin();
+        auto gmpq = [](const CGAL::Gmpzf& f) { // m 2^e, exactly
+            mpq_t q;
+            mpq_init(q);
+            mpq_set_z(q, f.man());
+            if (f.exp() >= 0) mpq_mul_2exp(q, q, static_cast<mp_bitcnt_t>(f.exp()));
+            else mpq_div_2exp(q, q, static_cast<mp_bitcnt_t>(-f.exp()));
+            mpq_class r;
+            mpq_set(r.get_mpq_t(), q);
+            mpq_clear(q);
+            return r;
+        };
+        for (unsigned k = 0; k < 3; ++k, ++it) x[k] = gmpq(it->numerator()) / gmpq(it->denominator());
+        return x;
+    }
+    throw std::runtime_error("lp_point: no pricing strategy gave a verified answer");
 }
 
 bool lp_intersect(const convex_set& a, const convex_set& b) {

@@ -4,6 +4,7 @@
 // CGAL::Side_of_triangle_mesh over Epeck a test of 40,000 cases took 55 s, nearly all of it in
 // the lazy exact AABB tree, and over Epick it did not finish on cases at 2^500.
 #include "cgal_oracle.hpp"
+#include "cgal_lp_point.hpp"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -40,17 +41,14 @@ flat triangle_of(const mesh_data& m, const std::array<unsigned, 3>& t) {
 // sides of a triangle's plane, and the three orientations of the segment against its edges all
 // strictly of one sign. A zero among them (the segment through an edge or a vertex, or lying in
 // the plane) draws another q.
-bool mesh_inside(const mesh_data& m, const std::array<double, 3>& p) {
-    std::array<double, 3> lo = m.v[0], hi = m.v[0];
-    for (const auto& v : m.v)
-        for (unsigned k = 0; k < 3; ++k) lo[k] = std::min(lo[k], v[k]), hi[k] = std::max(hi[k], v[k]);
-    for (unsigned k = 0; k < 3; ++k)
-        if (p[k] < lo[k] || p[k] > hi[k]) return false;
-    const flat point{flat::point, {p[0], p[1], p[2]}};
-    for (const auto& t : m.t)
-        if (flat_intersect(triangle_of(m, t), point)) return true;
-    using P = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3; // orientation is an exact predicate; nothing is constructed
-    const P P0(p[0], p[1], p[2]);
+namespace {
+// The parity of the crossings of a segment from P0 (approximately p, inside the vertices' box lo,
+// hi, and off the surface) to random far points, until one segment passes through no edge, vertex
+// or triangle plane.
+template <class Kern>
+bool crossing_parity(const mesh_data& m, const typename Kern::Point_3& P0, const std::array<double, 3>& p, const std::array<double, 3>& lo,
+                     const std::array<double, 3>& hi) {
+    using P = typename Kern::Point_3;
     std::mt19937_64 g(12345);
     std::uniform_real_distribution<double> u(-1, 1);
     for (int attempt = 0; attempt < 1000; ++attempt) {
@@ -84,6 +82,25 @@ bool mesh_inside(const mesh_data& m, const std::array<double, 3>& p) {
     }
     throw std::runtime_error("mesh_inside: no clean segment in 1000 draws");
 }
+void vertex_box(const mesh_data& m, std::array<double, 3>& lo, std::array<double, 3>& hi) {
+    lo = hi = m.v[0];
+    for (const auto& v : m.v)
+        for (unsigned k = 0; k < 3; ++k) lo[k] = std::min(lo[k], v[k]), hi[k] = std::max(hi[k], v[k]);
+}
+} // namespace
+
+bool mesh_inside(const mesh_data& m, const std::array<double, 3>& p) {
+    std::array<double, 3> lo{}, hi{};
+    vertex_box(m, lo, hi);
+    for (unsigned k = 0; k < 3; ++k)
+        if (p[k] < lo[k] || p[k] > hi[k]) return false;
+    const flat point{flat::point, {p[0], p[1], p[2]}};
+    for (const auto& t : m.t)
+        if (flat_intersect(triangle_of(m, t), point)) return true;
+    // orientation is an exact predicate; nothing is constructed
+    using E = CGAL::Exact_predicates_inexact_constructions_kernel;
+    return crossing_parity<E>(m, E::Point_3(p[0], p[1], p[2]), p, lo, hi);
+}
 
 bool mesh_intersect(const mesh_data& m, const flat& x) {
     for (const auto& t : m.t)
@@ -93,7 +110,35 @@ bool mesh_intersect(const mesh_data& m, const flat& x) {
     return mesh_inside(m, {x.v[0], x.v[1], x.v[2]}); // a point, an origin, a vertex or the box's min corner
 }
 
-bool mesh_intersect(const mesh_data& m, const convex_set& x, const std::array<double, 3>& inner) {
+namespace {
+// For x given by its slabs and half-spaces alone: -1 when the three points lie beyond one of its
+// bounds (the triangle misses x), +1 when one of them lies within all (it meets x), else 0;
+// every product exact in rationals.
+int rows_decide(const convex_set& x, const std::array<std::array<double, 3>, 3>& v) {
+    if (x.plane || !x.points.empty() || !x.generators.empty()) return 0;
+    auto along = [](const std::array<double, 3>& n, const std::array<double, 3>& p) -> mpq_class { // not an expression template of temporaries
+        return mpq_class(n[0]) * p[0] + mpq_class(n[1]) * p[1] + mpq_class(n[2]) * p[2];
+    };
+    std::array<bool, 3> inside{true, true, true};
+    for (const auto& h : x.halfspaces) {
+        int beyond = 0;
+        for (unsigned j = 0; j < 3; ++j)
+            if (along(h.n, v[j]) > h.offset) ++beyond, inside[j] = false;
+        if (beyond == 3) return -1;
+    }
+    for (const auto& sl : x.slabs) {
+        int below = 0, above = 0;
+        for (unsigned j = 0; j < 3; ++j) {
+            const mpq_class d = along(sl.n, v[j]);
+            if (d < sl.lo) ++below, inside[j] = false;
+            if (d > sl.hi) ++above, inside[j] = false;
+        }
+        if (below == 3 || above == 3) return -1;
+    }
+    return inside[0] || inside[1] || inside[2] ? 1 : 0;
+}
+// Does a triangle of m meet the convex set x (the LP for each)?
+bool triangles_meet(const mesh_data& m, const convex_set& x) {
     // A box around x (points plus bounded generators), widened by 2^-30 of its size and more than
     // any rounding in computing it: a triangle outside it cannot meet x, and skips its LP.
     std::array<double, 3> lo{}, hi{};
@@ -120,10 +165,34 @@ bool mesh_intersect(const mesh_data& m, const convex_set& x, const std::array<do
             }
             if (apart) continue;
         }
+        if (const int r = rows_decide(x, {m.v[t[0]], m.v[t[1]], m.v[t[2]]}); r != 0) {
+            if (r > 0) return true;
+            continue;
+        }
         const flat f = triangle_of(m, t);
         if (lp_intersect(lp_set(f), x)) return true;
     }
-    return mesh_inside(m, inner);
+    return false;
+}
+} // namespace
+
+bool mesh_intersect(const mesh_data& m, const convex_set& x, const std::array<double, 3>& inner) {
+    return triangles_meet(m, x) || mesh_inside(m, inner);
+}
+
+bool mesh_intersect(const mesh_data& m, const convex_set& x) {
+    if (triangles_meet(m, x)) return true;
+    // off the surface: x is wholly inside or outside, and any of its points decides
+    const auto q = lp_point(x);
+    if (!q) return false; // empty
+    std::array<double, 3> lo{}, hi{}, p{};
+    vertex_box(m, lo, hi);
+    for (unsigned k = 0; k < 3; ++k) {
+        if ((*q)[k] < mpq_class(lo[k]) || (*q)[k] > mpq_class(hi[k])) return false;
+        p[k] = (*q)[k].get_d();
+    }
+    using E = CGAL::Exact_predicates_exact_constructions_kernel;
+    return crossing_parity<E>(m, E::Point_3(E::FT((*q)[0]), E::FT((*q)[1]), E::FT((*q)[2])), p, lo, hi);
 }
 
 bool mesh_mesh_intersect(const mesh_data& a, const mesh_data& b) {

@@ -119,6 +119,9 @@ struct mesh_data {
 bool mesh_inside(const mesh_data& m, const std::array<double, 3>& p); // on the surface or inside
 bool mesh_intersect(const mesh_data& m, const flat& x);
 bool mesh_intersect(const mesh_data& m, const convex_set& x, const std::array<double, 3>& inner);
+// x given by half-spaces or slabs (no point of it is at hand): when no triangle meets x, the LP's
+// exact rational point of x decides by the same parity, over Epeck.
+bool mesh_intersect(const mesh_data& m, const convex_set& x);
 bool mesh_mesh_intersect(const mesh_data& a, const mesh_data& b);
 
 // The same in the plane: a point, segment, ray or line (v: a point's 2 values, a segment's end

@@ -157,8 +157,14 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
         every_tier(cp, kd, yes);
         every_tier(kd2, fr, yes);
         yes += contains(fr, q) + contains(fr, seg) + contains(cp, q) + contains(cp, seg) + contains(fr, b) + contains(cp, b);
-        yes += contains(fr, t) + contains(cp, t) + contains(kd, t);
-        n += 20 * 5 + 9;
+        every_tier(cp, te, yes);
+        every_tier(te, fr, yes);
+        every_tier(kd2, te, yes);
+        every_tier(cp, me, yes);
+        every_tier(me, fr, yes);
+        every_tier(kd, me, yes);
+        yes += contains(fr, t) + contains(cp, t) + contains(kd, t) + contains(fr, te) + contains(cp, te) + contains(kd2, te);
+        n += 26 * 5 + 12;
         // in the plane
         auto p2 = [&] { return point2{special(r), special(r)}; };
         auto v2 = [&] { return vec2{special(r), special(r)}; };

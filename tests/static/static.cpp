@@ -154,6 +154,12 @@ static_assert(intersects(segment3{{0.5, 0.5, 0.5}, {0.5, 0.5, 0.25}}, support::d
 static_assert(!intersects(segment3{{0.5, 0.5, 0.5}, {0.5, 0.5, 0x1.0000000000001p-2}}, support::dented));
 static_assert(intersects(support::cube, plane3{{0, 0, 1}, 1}) && !intersects(support::cube, plane3{{0, 0, 1}, 0x1.0000000000001p0}));
 static_assert(intersects(support::dented, Q) && contains(support::dented, point3{0.5, 0.5, 0.2}));
+// a half-space set against a mesh: inside it (no triangle meets it: the parity of its vertex), above
+// the dent, a flat one on the dent's apex and one ulp above
+static_assert(intersects(kdop<6>{{0.4, 0.4, 0.4}, {0.6, 0.6, 0.6}}, support::cube) && !intersects(support::dented, kdop<6>{{0.45, 0.45, 0.5}, {0.55, 0.55, 0.9}}));
+static_assert(intersects(kdop<6>{{0.5, 0.5, 0.25}, {0.5, 0.5, 0.9}}, support::dented) &&
+              !intersects(kdop<6>{{0.5, 0.5, 0x1.0000000000001p-2}, {0.5, 0.5, 0.9}}, support::dented));
+static_assert(intersects(support::polyhedron_fixtures::unit_cube_cut, support::dented) && !intersects(support::cube, convex_polyhedron3{{plane3{{1, 0, 0}, -0x1p-1074}}, 1}));
 // a polygon with a hole and a C shape (support/polygon_fixtures.hpp), inside by exact crossing
 // parity; make() decides simplicity exactly
 static_assert(intersects(point2{0.5, 3}, support::frame) && !intersects(point2{2, 2}, support::frame));
@@ -221,6 +227,14 @@ static_assert(intersects(ph::integer_frustum, ph::wide_triangle(2)) && intersect
 static_assert(intersects(support::corner_cut, triangle3{{1, 1, 0.5}, {3, 3, 3}, {3, 2, 3}}) &&
               !intersects(triangle3{{1, 1, 0x1.0000000000001p-1}, {3, 3, 3}, {3, 2, 3}}, support::corner_cut));
 static_assert(contains(ph::integer_frustum, triangle3{{1, 1, 1}, {-4, -4, 4}, {4, -4, 4}}) && !contains(support::corner_cut, triangle3{{0, 0, 0}, {1, 1, 0.5}, {1, 1, 1}}));
+// a tetrahedron against a half-space set: one holding the set whole (no face meets it: a vertex of
+// the set decides), below the set touching it, and one ulp lower
+static_assert(intersects(ph::unit_cube_cut, ph::wide_tetrahedron(2)) && intersects(ph::wide_tetrahedron(0), ph::unit_cube_cut) &&
+              !intersects(ph::unit_cube_cut, ph::wide_tetrahedron(-0x1p-1074)));
+static_assert(intersects(ph::integer_frustum, ph::wide_tetrahedron(5)) && !intersects(ph::wide_tetrahedron(0x1.fffffffffffffp-1), ph::integer_frustum));
+static_assert(intersects(support::corner_cut, ph::wide_tetrahedron(2)) && !intersects(ph::wide_tetrahedron(-0x1p-1074), support::corner_cut));
+static_assert(contains(ph::integer_frustum, tetrahedron3{{1, 1, 1}, {-4, -4, 4}, {4, -4, 4}, {0, 4, 4}}) &&
+              !contains(support::corner_cut, tetrahedron3{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 1}}));
 // the same in the plane
 static_assert(intersects(segment2{{0, 0}, {2, 0}}, segment2{{2, 0}, {3, 5}}));
 static_assert(!intersects(segment2{{0, 0}, {2, 0}}, segment2{{0x1.0000000000001p1, 0}, {3, 0}}));

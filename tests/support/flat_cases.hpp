@@ -138,6 +138,19 @@ inline incidence::tetrahedron3 tetrahedron_at(rng& r, incidence::point3 X, incid
     for (int i = 3; i > 0; --i) std::swap(v[i], v[r.integer(0, i)]); // any vertex order
     return {v[0], v[1], v[2], v[3]};
 }
+// A large tetrahedron with a face in the plane through X normal to f (a set's outward normal at
+// its boundary point X), moved out or in by 2^-20 or not, its apex deep on the set's side (so that
+// it may hold the set whole: no face of it meets the set, and a vertex of the set decides) or
+// outside.
+inline incidence::tetrahedron3 tetrahedron_around(rng& r, incidence::point3 X, incidence::vec3 f) {
+    using incidence::vec3;
+    vec3 u = cross(f, vec3{1, 2, 3});
+    if (u.x == 0 && u.y == 0 && u.z == 0) u = cross(f, vec3{3, 1, 2});
+    const vec3 w = cross(f, u);
+    static constexpr double moves[] = {0x1p-20, 0, -0x1p-20};
+    const incidence::point3 c = X + f * moves[r.integer(0, 2)];
+    return {c + u * 64, c - u * 32 + w * 64, c - u * 32 - w * 64, X + f * (r.integer(0, 3) == 0 ? 256.0 : -256.0)};
+}
 // A box with X at a corner, an edge or face point, inside, or just outside; flat boxes (zero
 // width on an axis) included.
 inline incidence::aabb3 box_at(rng& r, incidence::point3 X) {

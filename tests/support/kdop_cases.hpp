@@ -137,6 +137,8 @@ std::optional<std::pair<incidence::kdop<K>, B>> kdop_near(rng& r) {
     auto b = place<B>(r, X, d, r.coin());
     if constexpr (std::is_same_v<B, plane3>) // the face's own plane through X, either orientation: touching
         if (r.integer(0, 2) == 0) b = {r.coin() ? nd : -nd, X};
+    if constexpr (std::is_same_v<B, tetrahedron3>)
+        if (r.integer(0, 2) == 0) b = tetrahedron_around(r, X, top ? nd : -nd);
     transform tr = random_transform(r, true, true);
     for (auto& p : pts) p = moved(p, tr);
     const auto kd = kdop_around<K>(pts);
@@ -190,6 +192,10 @@ std::optional<std::pair<incidence::kdop<K>, B>> kdop_inside_case(rng& r) {
         b = realise(triangle3{pt(), pt(), pt()}, tr);
         pts.push_back(b.a), pts.push_back(b.b), pts.push_back(b.c);
         if (r.coin()) b.c.y = std::nextafter(b.c.y, r.coin() ? 1e308 : -1e308);
+    } else if constexpr (std::is_same_v<B, tetrahedron3>) {
+        b = realise(tetrahedron3{pt(), pt(), pt(), pt()}, tr);
+        pts.push_back(b.a), pts.push_back(b.b), pts.push_back(b.c), pts.push_back(b.d);
+        if (r.coin()) b.d.z = std::nextafter(b.d.z, r.coin() ? 1e308 : -1e308);
     } else {
         b = realise(segment3{pt(), pt()}, tr);
         pts.push_back(b.a), pts.push_back(b.b);

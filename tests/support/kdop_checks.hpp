@@ -16,7 +16,7 @@ void kdop_oracle(const std::string& name, long n, double approx_bound) {
     rng r(seed() + static_cast<std::uint64_t>(K));
     for (int near = 0; near < 2; ++near) {
         tally t{name + " " + std::to_string(K) + "-dop" + (near ? " near-degenerate" : " random")};
-        long skipped = 0;
+        long skipped = 0, held = 0;
         for (long i = 0; i < n; ++i) {
             const auto c = near ? kdop_near<K, B>(r) : kdop_random<K, B>(r);
             bool ok = c.has_value();
@@ -27,10 +27,15 @@ void kdop_oracle(const std::string& name, long n, double approx_bound) {
             }
             if (!truth) { ++skipped; continue; } // overflowed, or the LP's certificate check declined
             check_pair(t, c->first, c->second, *truth, approx_bound, [&] { return shape_str(c->first) + " " + shape_str(c->second); });
+            held += held_whole(c->first, c->second, *truth);
         }
         std::printf("[cases] %s: %ld generated cases skipped (not finite, or the oracle declined)\n", t.name.c_str(), skipped);
         t.print();
         require_contracts(t);
+        if constexpr (std::is_same_v<B, tetrahedron3>) {
+            print_held_whole(t.name, held);
+            if (near) CHECK(held > 0);
+        }
     }
 }
 
@@ -63,7 +68,7 @@ void kdop_symmetries(const std::string& name, long n) {
     CHECK(yes > 0);
 }
 
-// contains(kdop, B) for B = aabb3, segment3 or triangle3 against the LP oracle (B's vertices each in the
+// contains(kdop, B) for B = aabb3, segment3, triangle3 or tetrahedron3 against the LP oracle (B's vertices each in the
 // k-DOP's slabs): every tier contract, on near-degenerate, random and inside cases.
 template <int K, class B>
 void kdop_contains_oracle(const std::string& name, long n, double approx_bound) {
@@ -75,14 +80,10 @@ void kdop_contains_oracle(const std::string& name, long n, double approx_bound) 
         const auto c = i % 3 == 2 ? kdop_inside_case<K, B>(r) : (i % 3 ? kdop_near<K, B>(r) : kdop_random<K, B>(r));
         if (!c || !finite_shape(c->second)) continue;
         const auto& [a, b] = *c;
-        std::vector<point3> v;
-        if constexpr (std::is_same_v<B, aabb3>) {
+        if constexpr (std::is_same_v<B, aabb3>)
             if (!(b.min.x <= b.max.x && b.min.y <= b.max.y && b.min.z <= b.max.z)) continue;
-            for (int j = 0; j < 8; ++j) v.push_back({(j & 1) ? b.max.x : b.min.x, (j & 2) ? b.max.y : b.min.y, (j & 4) ? b.max.z : b.min.z});
-        } else if constexpr (std::is_same_v<B, triangle3>) v = {b.a, b.b, b.c};
-        else v = {b.a, b.b};
         bool truth = true;
-        for (const auto& p : v) truth = truth && oracle::lp_intersect(lp(a), lp(p));
+        for (const auto& p : hull_points(b)) truth = truth && oracle::lp_intersect(lp(a), lp(p));
         yes += truth;
         check_contains(t, a, b, truth, approx_bound, [&] { return shape_str(a) + " " + shape_str(b); });
     }

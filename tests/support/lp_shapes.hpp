@@ -2,6 +2,10 @@
 // the shape's own doubles. Include after `import incidence;`.
 #pragma once
 #include <array>
+#include <cstdio>
+#include <string>
+#include <type_traits>
+#include <vector>
 #include "../oracle/cgal_oracle.hpp"
 
 namespace support {
@@ -47,6 +51,33 @@ inline oracle::convex_set lp(const incidence::frustum3& f) {
     oracle::convex_set s;
     for (const auto& p : f.planes) s.halfspaces.push_back({a3(p.normal), p.offset});
     return s;
+}
+
+// The points whose hull is the shape: contains(P, shape) holds iff each is in the convex set P.
+inline std::vector<incidence::point3> hull_points(const incidence::point3& p) { return {p}; }
+inline std::vector<incidence::point3> hull_points(const incidence::segment3& g) { return {g.a, g.b}; }
+inline std::vector<incidence::point3> hull_points(const incidence::triangle3& t) { return {t.a, t.b, t.c}; }
+inline std::vector<incidence::point3> hull_points(const incidence::tetrahedron3& t) { return {t.a, t.b, t.c, t.d}; }
+inline std::vector<incidence::point3> hull_points(const incidence::aabb3& b) {
+    std::vector<incidence::point3> v;
+    for (int j = 0; j < 8; ++j) v.push_back({(j & 1) ? b.max.x : b.min.x, (j & 2) ? b.max.y : b.min.y, (j & 4) ? b.max.z : b.min.z});
+    return v;
+}
+
+// A tetrahedron holding the convex set a whole: they meet (truth), yet no face of the tetrahedron
+// meets a, so the test's last step (a vertex of a inside the tetrahedron) decides. The oracle tests
+// count these cases, to show that step runs.
+template <class A, class B>
+bool held_whole(const A& a, const B& b, bool truth) {
+    if constexpr (std::is_same_v<B, incidence::tetrahedron3>) {
+        if (!truth) return false;
+        for (int f = 0; f < 4; ++f)
+            if (intersects(a, b.face(f))) return false;
+        return true;
+    } else return false;
+}
+inline void print_held_whole(const std::string& name, long held) {
+    std::printf("[cases] %s: the tetrahedron holds the set whole (no face meets it) in %ld cases\n", name.c_str(), held);
 }
 
 } // namespace support

@@ -9,7 +9,11 @@
 // midpoint or a point inside a triangle) as in flat_cases.hpp (through X, along a triangle's edge
 // in its plane, or along a random direction), or at the centre (inside); then one random
 // exact-or-nudged scale and translation for both. Random: a mesh around a random centre in
-// [-1, 1]^3 of size about 1/2 and a random shape of flat_cases.hpp, at a random scale.
+// [-1, 1]^3 of size about 1/2 and a random shape of flat_cases.hpp, at a random scale. A
+// half-space set (convex_polyhedron3, frustum3, kdop<K>) near X: the supporting planes or the
+// k-DOP of a small dyadic cloud around X (X one of its points), or the integer frustum shrunk 16
+// times with its own boundary point at X; at the centre it lies inside the mesh, where only a
+// point of it decides. Random: the sets of polyhedron_cases.hpp and kdop_cases.hpp.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -17,6 +21,7 @@
 #include <string>
 #include <vector>
 #include "obb_cases.hpp"
+#include "polyhedron_cases.hpp"
 
 namespace support {
 
@@ -81,6 +86,38 @@ inline incidence::point3 surface_point(rng& r, const mesh_store& m, incidence::v
     }
 }
 
+template <class B>
+struct is_set_for_mesh : std::bool_constant<is_halfspace_shape<B>::value || is_kdop<B>::value> {};
+// A k-DOP that could not be built (bounds out of range): an empty one.
+template <class B>
+B kdop_or_empty(const std::optional<B>& b) {
+    if (b) return *b;
+    B e{};
+    e.min[0] = 1, e.max[0] = 0;
+    return e;
+}
+template <class B>
+B halfspace_set_at(rng& r, incidence::point3 X, transform& tr) {
+    using namespace incidence;
+    std::vector<point3> pts{X};
+    for (int i = r.integer(3, 7); i > 0; --i) pts.push_back(X + vec3{r.integer(-4, 4) * 0.0625, r.integer(-4, 4) * 0.0625, r.integer(-4, 4) * 0.0625});
+    if constexpr (std::is_same_v<B, frustum3>) {
+        halfspace_set h = frustum_near_set(r);
+        for (auto& p : h.planes) p.x = X + (p.x - h.X) * 0.0625;
+        return realise_frustum(h, tr);
+    } else if constexpr (std::is_same_v<B, convex_polyhedron3>) {
+        halfspace_set h;
+        for (int i = r.integer(4, 12); i > 0; --i) {
+            const vec3 n = small_normal(r);
+            h.planes.push_back({n, extreme(pts, n)});
+        }
+        return realise_polyhedron(h, tr);
+    } else {
+        for (auto& p : pts) p = moved(p, tr);
+        return kdop_or_empty<B>(kdop_around<B::slabs * 2>(pts));
+    }
+}
+
 // Every case: the mesh in `store` (and a second one in `other` for mesh against mesh), the
 // other shape returned (for a mesh, its view of `other`).
 template <class B>
@@ -107,6 +144,10 @@ B mesh_near(rng& r, mesh_store& store, mesh_store& other) {
         o.center = o.center + (X - q);
         realise_mesh(store, tr);
         return moved(tr, o);
+    } else if constexpr (is_set_for_mesh<B>::value) {
+        const B b = halfspace_set_at<B>(r, X, tr);
+        realise_mesh(store, tr);
+        return b;
     } else {
         const auto b = place<B>(r, X, d, r.coin());
         realise_mesh(store, tr);
@@ -126,6 +167,15 @@ B mesh_random(rng& r, mesh_store& store, mesh_store& other) {
         return other.view();
     } else if constexpr (std::is_same_v<B, obb3>) {
         return random_obb(r, tr);
+    } else if constexpr (std::is_same_v<B, convex_polyhedron3>) {
+        return realise_polyhedron(polyhedron_random_set(r), tr);
+    } else if constexpr (std::is_same_v<B, frustum3>) {
+        const auto f = camera_frustum(r, tr);
+        return f ? *f : frustum3{};
+    } else if constexpr (is_kdop<B>::value) {
+        std::vector<point3> pts = random_cloud(r);
+        for (auto& p : pts) p = moved(p, tr);
+        return kdop_or_empty<B>(kdop_around<B::slabs * 2>(pts));
     } else {
         const auto b = random_shape<B>(r, false, 0.0);
         return realise(b, tr);
@@ -139,6 +189,7 @@ bool mesh_truth(const incidence::mesh3& m, const B& b) {
     const auto md = mesh_data_of(m);
     if constexpr (std::is_same_v<B, mesh3>) return oracle::mesh_mesh_intersect(md, mesh_data_of(b));
     else if constexpr (std::is_same_v<B, obb3>) return oracle::mesh_intersect(md, lp(b), {b.center.x, b.center.y, b.center.z});
+    else if constexpr (is_set_for_mesh<B>::value) return oracle::mesh_intersect(md, lp(b)); // an exact point of b from the LP
     else return oracle::mesh_intersect(md, to_flat(b));
 }
 

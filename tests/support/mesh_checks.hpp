@@ -32,13 +32,14 @@ void mesh_oracle(const std::string& name, long n, double approx_bound) {
     mesh_store store, other;
     for (int near = 0; near < 2; ++near) {
         tally t{name + (near ? " near-degenerate" : " random")};
-        long skipped = 0;
+        long skipped = 0, held = 0;
         for (long i = 0; i < n; ++i) {
             const B b = near ? mesh_near<B>(r, store, other) : mesh_random<B>(r, store, other);
             const mesh3 m = store.view();
             bool finite = true;
             for (const auto& p : m.vertices) finite = finite && std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
             if constexpr (std::is_same_v<B, plane3>) finite = finite && std::isfinite(b.offset);
+            if constexpr (is_set_for_mesh<B>::value) finite = finite && finite_shape(b);
             if (!finite) { ++skipped; continue; } // a far translation that overflowed
             bool truth = false;
             try {
@@ -51,10 +52,19 @@ void mesh_oracle(const std::string& name, long n, double approx_bound) {
                 check_pair(t, x, y, truth, approx_bound, [&] { return shape_str(x) + " " + shape_str(y); });
                 return 0;
             });
+            if constexpr (is_set_for_mesh<B>::value) { // the set inside the mesh: no triangle meets it, a point of it decides
+                bool off = truth;
+                for (std::size_t j = 0; j < m.triangles.size() && off; ++j) off = !intersects(b, m.triangle(j));
+                held += off;
+            }
         }
         std::printf("[cases] %s: %ld generated cases skipped (not finite, or the oracle declined)\n", t.name.c_str(), skipped);
         t.print();
         require_contracts(t);
+        if constexpr (is_set_for_mesh<B>::value) {
+            std::printf("[cases] %s: the set lies inside the mesh, meeting no triangle, in %ld cases\n", t.name.c_str(), held);
+            if (near) CHECK(held > 0);
+        }
     }
 }
 

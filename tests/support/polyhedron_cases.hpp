@@ -301,6 +301,8 @@ std::optional<std::pair<P, B>> halfspace_near(rng& r) {
         auto b = place<B>(r, h.X, d, r.coin());
         if constexpr (std::is_same_v<B, plane3>) // a face's own plane through X, either orientation: touching
             if (has_face && r.integer(0, 2) == 0) b = {r.coin() ? h.face : -h.face, h.X};
+        if constexpr (std::is_same_v<B, tetrahedron3>)
+            if (has_face && r.integer(0, 2) == 0) b = tetrahedron_around(r, h.X, h.face);
         transform tr = random_transform(r, true, true);
         const P a = realise_as<P>(h, tr);
         const B bb = realise(b, tr);
@@ -353,9 +355,9 @@ std::optional<std::pair<P, B>> halfspace_random(rng& r) {
     return std::pair{a, bb};
 }
 
-// contains(P, segment3 | triangle3) cases: a segment (or triangle) between points of the
-// near-degenerate set's boundary or inside (the extreme points and X), then its last end nudged
-// by one ulp or not.
+// contains(P, segment3 | triangle3 | tetrahedron3) cases: a segment (or triangle, or tetrahedron)
+// between points of the near-degenerate set's boundary or inside (the extreme points and X), then
+// its last vertex nudged by one ulp or not.
 template <class P, class S = incidence::segment3>
 std::optional<std::pair<P, S>> halfspace_inside_case(rng& r) {
     using namespace incidence;
@@ -364,7 +366,10 @@ std::optional<std::pair<P, S>> halfspace_inside_case(rng& r) {
     for (const auto& p : h.planes) on.push_back(p.x);
     auto pick = [&] { return on[static_cast<std::size_t>(r.integer(0, static_cast<int>(on.size()) - 1))]; };
     S s;
-    if constexpr (std::is_same_v<S, triangle3>) {
+    if constexpr (std::is_same_v<S, tetrahedron3>) {
+        const point3 a = pick(), b = pick(), c = pick();
+        s = {a, b, c, pick()};
+    } else if constexpr (std::is_same_v<S, triangle3>) {
         const point3 a = pick(), b = pick();
         s = {a, b, pick()};
     } else {
@@ -374,7 +379,9 @@ std::optional<std::pair<P, S>> halfspace_inside_case(rng& r) {
     transform tr = random_transform(r, r.coin(), true);
     const P a = realise_as<P>(h, tr);
     s = realise(s, tr);
-    if constexpr (std::is_same_v<S, triangle3>) {
+    if constexpr (std::is_same_v<S, tetrahedron3>) {
+        if (r.coin()) s.d.x = std::nextafter(s.d.x, r.coin() ? 1e308 : -1e308);
+    } else if constexpr (std::is_same_v<S, triangle3>) {
         if (r.coin()) s.c.x = std::nextafter(s.c.x, r.coin() ? 1e308 : -1e308);
     } else if (r.coin()) s.b.x = std::nextafter(s.b.x, r.coin() ? 1e308 : -1e308);
     if (!finite_shape(a)) return std::nullopt;

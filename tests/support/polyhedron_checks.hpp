@@ -17,7 +17,7 @@ void halfspace_oracle(const std::string& name, long n, double approx_bound) {
     rng r(seed() + (std::is_same_v<P, frustum3> ? 17u : 0u));
     for (int near = 0; near < 2; ++near) {
         tally t{name + (near ? " near-degenerate" : " random")};
-        long skipped = 0, yes = 0;
+        long skipped = 0, yes = 0, held = 0;
         for (long i = 0; i < n; ++i) {
             const auto c = near ? halfspace_near<P, B>(r) : halfspace_random<P, B>(r);
             std::optional<bool> truth;
@@ -25,6 +25,7 @@ void halfspace_oracle(const std::string& name, long n, double approx_bound) {
             if (!truth) { ++skipped; continue; } // overflowed, or the LP's certificate check declined
             yes += *truth;
             check_pair(t, c->first, c->second, *truth, approx_bound, [&] { return shape_str(c->first) + " " + shape_str(c->second); });
+            held += held_whole(c->first, c->second, *truth);
         }
         std::printf("[cases] %s: %ld of %ld meet; %ld generated cases skipped (not finite, or the oracle declined)\n", t.name.c_str(), yes,
                     t.n, skipped);
@@ -32,6 +33,10 @@ void halfspace_oracle(const std::string& name, long n, double approx_bound) {
         require_contracts(t);
         CHECK(yes > 0);
         CHECK(yes < t.n);
+        if constexpr (std::is_same_v<B, tetrahedron3>) {
+            print_held_whole(t.name, held);
+            if (near) CHECK(held > 0);
+        }
     }
 }
 
@@ -66,7 +71,7 @@ void halfspace_symmetries(const std::string& name, long n) {
     CHECK(yes > 0);
 }
 
-// contains(P, B) for B = point3, segment3, triangle3 or aabb3 against the LP (each vertex in the half-spaces), on
+// contains(P, B) for B = point3, segment3, triangle3, tetrahedron3 or aabb3 against the LP (each vertex in the half-spaces), on
 // near-degenerate, random and inside cases: n of each.
 template <class P, class B>
 void halfspace_contains_oracle(const std::string& name, long n, double approx_bound) {
@@ -77,7 +82,7 @@ void halfspace_contains_oracle(const std::string& name, long n, double approx_bo
     for (long i = 0; i < 3 * n; ++i) {
         std::optional<std::pair<P, B>> c;
         if (i % 3 == 2) {
-            if constexpr (std::is_same_v<B, triangle3>) c = halfspace_inside_case<P, triangle3>(r);
+            if constexpr (std::is_same_v<B, triangle3> || std::is_same_v<B, tetrahedron3>) c = halfspace_inside_case<P, B>(r);
             else if (const auto s = halfspace_inside_case<P>(r)) {
                 if constexpr (std::is_same_v<B, segment3>) c = s;
                 else if constexpr (std::is_same_v<B, aabb3>) c = std::pair{s->first, ordered(aabb3{s->second.a, s->second.b})};
@@ -86,14 +91,8 @@ void halfspace_contains_oracle(const std::string& name, long n, double approx_bo
         } else c = i % 3 ? halfspace_near<P, B>(r) : halfspace_random<P, B>(r);
         if (!c || !finite_shape(c->second)) continue;
         const auto& [a, b] = *c;
-        std::vector<point3> v;
-        if constexpr (std::is_same_v<B, segment3>) v = {b.a, b.b};
-        else if constexpr (std::is_same_v<B, triangle3>) v = {b.a, b.b, b.c};
-        else if constexpr (std::is_same_v<B, aabb3>)
-            for (int k = 0; k < 8; ++k) v.push_back({(k & 1) ? b.max.x : b.min.x, (k & 2) ? b.max.y : b.min.y, (k & 4) ? b.max.z : b.min.z});
-        else v = {b};
         bool truth = true;
-        for (const auto& p : v) truth = truth && oracle::lp_intersect(lp(a), lp(p));
+        for (const auto& p : hull_points(b)) truth = truth && oracle::lp_intersect(lp(a), lp(p));
         yes += truth;
         check_contains(t, a, b, truth, approx_bound, [&] { return shape_str(a) + " " + shape_str(b); });
     }

@@ -33,6 +33,9 @@ constexpr frustum3 reflected(const frustum3& f, point3 c) {
 // unit cube, and the integer frustum's section |x|, |y| <= z0 while z0 < 10/3, so where it meets
 // those, it is by its interior.
 constexpr triangle3 wide_triangle(double z0) { return {{-10, -10, z0}, {10, -10, z0}, {0, 10, z0}}; }
+// A large tetrahedron below the plane z = z0, its top face in that plane: it holds the unit cube and
+// the integer frustum whole when z0 is above them.
+constexpr tetrahedron3 wide_tetrahedron(double z0) { return {{-100, -100, z0}, {100, -100, z0}, {0, 100, z0}, {0, 0, z0 - 400}}; }
 // Looking down -z from the origin, 90 degrees, square, near 1, far 100 (computed planes).
 inline const frustum3 camera = frustum3::from_camera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 1.5707963267948966, 1.0, 1.0, 100.0).value();
 

@@ -623,6 +623,13 @@ struct near_boundary<kdop<14>, triangle3> {
     }
 };
 template <>
+struct near_boundary<kdop<14>, tetrahedron3> {
+    static std::pair<kdop<14>, tetrahedron3> touching(rng& r) { // a vertex at p, the others outwards
+        const auto t = touching_kdop(r);
+        return {t.box, tetrahedron3{t.p, t.p + outward(r, t, 300), t.p + outward(r, t, 300), t.p + outward(r, t, 300)}};
+    }
+};
+template <>
 struct near_boundary<aabb3, kdop<14>> {
     static std::pair<aabb3, kdop<14>> touching(rng& r) { // a box with its corner at p, outwards
         const auto t = touching_kdop(r);
@@ -759,6 +766,8 @@ struct near_boundary<P, B> {
             return {t.shape, q};
         } else if constexpr (std::is_same_v<B, triangle3>) { // a corner at p, the others outwards
             return {t.shape, triangle3{t.p, t.p + outward(r, t.o, 300), t.p + outward(r, t.o, 300)}};
+        } else if constexpr (std::is_same_v<B, tetrahedron3>) { // a vertex at p, the others outwards
+            return {t.shape, tetrahedron3{t.p, t.p + outward(r, t.o, 300), t.p + outward(r, t.o, 300), t.p + outward(r, t.o, 300)}};
         } else if constexpr (std::is_same_v<B, frustum3> && std::is_same_v<P, frustum3>) {
             // the frustum reflected through its corner p (x -> 2p - x, exact: integers): the two
             // touch at p only
