@@ -48,6 +48,8 @@ void register_halfspace(bool near) {
             [](const std::pair<frustum3, aabb3>& c) { return method::aabb_frustum_culling(c.second, c.first); });
         reg(std::string("sat/intersects/aabb_frustum/") + (near ? "near_degenerate" : "random"), cs, t, check::approximate,
             [](const std::pair<frustum3, aabb3>& c) { return method::aabb_frustum_sat(c.second, c.first); });
+        reg(std::string("decomposition/intersects/aabb_frustum/") + (near ? "near_degenerate" : "random"), cs, t, check::approximate,
+            [](const std::pair<frustum3, aabb3>& c) { return method::aabb_frustum_decomposition(c.second, c.first); });
     }
 }
 } // namespace bench

@@ -8,7 +8,8 @@
 // Source: vertex enumeration for LP feasibility (Schrijver, Theory of Linear and Integer
 // Programming, 1986, section 8.5); the plane-box rejection of frustum culling (Assarsson and
 // Moeller, "Optimized view frustum culling algorithms for bounding boxes", JGT 5(1), 2000).
-// The catalog's alternative: aabb_frustum_sat, the separating-axis test in double (below). Kept for
+// The catalog's alternatives: aabb_frustum_sat, the separating-axis test in double, and
+// aabb_frustum_decomposition, the frustum as six tetrahedra in double (below). Kept for
 // comparison in the benchmarks (not a catalog alternative, since it errs far from the boundary
 // too): aabb_frustum_culling, the culling test alone in double (no plane has the whole
 // box beyond it: yes), which answers yes for boxes beside the frustum's edges and corners.
@@ -40,7 +41,22 @@ template <class K>
     }
     return true;
 }
-// The separating-axis test in plain double, the catalog's alternative: the box's three axes, the
+// The frustum's eight corners in double, where three planes meet (near or far, left or right,
+// bottom or top: corner m takes planes m & 1, 2 + bit 1 and 4 + bit 2): false where one does not
+// exist (parallel planes) or is not finite.
+[[nodiscard]] constexpr bool frustum_corners(const frustum3& f, point3 (&corner)[8]) {
+    const plane3* pl = f.planes.data();
+    for (unsigned m = 0; m < 8; ++m) {
+        const plane3 p = pl[m & 1u], q = pl[2 + ((m >> 1) & 1u)], r = pl[4 + ((m >> 2) & 1u)];
+        const vec3 qr = cross(q.normal, r.normal), rp = cross(r.normal, p.normal), pq = cross(p.normal, q.normal);
+        const double d = dot(p.normal, qr);
+        const vec3 v = (qr * p.offset + rp * q.offset + pq * r.offset) * (1.0 / d);
+        if (!(d != 0) || !finite(v)) return false;
+        corner[m] = point3{v.x, v.y, v.z};
+    }
+    return true;
+}
+// The separating-axis test in plain double, the catalog's first alternative: the box's three axes, the
 // frustum's six face normals and the cross products of the box axes with the frustum's twelve
 // edge directions (n_i x n_j for the near and far faces with each side, and the four side
 // edges), the frustum projected through its eight corners (plane triples: near or far, left or
@@ -52,16 +68,9 @@ template <class K>
     if (!well_formed_finite(b) || !polyq::well_formed(f.planes.data(), 6, 6)) return false;
     const plane3* pl = f.planes.data();
     point3 corner[8];
-    for (unsigned m = 0; m < 8; ++m) {
-        const plane3 p = pl[m & 1u], q = pl[2 + ((m >> 1) & 1u)], r = pl[4 + ((m >> 2) & 1u)];
-        const vec3 qr = cross(q.normal, r.normal), rp = cross(r.normal, p.normal), pq = cross(p.normal, q.normal);
-        const double d = dot(p.normal, qr);
-        const vec3 v = (qr * p.offset + rp * q.offset + pq * r.offset) * (1.0 / d);
-        if (!(d != 0) || !finite(v)) {
-            arith::approx_kernel k;
-            return polyq::box_meets(k, b, pl, 6);
-        }
-        corner[m] = point3{v.x, v.y, v.z};
+    if (!frustum_corners(f, corner)) {
+        arith::approx_kernel k;
+        return polyq::box_meets(k, b, pl, 6);
     }
     const point3 c{0.5 * b.min.x + 0.5 * b.max.x, 0.5 * b.min.y + 0.5 * b.max.y, 0.5 * b.min.z + 0.5 * b.max.z};
     const vec3 h{0.5 * b.max.x - 0.5 * b.min.x, 0.5 * b.max.y - 0.5 * b.min.y, 0.5 * b.max.z - 0.5 * b.min.z};
@@ -87,6 +96,26 @@ template <class K>
             if (separates(cross(a, d))) return false;
     }
     return true;
+}
+// The decomposition test in plain double, the catalog's second alternative: the frustum's eight
+// corners (as in aabb_frustum_sat; where one does not exist, the vertex test in double decides)
+// split into six tetrahedra around the diagonal from corner 0 to corner 7, each against the box by
+// aabb_tetrahedron's approximate tier.
+// Source: Dompierre, Labbe, Vallet and Camarero, "How to subdivide pyramids, prisms and hexahedra
+// into tetrahedra", 8th International Meshing Roundtable, 1999 (six tetrahedra around a diagonal).
+[[nodiscard]] constexpr bool aabb_frustum_decomposition(const aabb3& b, const frustum3& f) {
+    if (!well_formed_finite(b) || !polyq::well_formed(f.planes.data(), 6, 6)) return false;
+    arith::approx_kernel k;
+    point3 corner[8];
+    if (!frustum_corners(f, corner)) return polyq::box_meets(k, b, f.planes.data(), 6);
+    // corner m: bit 0 near or far, bit 1 left or right, bit 2 bottom or top; the tetrahedra
+    // 0, 1 << i, 1 << i | 1 << j, 7 for the six orders (i, j) of two of the three bits
+    constexpr unsigned order[6][2] = {{0, 1}, {0, 2}, {1, 0}, {1, 2}, {2, 0}, {2, 1}};
+    for (const auto& o : order) {
+        const unsigned one = 1u << o[0], two = one | (1u << o[1]);
+        if (intersects(k, b, tetrahedron3{corner[0], corner[one], corner[two], corner[7]})) return true;
+    }
+    return false;
 }
 template <class K>
 [[nodiscard]] constexpr bool contains(K& k, const frustum3& f, const aabb3& b) {

@@ -149,9 +149,11 @@ inline constexpr std::tuple families{
     family<frustum3, line3, 0>{"frustum_line", "obb", "signs in double", {}},
     // A box against a half-space set: the vertex test on the set's and the box's planes.
     family<aabb3, convex_polyhedron3, 0>{"aabb_convex_polyhedron", "obb", "signs in double", {}},
-    family<aabb3, frustum3, 1>{"aabb_frustum", "obb", "signs in double",
+    family<aabb3, frustum3, 2>{"aabb_frustum", "obb", "signs in double",
                                {{{"sat", "separating axes in double: Gottschalk, Lin and Manocha, OBBTree, SIGGRAPH 1996",
-                                  [](const aabb3& b, const frustum3& f) { return method::aabb_frustum_sat(b, f); }}}}},
+                                  [](const aabb3& b, const frustum3& f) { return method::aabb_frustum_sat(b, f); }},
+                                 {"decomposition", "six tetrahedra in double: Dompierre et al., IMR 1999",
+                                  [](const aabb3& b, const frustum3& f) { return method::aabb_frustum_decomposition(b, f); }}}}},
     // A plane against a half-space set: the set's points on both sides (two feasibility tests).
     family<convex_polyhedron3, plane3, 0>{"convex_polyhedron_plane", "obb", "signs in double", {}},
     family<frustum3, plane3, 0>{"frustum_plane", "obb", "signs in double", {}},

@@ -290,6 +290,7 @@ namespace method {
 [[nodiscard]] constexpr bool obb_obb_gottschalk(const obb3& a, const obb3& b) { return pair::obb_obb_gottschalk(a, b); }
 [[nodiscard]] constexpr bool aabb_frustum_culling(const aabb3& b, const frustum3& f) { return pair::aabb_frustum_culling(b, f); }
 [[nodiscard]] constexpr bool aabb_frustum_sat(const aabb3& b, const frustum3& f) { return pair::aabb_frustum_sat(b, f); }
+[[nodiscard]] constexpr bool aabb_frustum_decomposition(const aabb3& b, const frustum3& f) { return pair::aabb_frustum_decomposition(b, f); }
 } // namespace method
 
 } // namespace incidence

@@ -2,7 +2,7 @@
 // 20,000 random and 20,000 near-degenerate cases (an axis-aligned integer frustum (corners dyadic) or a camera frustum (frustum3::from_camera), the box placed at one of its
 // boundary points, flat or not; then a random exact-or-nudged scale 2^-500..2^500 and
 // translation); both argument orders, rewritten shapes, exact translations of both; contains; the
-// culling test's and the separating-axis test's (in double) answers beside the exact ones.
+// culling, separating-axis and six-tetrahedra tests' (in double) answers beside the exact ones.
 #include <catch2/catch_test_macros.hpp>
 #include <cmath>
 #include "../oracle/cgal_oracle.hpp"
@@ -36,6 +36,12 @@ TEST_CASE("aabb_frustum: fixtures", "[aabb_frustum]") {
     CHECK(method::aabb_frustum_culling(beside, integer_frustum));
     CHECK_FALSE(method::aabb_frustum_sat(beside, integer_frustum)); // an edge-cross-axis separates it
     CHECK(method::aabb_frustum_sat(aabb3{{4, 4, 4}, {5, 5, 5}}, integer_frustum));
+    CHECK_FALSE(method::aabb_frustum_decomposition(beside, integer_frustum)); // no tetrahedron meets it
+    CHECK(method::aabb_frustum_decomposition(aabb3{{4, 4, 4}, {5, 5, 5}}, integer_frustum)); // the far corner
+    CHECK(method::aabb_frustum_decomposition(aabb3{{-0.5, -0.5, 2}, {0.5, 0.5, 3}}, integer_frustum)); // inside
+    CHECK(method::aabb_frustum_decomposition(aabb3{{-1, -1, -200}, {1, 1, -50}}, camera));
+    CHECK_FALSE(method::aabb_frustum_decomposition(aabb3{{-1, -1, -0.5}, {1, 1, 0}}, camera)); // before the near plane
+    CHECK_FALSE(method::aabb_frustum_decomposition(aabb3{{4, 4, 0x1.0000000000001p2}, {5, 5, 5}}, integer_frustum));
     CHECK(intersects(aabb3{{-1, -1, -200}, {1, 1, -50}}, camera));
     CHECK_FALSE(intersects(aabb3{{-1, -1, -0.5}, {1, 1, 0}}, camera));
     CHECK(contains(integer_frustum, aabb3{{-1, -1, 1}, {1, 1, 1}})); // the near face itself
@@ -51,9 +57,9 @@ TEST_CASE("aabb_frustum: rewrites of both shapes and exact translations give the
 TEST_CASE("aabb_frustum: contains", "[aabb_frustum][oracle]") {
     support::halfspace_contains_oracle<frustum3, aabb3>("aabb_frustum", support::cases(2000), approx_bound);
 }
-TEST_CASE("aabb_frustum: the culling test's and the separating-axis test's wrong answers, counted against the exact tier", "[aabb_frustum]") {
+TEST_CASE("aabb_frustum: the culling, separating-axis and decomposition tests' wrong answers, counted against the exact tier", "[aabb_frustum]") {
     support::rng r(support::seed() + 5);
-    long n = 0, yes = 0, culling_yes_wrongly = 0, culling_no_wrongly = 0, sat_wrong[2] = {0, 0};
+    long n = 0, yes = 0, culling_yes_wrongly = 0, culling_no_wrongly = 0, sat_wrong[2] = {0, 0}, split_wrong[2] = {0, 0};
     for (long i = 0; i < support::cases(20000); ++i) {
         const auto c = (i % 2) ? support::halfspace_near<frustum3, aabb3>(r) : support::halfspace_random<frustum3, aabb3>(r);
         if (!c) continue;
@@ -63,13 +69,21 @@ TEST_CASE("aabb_frustum: the culling test's and the separating-axis test's wrong
         culling_yes_wrongly += cull && !e;
         culling_no_wrongly += !cull && e;
         sat_wrong[i % 2] += method::aabb_frustum_sat(c->second, c->first) != e;
+        split_wrong[i % 2] += method::aabb_frustum_decomposition(c->second, c->first) != e;
     }
     std::printf("[cases] aabb_frustum culling test: %ld cases, %ld meet; culling says yes for %ld that miss, no for %ld that meet\n", n, yes,
                 culling_yes_wrongly, culling_no_wrongly);
     std::printf("[cases] aabb_frustum separating axes in double: wrong on %ld random and %ld near-degenerate cases\n", sat_wrong[0], sat_wrong[1]);
+    std::printf("[cases] aabb_frustum six tetrahedra in double: wrong on %ld random and %ld near-degenerate cases\n", split_wrong[0],
+                split_wrong[1]);
     CHECK(yes > 0);
     CHECK(culling_yes_wrongly > 0); // its known weakness: boxes beside an edge or a corner
     CHECK(sat_wrong[0] == 0);       // the axes are complete: wrong only by rounding, at the boundary
+    // The six tetrahedra cover the frustum exactly, but their corners are computed in double from the
+    // planes: for a frustum far from the origin against its size (random translations), the offsets
+    // nearly cancel and the corners lose most of their bits, so the test errs away from the boundary
+    // too (about 0.8% of the random cases). Counted, not required to be zero; the fixtures check
+    // its geometry.
 }
 
 } // namespace test_query_aabb_frustum
