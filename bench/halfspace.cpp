@@ -1,5 +1,6 @@
 // Benchmarks: the k-DOP pairs and the half-space pairs (convex_polyhedron3, frustum3; against a box
-// also the frustum culling test and the separating-axis test in double), the LP as truth.
+// or an oriented box also the frustum culling test (box only), the separating-axis and the
+// decomposition tests in double), the LP as truth.
 #include "bench.hpp"
 
 namespace bench {
@@ -18,6 +19,8 @@ void register_halfspace(bool near) {
     kdop_tiers<14, tetrahedron3>("kdop_tetrahedron", near);
     kdop_tiers<26, tetrahedron3>("kdop_tetrahedron", near);
     kdop_tiers<26, plane3>("kdop_plane", near);
+    kdop_tiers<14, obb3>("kdop_obb", near);
+    kdop_tiers<26, obb3>("kdop_obb", near);
     halfspace_tiers<convex_polyhedron3, point3>("convex_polyhedron_point", near);
     halfspace_tiers<convex_polyhedron3, segment3>("convex_polyhedron_segment", near);
     halfspace_tiers<convex_polyhedron3, ray3>("convex_polyhedron_ray", near);
@@ -40,6 +43,16 @@ void register_halfspace(bool near) {
     halfspace_tiers<frustum3, kdop<14>>("frustum_kdop_14", near);
     halfspace_tiers<frustum3, kdop<26>>("frustum_kdop_26", near);
     halfspace_tiers<convex_polyhedron3, aabb3>("aabb_convex_polyhedron", near);
+    halfspace_tiers<convex_polyhedron3, obb3>("convex_polyhedron_obb", near);
+    {
+        const auto cs = halfspace_tiers<frustum3, obb3>("frustum_obb", near);
+        std::vector<bool> t;
+        for (const auto& c : cs) t.push_back(oracle::lp_intersect(support::lp(c.first), support::lp(c.second)));
+        reg(std::string("sat/intersects/frustum_obb/") + (near ? "near_degenerate" : "random"), cs, t, check::approximate,
+            [](const std::pair<frustum3, obb3>& c) { return method::frustum_obb_sat(c.first, c.second); });
+        reg(std::string("decomposition/intersects/frustum_obb/") + (near ? "near_degenerate" : "random"), cs, t, check::approximate,
+            [](const std::pair<frustum3, obb3>& c) { return method::frustum_obb_decomposition(c.first, c.second); });
+    }
     {
         const auto cs = halfspace_tiers<frustum3, aabb3>("aabb_frustum", near);
         std::vector<bool> t;

@@ -12,7 +12,9 @@
 // convex_polyhedron_plane and frustum_plane; convex_polyhedron_convex_polyhedron,
 // convex_polyhedron_frustum, convex_polyhedron_kdop, frustum_kdop and frustum_frustum;
 // convex_polyhedron_triangle, frustum_triangle and kdop_triangle; convex_polyhedron_tetrahedron,
-// frustum_tetrahedron and kdop_tetrahedron; contains(., point | segment | triangle | tetrahedron | box)), against the LP with the half-spaces as rows. Any finding
+// frustum_tetrahedron and kdop_tetrahedron; convex_polyhedron_obb, frustum_obb and kdop_obb;
+// contains(., point | segment | triangle | tetrahedron | box | oriented box)), against the LP with the half-spaces as rows
+// (an oriented box's containment: its corners in exact rationals). Any finding
 // aborts.
 #include "../tests/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
@@ -152,6 +154,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             if (contains(kd, box) != all) std::abort();
         }
         if (contains(kd, seg) != (intersects(kd, seg.a) && intersects(kd, seg.b))) std::abort();
+        check(kd, w); // the box's own frame, then the vertex search
+        if (contains(kd, w) != support::contained_truth(kd, w)) std::abort();
     };
     // The half-space pairs, on cp and fr above.
     auto halfspaces = [&](const auto& h) {
@@ -172,10 +176,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             for (int j = 0; j < 8; ++j) all = intersects(h, point3{(j & 1) ? q.x : p.x, (j & 2) ? q.y : p.y, (j & 4) ? q.z : p.z}) && all;
             if (contains(h, box) != all) std::abort();
         } else if (intersects(box, h)) std::abort();
+        check(h, w); // the box's own frame, then the vertex search
+        if (contains(h, w) != support::contained_truth(h, w)) std::abort();
     };
     {
         halfspaces(cp);
         halfspaces(fr);
+        (void)method::frustum_obb_sat(fr, o);
+        (void)method::frustum_obb_decomposition(fr, o);
         // two half-space sets: a second polyhedron of 1 to 6 planes from other doubles (byte 2)
         convex_polyhedron3 cp2{};
         cp2.count = size < 3 ? 1 : 1 + data[2] % 6;

@@ -60,11 +60,31 @@ template <class K, class F>
     return (a.x == c.x && a.y == c.y && a.z == c.z) || (a.x == -c.x && a.y == -c.y && a.z == -c.z);
 }
 
-// A vertex of the set of the `total` half-spaces n_i . x <= c_i: planes i, j and l, with
+// The rows a vertex search reads: row x is the half-space normal(L, x) . v <= offset(L, x), with
+// zero(x) and parallel(x, y) known without a sign. plane_rows reads plane3 values as they are;
+// frame_rows (obb_convex_polyhedron.cppm) reads a set in a box's own coordinates.
+struct plane_rows {
+    const plane3* p;
+    unsigned total;
+    [[nodiscard]] constexpr unsigned size() const { return total; }
+    [[nodiscard]] constexpr bool zero(unsigned x) const { return zero_normal(p, x); }
+    [[nodiscard]] constexpr bool parallel(unsigned x, unsigned y) const { return parallel_normals(p, x, y); }
+    template <class L>
+    [[nodiscard]] constexpr auto normal(L l, unsigned x) const { return arith::lift(l, p[x].normal); }
+    template <class L>
+    [[nodiscard]] constexpr auto offset(L l, unsigned x) const { return l(p[x].offset); }
+};
+
+// A vertex of the set of the `total` half-spaces n_i . x <= c_i: rows i, j and l, with
 // independent normals, meet at v = V / D inside every half-space, where D = det(n_i, n_j, n_l) and
 // V = c_i n_j x n_l + c_j n_l x n_i + c_l n_i x n_j (vertex_numerator); n_h . v <= c_h iff
-// sign(c_h D - n_h . V) is zero or sign(D): homogeneous signs of degree 4. `independent`: some
-// three normals are independent (the set, when not empty, then has a vertex).
+// sign(c_h D - n_h . V) is zero or sign(D): homogeneous signs (degree 4 for plane3 rows).
+// `independent`: some three normals are independent (the set, when not empty, then has a vertex).
+struct row_vertex {
+    bool found = false, independent = false;
+    unsigned i = 0, j = 0, l = 0;
+    sign d = sign::zero;
+};
 struct set_vertex {
     bool found = false, independent = false;
     plane3 i{}, j{}, l{};
@@ -79,26 +99,26 @@ template <class L>
     using T = decltype(ca * x.x + cc * y.x + ce * z.x);
     return arith::v3<T>{ca * x.x + cc * y.x + ce * z.x, ca * x.y + cc * y.y + ce * z.y, ca * x.z + cc * y.z + ce * z.z};
 }
-template <class K>
-[[nodiscard]] constexpr set_vertex first_vertex(K& k, const plane3* rows, unsigned total) {
-    set_vertex found;
+template <class K, class Rows>
+[[nodiscard]] constexpr row_vertex first_row_vertex(K& k, const Rows& rows) {
+    row_vertex found;
+    const unsigned total = rows.size();
     for (unsigned i = 0; i < total; ++i) {
-        if (zero_normal(rows, i)) continue;
+        if (rows.zero(i)) continue;
         for (unsigned j = i + 1; j < total; ++j) {
-            if (zero_normal(rows, j) || parallel_normals(rows, i, j)) continue;
+            if (rows.zero(j) || rows.parallel(i, j)) continue;
             for (unsigned l = j + 1; l < total; ++l) {
-                if (zero_normal(rows, l) || parallel_normals(rows, i, l) || parallel_normals(rows, j, l)) continue;
-                const plane3 a = rows[i], c = rows[j], e = rows[l];
-                const sign d = settled(k, [=](auto L) { return arith::det3(arith::lift(L, a.normal), arith::lift(L, c.normal), arith::lift(L, e.normal)); });
+                if (rows.zero(l) || rows.parallel(i, l) || rows.parallel(j, l)) continue;
+                const sign d = settled(k, [=](auto L) { return arith::det3(rows.normal(L, i), rows.normal(L, j), rows.normal(L, l)); });
                 if (d == sign::zero) continue; // no single point
                 found.independent = true;
                 auto beyond = [=](unsigned r) { // c_h D - n_h . V, with n_h . (n_j x n_k) = det(n_h, n_j, n_k)
-                    const plane3 h = rows[r];
                     return [=](auto L) {
-                        const auto na = arith::lift(L, a.normal), nc = arith::lift(L, c.normal), ne = arith::lift(L, e.normal);
-                        const auto nh = arith::lift(L, h.normal);
-                        return L(h.offset) * arith::det3(na, nc, ne) -
-                               (L(a.offset) * arith::det3(nh, nc, ne) + L(c.offset) * arith::det3(nh, ne, na) + L(e.offset) * arith::det3(nh, na, nc));
+                        const auto na = rows.normal(L, i), nc = rows.normal(L, j), ne = rows.normal(L, l);
+                        const auto nh = rows.normal(L, r);
+                        return rows.offset(L, r) * arith::det3(na, nc, ne) -
+                               (rows.offset(L, i) * arith::det3(nh, nc, ne) + rows.offset(L, j) * arith::det3(nh, ne, na) +
+                                rows.offset(L, l) * arith::det3(nh, na, nc));
                     };
                 };
                 // a row the filter proves the vertex outside of rejects it before any sign is
@@ -116,12 +136,20 @@ template <class K>
                 }
                 if (vertex_inside) {
                     found.found = true;
-                    found.i = a, found.j = c, found.l = e, found.d = d;
+                    found.i = i, found.j = j, found.l = l, found.d = d;
                     return found;
                 }
             }
         }
     }
+    return found;
+}
+template <class K>
+[[nodiscard]] constexpr set_vertex first_vertex(K& k, const plane3* rows, unsigned total) {
+    const row_vertex v = first_row_vertex(k, plane_rows{rows, total});
+    set_vertex found;
+    found.found = v.found, found.independent = v.independent, found.d = v.d;
+    if (v.found) found.i = rows[v.i], found.j = rows[v.j], found.l = rows[v.l];
     return found;
 }
 

@@ -56,67 +56,85 @@ template <class K>
     }
     return true;
 }
-// The separating-axis test in plain double, the catalog's first alternative: the box's three axes, the
-// frustum's six face normals and the cross products of the box axes with the frustum's twelve
-// edge directions (n_i x n_j for the near and far faces with each side, and the four side
-// edges), the frustum projected through its eight corners (plane triples: near or far, left or
-// right, bottom or top), so the six planes must bound a frustum of a camera's shape; where a
-// corner does not exist, the vertex test in double decides.
+// The separating-axis test in plain double of a box (centre c, axes a_j, half extents h_j: the
+// parallelepiped they span; an axis-aligned box has the unit axes) against a frustum: the box's
+// three face normals (a_j x a_k, its axes when they are orthonormal), the frustum's six face
+// normals and the cross products of the box axes with the frustum's twelve edge directions
+// (n_i x n_j for the near and far faces with each side, and the four side edges), the frustum
+// projected through its eight corners (plane triples: near or far, left or right, bottom or top),
+// so the six planes must bound a frustum of a camera's shape. The box projects onto w as
+// w . c +- sum_j h_j |w . a_j|. False when a corner does not exist (the caller decides then).
 // Source: Gottschalk, Lin and Manocha, "OBBTree", SIGGRAPH 1996, section 5 (the axes of two convex
 // polyhedra); Ericson, Real-Time Collision Detection, 2005, section 5.2.1 (box projection radius).
-[[nodiscard]] constexpr bool aabb_frustum_sat(const aabb3& b, const frustum3& f) {
-    if (!well_formed_finite(b) || !polyq::well_formed(f.planes.data(), 6, 6)) return false;
+struct box_frame {
+    point3 c;
+    vec3 a[3];
+    double h[3];
+};
+[[nodiscard]] constexpr bool box_frustum_sat(const box_frame& b, const frustum3& f, const point3 (&corner)[8]) {
     const plane3* pl = f.planes.data();
-    point3 corner[8];
-    if (!frustum_corners(f, corner)) {
-        arith::approx_kernel k;
-        return polyq::box_meets(k, b, pl, 6);
-    }
-    const point3 c{0.5 * b.min.x + 0.5 * b.max.x, 0.5 * b.min.y + 0.5 * b.max.y, 0.5 * b.min.z + 0.5 * b.max.z};
-    const vec3 h{0.5 * b.max.x - 0.5 * b.min.x, 0.5 * b.max.y - 0.5 * b.min.y, 0.5 * b.max.z - 0.5 * b.min.z};
     auto mag = [](double x) { return x < 0 ? -x : x; };
-    auto separates = [&](vec3 a) {
+    auto separates = [&](vec3 w) {
         double lo = __builtin_huge_val(), hi = -__builtin_huge_val();
         for (const point3& x : corner) {
-            const double t = dot(a, x - c);
+            const double t = dot(w, x - b.c);
             lo = t < lo ? t : lo, hi = t > hi ? t : hi;
         }
-        const double r = h.x * mag(a.x) + h.y * mag(a.y) + h.z * mag(a.z);
+        const double r = b.h[0] * mag(dot(w, b.a[0])) + b.h[1] * mag(dot(w, b.a[1])) + b.h[2] * mag(dot(w, b.a[2]));
         return lo > r || hi < -r;
     };
-    const vec3 axis[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    for (const vec3& a : axis)
-        if (separates(a)) return false;
+    for (unsigned j = 0; j < 3; ++j)
+        if (separates(cross(b.a[(j + 1) % 3], b.a[(j + 2) % 3]))) return false;
     for (const plane3& p : f.planes)
         if (separates(p.normal)) return false;
     constexpr unsigned edge[12][2] = {{0, 2}, {0, 3}, {0, 4}, {0, 5}, {1, 2}, {1, 3}, {1, 4}, {1, 5}, {2, 4}, {2, 5}, {3, 4}, {3, 5}};
     for (const auto& e : edge) {
         const vec3 d = cross(pl[e[0]].normal, pl[e[1]].normal);
-        for (const vec3& a : axis)
+        for (const vec3& a : b.a)
             if (separates(cross(a, d))) return false;
     }
     return true;
 }
-// The decomposition test in plain double, the catalog's second alternative: the frustum's eight
-// corners (as in aabb_frustum_sat; where one does not exist, the vertex test in double decides)
-// split into six tetrahedra around the diagonal from corner 0 to corner 7, each against the box by
-// aabb_tetrahedron's approximate tier.
+// The catalog's first alternative: box_frustum_sat on the box's centre and extents; where a
+// frustum corner does not exist, the vertex test in double decides.
+[[nodiscard]] constexpr bool aabb_frustum_sat(const aabb3& b, const frustum3& f) {
+    if (!well_formed_finite(b) || !polyq::well_formed(f.planes.data(), 6, 6)) return false;
+    point3 corner[8];
+    if (!frustum_corners(f, corner)) {
+        arith::approx_kernel k;
+        return polyq::box_meets(k, b, f.planes.data(), 6);
+    }
+    const box_frame e{{0.5 * b.min.x + 0.5 * b.max.x, 0.5 * b.min.y + 0.5 * b.max.y, 0.5 * b.min.z + 0.5 * b.max.z},
+                      {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
+                      {0.5 * b.max.x - 0.5 * b.min.x, 0.5 * b.max.y - 0.5 * b.min.y, 0.5 * b.max.z - 0.5 * b.min.z}};
+    return box_frustum_sat(e, f, corner);
+}
+// The decomposition test in plain double: the frustum's eight corners split into six tetrahedra
+// around the diagonal from corner 0 to corner 7, each against the box by `meets` (the
+// box-tetrahedron pair's approximate tier: aabb_tetrahedron, obb_tetrahedron).
 // Source: Dompierre, Labbe, Vallet and Camarero, "How to subdivide pyramids, prisms and hexahedra
 // into tetrahedra", 8th International Meshing Roundtable, 1999 (six tetrahedra around a diagonal).
-[[nodiscard]] constexpr bool aabb_frustum_decomposition(const aabb3& b, const frustum3& f) {
-    if (!well_formed_finite(b) || !polyq::well_formed(f.planes.data(), 6, 6)) return false;
-    arith::approx_kernel k;
-    point3 corner[8];
-    if (!frustum_corners(f, corner)) return polyq::box_meets(k, b, f.planes.data(), 6);
+template <class Meets>
+[[nodiscard]] constexpr bool box_frustum_decomposition(const Meets& meets, const point3 (&corner)[8]) {
     // corner m: bit 0 near or far, bit 1 left or right, bit 2 bottom or top; the tetrahedra
     // 0, 1 << i, 1 << i | 1 << j, 7 for the six orders (i, j) of two of the three bits
     constexpr unsigned order[6][2] = {{0, 1}, {0, 2}, {1, 0}, {1, 2}, {2, 0}, {2, 1}};
     for (const auto& o : order) {
         const unsigned one = 1u << o[0], two = one | (1u << o[1]);
-        if (intersects(k, b, tetrahedron3{corner[0], corner[one], corner[two], corner[7]})) return true;
+        if (meets(tetrahedron3{corner[0], corner[one], corner[two], corner[7]})) return true;
     }
     return false;
 }
+// The catalog's second alternative: box_frustum_decomposition; where a corner does not exist, the
+// vertex test in double decides.
+[[nodiscard]] constexpr bool aabb_frustum_decomposition(const aabb3& b, const frustum3& f) {
+    if (!well_formed_finite(b) || !polyq::well_formed(f.planes.data(), 6, 6)) return false;
+    arith::approx_kernel k;
+    point3 corner[8];
+    if (!frustum_corners(f, corner)) return polyq::box_meets(k, b, f.planes.data(), 6);
+    return box_frustum_decomposition([&](const tetrahedron3& t) { return intersects(k, b, t); }, corner);
+}
+
 template <class K>
 [[nodiscard]] constexpr bool contains(K& k, const frustum3& f, const aabb3& b) {
     if (!well_formed_finite(b)) return false;

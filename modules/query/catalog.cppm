@@ -173,6 +173,14 @@ inline constexpr std::tuple families{
     family<convex_polyhedron3, tetrahedron3, 0>{"convex_polyhedron_tetrahedron", "obb", "signs in double", {}},
     family<frustum3, tetrahedron3, 0>{"frustum_tetrahedron", "obb", "signs in double", {}},
     family<kdop<14>, tetrahedron3, 0>{"kdop_tetrahedron", "obb", "signs in double", {}},
+    // An OBB against a half-space set: the set in the box's own coordinates, then the vertex test.
+    family<convex_polyhedron3, obb3, 0>{"convex_polyhedron_obb", "obb", "signs in double", {}},
+    family<frustum3, obb3, 2>{"frustum_obb", "obb", "signs in double",
+                              {{{"sat", "separating axes in double: Gottschalk, Lin and Manocha, OBBTree, SIGGRAPH 1996",
+                                 [](const frustum3& f, const obb3& b) { return method::frustum_obb_sat(f, b); }},
+                                {"decomposition", "six tetrahedra in double: Dompierre et al., IMR 1999",
+                                 [](const frustum3& f, const obb3& b) { return method::frustum_obb_decomposition(f, b); }}}}},
+    family<kdop<14>, obb3, 0>{"kdop_obb", "obb", "signs in double", {}},
 };
 
 inline constexpr std::size_t family_count = std::tuple_size_v<decltype(families)>;

@@ -124,6 +124,9 @@ export import :kdop_tetrahedron;
 export import :convex_polyhedron_mesh;
 export import :frustum_mesh;
 export import :kdop_mesh;
+export import :convex_polyhedron_obb;
+export import :frustum_obb;
+export import :kdop_obb;
 import incidence.core;
 import incidence.arith;
 import incidence.shapes;
@@ -291,6 +294,8 @@ namespace method {
 [[nodiscard]] constexpr bool aabb_frustum_culling(const aabb3& b, const frustum3& f) { return pair::aabb_frustum_culling(b, f); }
 [[nodiscard]] constexpr bool aabb_frustum_sat(const aabb3& b, const frustum3& f) { return pair::aabb_frustum_sat(b, f); }
 [[nodiscard]] constexpr bool aabb_frustum_decomposition(const aabb3& b, const frustum3& f) { return pair::aabb_frustum_decomposition(b, f); }
+[[nodiscard]] constexpr bool frustum_obb_sat(const frustum3& f, const obb3& b) { return pair::frustum_obb_sat(f, b); }
+[[nodiscard]] constexpr bool frustum_obb_decomposition(const frustum3& f, const obb3& b) { return pair::frustum_obb_decomposition(f, b); }
 } // namespace method
 
 } // namespace incidence

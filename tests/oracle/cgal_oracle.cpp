@@ -297,6 +297,23 @@ bool all_in_box(const double* xyz, unsigned long n, const double c[3], const dou
     }
     return true;
 }
+bool box_in_constraints(const double c[3], const double axes[9], const double h[3], const convex_set& s) {
+    for (int m = 0; m < 8; ++m) {
+        Q x[3] = {Q(c[0]), Q(c[1]), Q(c[2])};
+        for (int i = 0; i < 3; ++i) {
+            const Q f = (m >> i & 1) ? Q(h[i]) : Q(-h[i]);
+            for (int k = 0; k < 3; ++k) x[k] += f * Q(axes[3 * i + k]);
+        }
+        auto along = [&](const std::array<double, 3>& n) -> Q { return Q(n[0]) * x[0] + Q(n[1]) * x[1] + Q(n[2]) * x[2]; };
+        for (const auto& e : s.halfspaces)
+            if (along(e.n) > Q(e.offset)) return false;
+        for (const auto& e : s.slabs) {
+            const Q t = along(e.n);
+            if (t < Q(e.lo) || t > Q(e.hi)) return false;
+        }
+    }
+    return true;
+}
 bool all_in_ball(const double* xyz, unsigned long n, const double c[3], double r) {
     const Q cx(c[0]), cy(c[1]), cz(c[2]), rr = Q(r) * Q(r);
     for (unsigned long i = 0; i < n; ++i) {

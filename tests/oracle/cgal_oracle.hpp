@@ -167,6 +167,9 @@ bool is_rounded_ray_ball_t(const double o[3], const double d[3], const double c[
 bool is_rounded_min_sphere_sqradius(const double* xyz, unsigned long n, double x);
 // Is every point in the closed box { c + sum si ai : |si| <= hi } (axes = a0 a1 a2, 9 values)? Exact.
 bool all_in_box(const double* xyz, unsigned long n, const double c[3], const double axes[9], const double h[3]);
+// Is the closed box { c + sum si ai : |si| <= hi } (axes = a0 a1 a2) inside every half-space and
+// slab of s (its points, generators and plane ignored)? Its eight corners in exact rationals.
+bool box_in_constraints(const double c[3], const double axes[9], const double h[3], const convex_set& s);
 // Is every point inside the closed ball (c, r)? Exact.
 bool all_in_ball(const double* xyz, unsigned long n, const double c[3], double r);
 // CGAL Min_sphere_of_spheres_d with Epick (double) for timing: returns the radius.

@@ -164,7 +164,11 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
         every_tier(me, fr, yes);
         every_tier(kd, me, yes);
         yes += contains(fr, t) + contains(cp, t) + contains(kd, t) + contains(fr, te) + contains(cp, te) + contains(kd2, te);
-        n += 26 * 5 + 12;
+        every_tier(cp, ob, yes);
+        every_tier(ob, fr, yes);
+        every_tier(kd2, ob, yes);
+        yes += contains(cp, ob) + contains(fr, ob) + contains(kd, ob);
+        n += 29 * 5 + 15;
         // in the plane
         auto p2 = [&] { return point2{special(r), special(r)}; };
         auto v2 = [&] { return vec2{special(r), special(r)}; };

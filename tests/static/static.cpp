@@ -235,6 +235,19 @@ static_assert(intersects(ph::integer_frustum, ph::wide_tetrahedron(5)) && !inter
 static_assert(intersects(support::corner_cut, ph::wide_tetrahedron(2)) && !intersects(ph::wide_tetrahedron(-0x1p-1074), support::corner_cut));
 static_assert(contains(ph::integer_frustum, tetrahedron3{{1, 1, 1}, {-4, -4, 4}, {4, -4, 4}, {0, 4, 4}}) &&
               !contains(support::corner_cut, tetrahedron3{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 1}}));
+// a box turned 45 degrees about z against a half-space set: touching along an edge or at a
+// corner, and one ulp short; a box that no single plane separates from the set; contains
+constexpr std::array<vec3, 3> turned{vec3{1, 1, 0}, vec3{-1, 1, 0}, vec3{0, 0, 1}};
+static_assert(intersects(ph::unit_cube_cut, obb3{{1.5, 1.5, 0.5}, turned, {0.5, 0.5, 0.5}}) &&
+              !intersects(obb3{{1.5, 1.5, 0.5}, turned, {0x1.fffffffffffffp-2, 0.5, 0.5}}, ph::unit_cube_cut));
+static_assert(!intersects(ph::roof, obb3{{0, 0.5, 0.75}, {vec3{1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1}}, {1, 0.5, 0.25}}));
+static_assert(intersects(ph::integer_frustum, obb3{{4.5, 4.5, 4.5}, turned, {0.5, 0.5, 0.5}}) &&
+              !intersects(obb3{{4.5, 4.5, 4.5}, turned, {0x1.fffffffffffffp-2, 0.5, 0.5}}, ph::integer_frustum));
+static_assert(intersects(support::corner_cut, obb3{{1.5, 1.5, 1}, turned, {0.5, 0.5, 0.5}}) &&
+              !intersects(support::corner_cut, obb3{{1.5, 1.5, 0x1.0000000000001p0}, turned, {0.5, 0.5, 0.5}}));
+static_assert(contains(ph::unit_cube_cut, obb3{{0.5, 0.5, 0.5}, turned, {0.25, 0.25, 0.5}}) &&
+              !contains(support::corner_cut, obb3{{0.5, 0.5, 0.5}, turned, {0.25, 0.25, 0x1.0000000000001p-1}}) &&
+              contains(ph::integer_frustum, obb3{{0, 0, 2}, turned, {0.5, 0.5, 0}}));
 // the same in the plane
 static_assert(intersects(segment2{{0, 0}, {2, 0}}, segment2{{2, 0}, {3, 5}}));
 static_assert(!intersects(segment2{{0, 0}, {2, 0}}, segment2{{0x1.0000000000001p1, 0}, {3, 0}}));

@@ -24,6 +24,7 @@
 #include <utility>
 #include <vector>
 #include "flat_shapes.hpp"
+#include "obb_cases.hpp"
 
 namespace support {
 
@@ -165,6 +166,32 @@ inline incidence::aabb3 box_at(rng& r, incidence::point3 X) {
     return {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
 }
 
+// An oriented box (obb_cases.hpp's near box: small dyadic centre and extents, zero extents
+// included, a permuted, near-rotation or skew frame) moved so that a corner, an edge or face
+// point of its boundary (sometimes a quarter off it) is X.
+inline incidence::obb3 obb_at(rng& r, incidence::point3 X) {
+    incidence::obb3 b = near_obb(r);
+    const incidence::point3 q = boundary_point(r, b);
+    b.center = {b.center.x + (X.x - q.x), b.center.y + (X.y - q.y), b.center.z + (X.z - q.z)};
+    return b;
+}
+// A box about the segment s for contains cases: centred at its midpoint (rounded), a permuted,
+// near-rotation or skew frame, each extent zero or a quarter, an eighth or a sixteenth of the
+// segment's largest coordinate difference (so between boundary points of a convex set it lies
+// inside, pokes out or touches).
+inline incidence::obb3 obb_between(rng& r, const incidence::segment3& s) {
+    const double w = std::fmax(std::fabs(s.b.x - s.a.x), std::fmax(std::fabs(s.b.y - s.a.y), std::fabs(s.b.z - s.a.z)));
+    incidence::obb3 b{{0.5 * s.a.x + 0.5 * s.b.x, 0.5 * s.a.y + 0.5 * s.b.y, 0.5 * s.a.z + 0.5 * s.b.z}, near_frame(r), {}};
+    for (double& h : b.half_extents) h = r.integer(0, 3) == 0 ? 0.0 : std::ldexp(w, -r.integer(2, 4));
+    return b;
+}
+inline incidence::obb3 realise(const incidence::obb3& b, transform& tr) {
+    incidence::obb3 o = b;
+    o.center = moved(b.center, tr);
+    for (double& h : o.half_extents) h = tr.scale_only(h);
+    return o;
+}
+
 template <class S>
 typename proto_of<S>::type place(rng& r, incidence::point3 X, incidence::vec3 d, bool contain) {
     using namespace incidence;
@@ -175,6 +202,7 @@ typename proto_of<S>::type place(rng& r, incidence::point3 X, incidence::vec3 d,
     else if constexpr (std::is_same_v<S, plane3>) return plane_at(r, X, d, contain);
     else if constexpr (std::is_same_v<S, tetrahedron3>) return tetrahedron_at(r, X, d, contain);
     else if constexpr (std::is_same_v<S, aabb3>) return box_at(r, X);
+    else if constexpr (std::is_same_v<S, obb3>) return obb_at(r, X);
     else return triangle_at(r, X, d);
 }
 
@@ -269,6 +297,7 @@ typename proto_of<S>::type random_shape(rng& r, bool in_plane, double c) {
     auto p = [&] { return point3{r.uniform(-1, 1), r.uniform(-1, 1), in_plane ? c : r.uniform(-1, 1)}; };
     auto v = [&] { return vec3{r.uniform(-1, 1), r.uniform(-1, 1), in_plane ? 0.0 : r.uniform(-1, 1)}; };
     if constexpr (std::is_same_v<S, point3>) return p();
+    else if constexpr (std::is_same_v<S, obb3>) return obb3{p(), random_frame(r), {r.uniform(0, 0.5), r.uniform(0, 0.5), r.uniform(0, 0.5)}};
     else if constexpr (std::is_same_v<S, segment3>) return segment3{p(), p()};
     else if constexpr (std::is_same_v<S, ray3>) return ray3{p(), v()};
     else if constexpr (std::is_same_v<S, line3>) return line3{p(), v()};
@@ -311,6 +340,7 @@ inline std::vector<incidence::plane3> same_set(const incidence::plane3& p) { ret
 inline std::vector<incidence::triangle3> same_set(const incidence::triangle3& t) { return {{t.b, t.c, t.a}, {t.a, t.c, t.b}}; }
 inline std::vector<incidence::tetrahedron3> same_set(const incidence::tetrahedron3& t) { return {{t.b, t.c, t.d, t.a}, {t.a, t.c, t.b, t.d}}; }
 inline std::vector<incidence::aabb3> same_set(const incidence::aabb3& b) { return {b}; }
+inline std::vector<incidence::obb3> same_set(const incidence::obb3& b) { return {rewritten(b, 0), rewritten(b, 1)}; }
 inline std::vector<incidence::point2> same_set(const incidence::point2& p) { return {p}; }
 inline std::vector<incidence::segment2> same_set(const incidence::segment2& s) { return {{s.b, s.a}}; }
 inline std::vector<incidence::ray2> same_set(const incidence::ray2& r) { return {{r.origin, 2.0 * r.direction}}; }
@@ -355,6 +385,17 @@ inline std::optional<incidence::aabb3> translated(const incidence::aabb3& b, inc
     const auto lo = shifted(b.min, v), hi = shifted(b.max, v);
     if (lo && hi) return incidence::aabb3{*lo, *hi};
     return std::nullopt;
+}
+inline std::optional<incidence::obb3> translated(const incidence::obb3& b, incidence::vec3 v) {
+    if (const auto c = shifted(b.center, v)) return incidence::obb3{*c, b.axes, b.half_extents};
+    return std::nullopt;
+}
+inline bool finite_shape(const incidence::obb3& b) {
+    for (double x : {b.center.x, b.center.y, b.center.z, b.half_extents[0], b.half_extents[1], b.half_extents[2]})
+        if (!std::isfinite(x)) return false;
+    for (const auto& a : b.axes)
+        if (!std::isfinite(a.x) || !std::isfinite(a.y) || !std::isfinite(a.z)) return false;
+    return true;
 }
 // In the plane: by (v.x, v.y).
 inline std::optional<incidence::point2> translated(const incidence::point2& p, incidence::vec3 v) {

@@ -22,6 +22,10 @@ inline std::string shape_str(const incidence::line2& l) { return "line2 " + str(
 inline std::string shape_str(const incidence::triangle3& t) { return "triangle " + str(t.a) + str(t.b) + str(t.c); }
 inline std::string shape_str(const incidence::tetrahedron3& t) { return "tetrahedron " + str(t.a) + str(t.b) + str(t.c) + str(t.d); }
 inline std::string shape_str(const incidence::aabb3& b) { return "aabb " + str(b.min) + str(b.max); }
+inline std::string shape_str(const incidence::obb3& b) {
+    return "obb c" + str(b.center) + " a" + str(b.axes[0]) + str(b.axes[1]) + str(b.axes[2]) + " h(" + hex(b.half_extents[0]) + "," +
+           hex(b.half_extents[1]) + "," + hex(b.half_extents[2]) + ")";
+}
 
 // --- the checks every flat pair runs ---------------------------------------------------------
 // The oracle on `n` random and `n` near-degenerate cases, with every tier contract.

@@ -196,6 +196,9 @@ std::optional<std::pair<incidence::kdop<K>, B>> kdop_inside_case(rng& r) {
         b = realise(tetrahedron3{pt(), pt(), pt(), pt()}, tr);
         pts.push_back(b.a), pts.push_back(b.b), pts.push_back(b.c), pts.push_back(b.d);
         if (r.coin()) b.d.z = std::nextafter(b.d.z, r.coin() ? 1e308 : -1e308);
+    } else if constexpr (std::is_same_v<B, obb3>) { // its corners are not doubles: a box about the segment between two points
+        b = obb_between(r, realise(segment3{pt(), pt()}, tr));
+        pts.push_back(b.center);
     } else {
         b = realise(segment3{pt(), pt()}, tr);
         pts.push_back(b.a), pts.push_back(b.b);

@@ -64,9 +64,24 @@ inline std::vector<incidence::point3> hull_points(const incidence::aabb3& b) {
     return v;
 }
 
+// contains(a, b) by the oracle: each of b's hull points in the convex set a (the LP), or for an
+// oriented box, whose corners are not doubles, its eight corners in exact rationals.
+template <class A, class B>
+bool contained_truth(const A& a, const B& b) {
+    if constexpr (std::is_same_v<B, incidence::obb3>) {
+        const double c[3] = {b.center.x, b.center.y, b.center.z};
+        const double axes[9] = {b.axes[0].x, b.axes[0].y, b.axes[0].z, b.axes[1].x, b.axes[1].y, b.axes[1].z, b.axes[2].x, b.axes[2].y, b.axes[2].z};
+        return oracle::box_in_constraints(c, axes, b.half_extents.data(), lp(a));
+    } else {
+        bool truth = true;
+        for (const auto& p : hull_points(b)) truth = truth && oracle::lp_intersect(lp(a), lp(p));
+        return truth;
+    }
+}
+
 // A tetrahedron holding the convex set a whole: they meet (truth), yet no face of the tetrahedron
 // meets a, so the test's last step (a vertex of a inside the tetrahedron) decides. The oracle tests
-// count these cases, to show that step runs.
+// count these cases, to show that step runs; for an oriented box, the cases its vertex search decides.
 template <class A, class B>
 bool held_whole(const A& a, const B& b, bool truth) {
     if constexpr (std::is_same_v<B, incidence::tetrahedron3>) {
@@ -74,10 +89,16 @@ bool held_whole(const A& a, const B& b, bool truth) {
         for (int f = 0; f < 4; ++f)
             if (intersects(a, b.face(f))) return false;
         return true;
+    } else if constexpr (std::is_same_v<B, incidence::obb3>) {
+        // a box meeting the set with its centre outside it: neither early answer (a plane with the
+        // whole box beyond it, the centre inside every plane) decides, the vertex search does
+        return truth && !intersects(a, b.center);
     } else return false;
 }
 inline void print_held_whole(const std::string& name, long held) {
-    std::printf("[cases] %s: the tetrahedron holds the set whole (no face meets it) in %ld cases\n", name.c_str(), held);
+    std::printf("[cases] %s: decided by the last step (a tetrahedron holding the set whole, a box meeting the set with its centre outside it) in "
+                "%ld cases\n",
+                name.c_str(), held);
 }
 
 } // namespace support

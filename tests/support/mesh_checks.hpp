@@ -16,7 +16,6 @@ inline std::string shape_str(const incidence::mesh3& m) {
     for (const auto& p : m.vertices) s += " " + str(p);
     return s + ", " + std::to_string(m.triangles.size()) + " triangles";
 }
-inline std::string shape_str(const incidence::obb3& b) { return str(b); }
 
 // Calls f(a, b) in the pair's canonical argument order.
 template <class B, class F>

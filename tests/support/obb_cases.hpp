@@ -109,6 +109,15 @@ inline obb3 random_obb(rng& r, const transform& tr) {
 inline point3 random_point(rng& r, const transform& tr) { return {random_coord(r, tr, 0), random_coord(r, tr, 1), random_coord(r, tr, 2)}; }
 
 
+// The same box written differently: one axis negated, the axes rotated (with their extents).
+inline obb3 rewritten(const obb3& b, int how) {
+    obb3 c = b;
+    if (how == 0) c.axes[1] = vec3{-b.axes[1].x, -b.axes[1].y, -b.axes[1].z};
+    else
+        for (unsigned i = 0; i < 3; ++i) c.axes[i] = b.axes[(i + 1) % 3], c.half_extents[i] = b.half_extents[(i + 1) % 3];
+    return c;
+}
+
 // The start of every near case: a box, a point of its boundary, and the transform to apply.
 struct near_box {
     obb3 o;

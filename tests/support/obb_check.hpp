@@ -3,12 +3,10 @@
 #pragma once
 #include <string>
 #include <vector>
+#include "flat_checks.hpp"
 
 namespace support {
-inline std::string str(const incidence::obb3& b) {
-    return "obb c" + str(b.center) + " a" + str(b.axes[0]) + str(b.axes[1]) + str(b.axes[2]) + " h(" + hex(b.half_extents[0]) + "," +
-           hex(b.half_extents[1]) + "," + hex(b.half_extents[2]) + ")";
-}
+inline std::string str(const incidence::obb3& b) { return shape_str(b); }
 inline std::string str(const incidence::aabb3& b) { return "aabb " + str(b.min) + str(b.max); }
 inline std::string str(const incidence::segment3& s) { return "segment " + str(s.a) + str(s.b); }
 inline std::string str(const incidence::ray3& s) { return "ray " + str(s.origin) + str(s.direction); }
@@ -16,15 +14,6 @@ inline std::string str(const incidence::line3& s) { return "line " + str(s.origi
 inline std::string str(const incidence::triangle3& t) { return "triangle " + str(t.a) + str(t.b) + str(t.c); }
 inline std::string str(const incidence::tetrahedron3& t) { return "tetrahedron " + str(t.a) + str(t.b) + str(t.c) + str(t.d); }
 inline std::string str(const incidence::plane3& p) { return "plane " + str(p.normal) + " " + hex(p.offset); }
-
-// The same box written differently: one axis negated, the axes rotated (with their extents).
-inline obb3 rewritten(const obb3& b, int how) {
-    obb3 c = b;
-    if (how == 0) c.axes[1] = vec3{-b.axes[1].x, -b.axes[1].y, -b.axes[1].z};
-    else
-        for (unsigned i = 0; i < 3; ++i) c.axes[i] = b.axes[(i + 1) % 3], c.half_extents[i] = b.half_extents[(i + 1) % 3];
-    return c;
-}
 
 // The oracle test of an OBB pair: `random` and `near` cases against the LP oracle, every tier's
 // contract, then the same answers for the box rewritten (negated or rotated axes) and for the

@@ -33,7 +33,7 @@ void halfspace_oracle(const std::string& name, long n, double approx_bound) {
         require_contracts(t);
         CHECK(yes > 0);
         CHECK(yes < t.n);
-        if constexpr (std::is_same_v<B, tetrahedron3>) {
+        if constexpr (std::is_same_v<B, tetrahedron3> || std::is_same_v<B, obb3>) {
             print_held_whole(t.name, held);
             if (near) CHECK(held > 0);
         }
@@ -86,13 +86,13 @@ void halfspace_contains_oracle(const std::string& name, long n, double approx_bo
             else if (const auto s = halfspace_inside_case<P>(r)) {
                 if constexpr (std::is_same_v<B, segment3>) c = s;
                 else if constexpr (std::is_same_v<B, aabb3>) c = std::pair{s->first, ordered(aabb3{s->second.a, s->second.b})};
+                else if constexpr (std::is_same_v<B, obb3>) c = std::pair{s->first, obb_between(r, s->second)};
                 else c = std::pair{s->first, s->second.b};
             }
         } else c = i % 3 ? halfspace_near<P, B>(r) : halfspace_random<P, B>(r);
         if (!c || !finite_shape(c->second)) continue;
         const auto& [a, b] = *c;
-        bool truth = true;
-        for (const auto& p : hull_points(b)) truth = truth && oracle::lp_intersect(lp(a), lp(p));
+        const bool truth = contained_truth(a, b);
         yes += truth;
         check_contains(t, a, b, truth, approx_bound, [&] { return shape_str(a) + " " + shape_str(b); });
     }

@@ -365,6 +365,16 @@ inline obb_touch touching_obb(rng& r) {
     if (t.o.x == a[0].x && t.o.y == a[0].y && t.o.z == a[0].z) t.p = t.box.center + a[0] * t.box.half_extents[0];
     return t;
 }
+// touching_obb's box moved so that its boundary point lies at p with its centre on the outer side
+// of the plane through p with outward normal o (reflected through p when it was not; exact: the
+// offsets are integers and dyadics): touching at p at least, or overlapping along the face.
+inline obb3 obb_beyond(rng& r, point3 p, vec3 o) {
+    const auto b = touching_obb(r);
+    const vec3 in = b.box.center - b.p;
+    obb3 box = b.box;
+    box.center = p + (dot(in, o) < 0 ? in * -1.0 : in);
+    return box;
+}
 template <>
 struct near_boundary<obb3, point3> {
     static std::pair<obb3, point3> touching(rng& r) {
@@ -630,6 +640,13 @@ struct near_boundary<kdop<14>, tetrahedron3> {
     }
 };
 template <>
+struct near_boundary<kdop<14>, obb3> {
+    static std::pair<kdop<14>, obb3> touching(rng& r) { // a box with a corner, an edge or face point at p, outwards
+        const auto t = touching_kdop(r);
+        return {t.box, obb_beyond(r, t.p, t.o)};
+    }
+};
+template <>
 struct near_boundary<aabb3, kdop<14>> {
     static std::pair<aabb3, kdop<14>> touching(rng& r) { // a box with its corner at p, outwards
         const auto t = touching_kdop(r);
@@ -766,6 +783,8 @@ struct near_boundary<P, B> {
             return {t.shape, q};
         } else if constexpr (std::is_same_v<B, triangle3>) { // a corner at p, the others outwards
             return {t.shape, triangle3{t.p, t.p + outward(r, t.o, 300), t.p + outward(r, t.o, 300)}};
+        } else if constexpr (std::is_same_v<B, obb3>) { // a box with a corner, an edge or face point at p, outwards
+            return {t.shape, obb_beyond(r, t.p, t.o)};
         } else if constexpr (std::is_same_v<B, tetrahedron3>) { // a vertex at p, the others outwards
             return {t.shape, tetrahedron3{t.p, t.p + outward(r, t.o, 300), t.p + outward(r, t.o, 300), t.p + outward(r, t.o, 300)}};
         } else if constexpr (std::is_same_v<B, frustum3> && std::is_same_v<P, frustum3>) {
