@@ -24,6 +24,7 @@ import incidence;
 #include "../tests/support/kdop_cases.hpp"
 #include "../tests/support/lp_shapes.hpp"
 #include "../tests/support/polyhedron_cases.hpp"
+#include "../tests/support/polygon3_cases.hpp"
 
 using namespace incidence;
 
@@ -271,6 +272,22 @@ void polygon_tiers(const std::string& pair, bool near) {
             return nr ? support::polygon_near<B>(r, g, o) : support::polygon_random<B>(r, g, o);
         },
         [](const polygon2& g, const B& b) { return support::polygon_truth(g, b); });
+}
+// A 3D polygon pair (tests/support/polygon3_cases.hpp: exactly planar star polygons of 8 to 24
+// vertices in space, half with a hole of 8, at every scale the tests use), the triangulation
+// oracle as truth. (The mesh partner, a view of a third store, is not benchmarked.)
+template <class B>
+void polygon3_tiers(const std::string& pair, bool near) {
+    view_tiers<support::polygon3_store, B>(
+        pair, near,
+        [](support::rng& r, support::polygon3_store& g, support::polygon3_store& o, bool nr) {
+            support::mesh_store unused;
+            for (;;) {
+                const auto b = nr ? support::polygon3_near<B>(r, g, o, unused) : support::polygon3_random<B>(r, g, o, unused);
+                if (b && support::finite_partner(*b)) return *b;
+            }
+        },
+        [](const polygon3& g, const B& b) { return support::polygon3_truth(g, b); });
 }
 // A k-DOP pair (tests/support/kdop_cases.hpp: the k-DOP of a few points, at every scale the
 // tests use), the LP oracle as truth.

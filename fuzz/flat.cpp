@@ -10,7 +10,13 @@
 // segment, ray or line in the plane (4 doubles) or a triangle polygon (6 doubles), byte 1 % 5;
 // any positions, so possibly self-intersecting: polygon2::make must accept exactly the simple
 // ones (CGAL Polygon_2::is_simple and disjoint rings, oracle::polygon_simple), and for those the
-// contracts hold against oracle::polygon_intersect; contains(polygon, point) too. Any finding aborts.
+// contracts hold against oracle::polygon_intersect; contains(polygon, point) too. 3D polygon mode
+// (byte 0 & 0xc0 == 0x40 and byte 1 & 0x80): a polygon3 of six vertices (12 doubles, one ring or
+// two of three as above) in the plane where coordinate byte 0 % 3 is the 13th double, exactly
+// planar, against the 3D shape of kind byte 1 % 6 (9 more doubles): polygon3::make must accept
+// exactly the simple ones, whose contracts hold against the triangles of the polygon's CGAL
+// triangulation (oracle::polygon3_triangles, each by oracle::flat); the same vertices bent off the
+// plane (one coordinate replaced) run every tier unchecked. Any finding aborts.
 #include "../tests/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <cmath>
@@ -96,11 +102,52 @@ void check_polygon(const polygon2& g, const B& b, bool finite) {
     if constexpr (std::is_same_v<B, point2>)
         if (contains(g, b) != truth) std::abort();
 }
+// The 3D polygon: every tier finishes; on finite input make() accepts exactly the simple rings, and
+// the contracts hold against the triangulation oracle.
+template <class B>
+void check_polygon3(const std::array<point3, 6>& verts, std::span<const std::uint32_t> ends, int axis, const B& b, bool finite) {
+    const auto made = polygon3::make(verts, ends);
+    const polygon3 g = made.has_value() ? made.value() : polygon3{verts, ends, {0, 1, 2}, axis};
+    (void)intersects<approximate>(g, b);
+    (void)intersects<conservative>(b, g);
+    (void)intersects<aggressive>(g, b);
+    (void)classify(b, g);
+    if (!finite) {
+        bool vertices_finite = true;
+        for (const auto& p : verts) vertices_finite = vertices_finite && std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+        if (!vertices_finite && made.has_value()) std::abort();
+        if (intersects<exact>(g, b)) std::abort();
+        return;
+    }
+    oracle::polygon_data flat;
+    oracle::polygon3_data d;
+    for (const auto& p : verts) {
+        const double c[3] = {p.x, p.y, p.z};
+        flat.v.push_back({c[(axis + 1) % 3], c[(axis + 2) % 3]});
+        d.v.push_back({p.x, p.y, p.z});
+    }
+    if (ends.empty()) flat.ring_ends.push_back(6);
+    for (auto e : ends) flat.ring_ends.push_back(e);
+    d.ring_ends = flat.ring_ends;
+    d.axis = axis;
+    const bool simple = oracle::polygon_simple(flat);
+    // a ring on one line has no area: make refuses it as degenerate (polygon_simple may accept it)
+    if (made.has_value() && !simple) std::abort();
+    if (!made.has_value()) return;
+    bool truth = false;
+    for (const auto& t : oracle::polygon3_triangles(d)) {
+        const triangle3 T{{t[0], t[1], t[2]}, {t[3], t[4], t[5]}, {t[6], t[7], t[8]}};
+        truth = truth || oracle::flat_intersect(support::to_flat(T), support::to_flat(b));
+    }
+    contracts(g, b, truth);
+    if constexpr (std::is_same_v<B, point3>)
+        if (contains(g, b) != truth) std::abort();
+}
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     if (size < 2) return 0;
-    double v[18] = {};
+    double v[24] = {};
     std::memcpy(v, data + 2, size - 2 < sizeof v ? size - 2 : sizeof v);
     bool finite = true;
     if ((data[0] & 0xc0) == 0xc0) { // a polygon in the plane
@@ -116,6 +163,30 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         } else {
             with_shape2(kb, v + 12, [&](const auto& b) { check_polygon(g, b, finite); });
         }
+        return 0;
+    }
+    if ((data[0] & 0xc0) == 0x40 && (data[1] & 0x80)) { // a planar polygon in space
+        const int axis = data[0] % 3, kb = data[1] % 6;
+        for (int i = 0; i < 13; ++i) finite = finite && std::isfinite(v[i]);
+        for (int i = 0; i < used[kb]; ++i) finite = finite && std::isfinite(v[13 + i]);
+        std::array<point3, 6> verts;
+        for (unsigned i = 0; i < 6; ++i) {
+            double c[3];
+            c[axis] = v[12];
+            c[(axis + 1) % 3] = v[2 * i], c[(axis + 2) % 3] = v[2 * i + 1];
+            verts[i] = point3{c[0], c[1], c[2]};
+        }
+        static constexpr std::array<std::uint32_t, 2> two_rings{{3, 6}};
+        const std::span<const std::uint32_t> ends = (data[1] & 0x40) ? std::span<const std::uint32_t>(two_rings) : std::span<const std::uint32_t>();
+        with_shape(kb, v + 13, [&](const auto& b) {
+            check_polygon3(verts, ends, axis, b, finite);
+            std::array<point3, 6> bent = verts; // off the plane: unchecked, every tier finishes
+            bent[data[1] % 6].x = v[(data[1] + 7) % 24];
+            const polygon3 g{bent, ends, {0, 2, 4}, axis};
+            (void)intersects<exact>(g, b);
+            (void)intersects<approximate>(b, g);
+            (void)classify(g, b);
+        });
         return 0;
     }
     if (data[0] & 0x80) { // in the plane

@@ -1,6 +1,8 @@
 // Why a checked constructor refused its input, and the result type that carries it.
 module;
 #include <boost/outcome/result.hpp>
+#include <cstdio>
+#include <string>
 export module incidence.core:error;
 
 export namespace incidence {
@@ -22,6 +24,7 @@ enum class errc : unsigned char {
     open_mesh,           // a mesh edge belongs to an odd number of triangles (the surface has a boundary)
     degenerate_polygon,  // a polygon ring has fewer than three vertices
     self_intersecting_polygon, // two polygon edges meet other than consecutive edges at their shared vertex
+    non_planar_polygon,  // a 3D polygon's vertices are not exactly coplanar (`measured`: the largest distance off the plane)
     invalid_field_of_view, // a camera's vertical field of view is not in (0, pi), or its aspect ratio is not positive
     invalid_clip_range,    // a camera's near distance is not positive, or its far distance not beyond it
     up_parallel_to_forward, // a camera's up vector is zero or parallel to its viewing direction
@@ -29,6 +32,7 @@ enum class errc : unsigned char {
 
 struct error {
     errc code;
+    double measured = 0.0; // the measured quantity behind the refusal, where one applies (non_planar_polygon)
     [[nodiscard]] constexpr const char* message() const {
         switch (code) {
         case errc::not_finite: return "a coordinate or scalar is NaN or infinite";
@@ -49,9 +53,20 @@ struct error {
         case errc::invalid_field_of_view: return "the camera's vertical field of view is not in (0, pi) radians, or its aspect ratio (width / height) is not positive";
         case errc::invalid_clip_range: return "the camera's near distance is not positive, or its far distance is not greater than the near one";
         case errc::up_parallel_to_forward: return "the camera's up vector is zero or parallel to its viewing direction";
+        case errc::non_planar_polygon: return "the polygon's vertices are not exactly coplanar";
         case errc::self_intersecting_polygon: return "the polygon's boundary meets itself: two edges share a point other than consecutive edges' common vertex (a crossing, a touch, a repeated vertex or a fold back)";
         }
         return "unknown error";
+    }
+    // message() with the measured quantity, where one applies.
+    [[nodiscard]] std::string what() const {
+        std::string s = message();
+        if (code == errc::non_planar_polygon) {
+            char buf[96];
+            std::snprintf(buf, sizeof buf, ": a vertex lies %.3g off the plane of three of them", measured);
+            s += buf;
+        }
+        return s;
     }
     friend constexpr bool operator==(const error&, const error&) = default;
 };

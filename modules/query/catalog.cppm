@@ -213,6 +213,20 @@ inline constexpr std::tuple view_families{
     family<polygon2, ray2, 0>{"polygon2_ray2", "flat", "signs in double", {}},
     family<line2, polygon2, 0>{"line2_polygon2", "flat", "signs in double", {}},
     family<polygon2, polygon2, 0>{"polygon2_polygon2", "flat", "signs in double", {}},
+    family<point3, polygon3, 0>{"point_polygon", "flat", "signs in double", {}},
+    family<polygon3, segment3, 0>{"polygon_segment", "flat", "signs in double", {}},
+    family<polygon3, ray3, 0>{"polygon_ray", "flat", "signs in double", {}},
+    family<line3, polygon3, 0>{"line_polygon", "flat", "signs in double", {}},
+    family<plane3, polygon3, 0>{"plane_polygon", "flat", "signs in double", {}},
+    family<polygon3, triangle3, 0>{"polygon_triangle", "flat", "signs in double", {}},
+    family<polygon3, polygon3, 0>{"polygon_polygon", "flat", "signs in double", {}},
+    family<aabb3, polygon3, 0>{"aabb_polygon", "flat", "signs in double", {}},
+    family<obb3, polygon3, 0>{"obb_polygon", "flat", "signs in double", {}},
+    family<polygon3, tetrahedron3, 0>{"polygon_tetrahedron", "flat", "signs in double", {}},
+    family<mesh3, polygon3, 0>{"mesh_polygon", "solids", "signs in double", {}},
+    family<convex_polyhedron3, polygon3, 0>{"convex_polyhedron_polygon", "flat", "signs in double", {}},
+    family<frustum3, polygon3, 0>{"frustum_polygon", "flat", "signs in double", {}},
+    family<kdop<14>, polygon3, 0>{"kdop_polygon", "flat", "signs in double", {}},
 };
 template <class F>
 constexpr void for_each_listed_family(F&& f) {

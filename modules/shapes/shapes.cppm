@@ -15,5 +15,6 @@ export import :segment2;
 export import :tetrahedron3;
 export import :mesh3;
 export import :polygon2;
+export import :polygon3;
 export import :convex_polyhedron3;
 export import :frustum3;

@@ -176,6 +176,8 @@ bool triangles_meet(const mesh_data& m, const convex_set& x) {
 }
 } // namespace
 
+bool any_triangle_meets(const mesh_data& soup, const convex_set& x) { return triangles_meet(soup, x); }
+
 bool mesh_intersect(const mesh_data& m, const convex_set& x, const std::array<double, 3>& inner) {
     return triangles_meet(m, x) || mesh_inside(m, inner);
 }

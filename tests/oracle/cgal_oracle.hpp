@@ -122,6 +122,9 @@ bool mesh_intersect(const mesh_data& m, const convex_set& x, const std::array<do
 // x given by half-spaces or slabs (no point of it is at hand): when no triangle meets x, the LP's
 // exact rational point of x decides by the same parity, over Epeck.
 bool mesh_intersect(const mesh_data& m, const convex_set& x);
+// Does one of the triangles of `soup` (no closedness asked) meet x? The LP for each, after an
+// exact box and row test that settles most of them.
+bool any_triangle_meets(const mesh_data& soup, const convex_set& x);
 bool mesh_mesh_intersect(const mesh_data& a, const mesh_data& b);
 
 // The same in the plane: a point, segment, ray or line (v: a point's 2 values, a segment's end
@@ -148,6 +151,17 @@ struct polygon_data {
 bool polygon_simple(const polygon_data& g);
 bool polygon_intersect(const polygon_data& g, const flat2& x);
 bool polygon_polygon_intersect(const polygon_data& a, const polygon_data& b);
+
+// A planar polygon in space (its vertices exactly coplanar): rings as in polygon_data, and the
+// coordinate its projection drops. Its triangles (9 doubles each, three of its own vertices): a
+// constrained triangulation of the projection with every ring edge a constraint, the faces at odd
+// nesting depth kept (the even-odd rule), lifted back to the vertices (cgal_polygon.cpp).
+struct polygon3_data {
+    std::vector<std::array<double, 3>> v;
+    std::vector<unsigned> ring_ends;
+    int axis = 2;
+};
+std::vector<std::array<double, 9>> polygon3_triangles(const polygon3_data& g);
 
 // Is `x` the correctly rounded (nearest, ties to even) value of the exact quantity?
 bool is_rounded_ray_triangle_t(const double o[3], const double d[3], const double a[3], const double b[3],

@@ -6,7 +6,12 @@
 #include "cgal_oracle.hpp"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <list>
 #include <stdexcept>
 
 namespace oracle {
@@ -84,6 +89,66 @@ bool polygon_intersect(const polygon_data& g, const flat2& x) {
 bool polygon_polygon_intersect(const polygon_data& a, const polygon_data& b) {
     const bool edges = any_edge(a, [&](const flat2& e) { return any_edge(b, [&](const flat2& f) { return flat_intersect(e, f); }); });
     return edges || odd_rings(rings_of(b), a.v[0]) || odd_rings(rings_of(a), b.v[0]);
+}
+
+// The triangles of a planar polygon in space: its projection triangulated with the ring edges as
+// constraints (the rings are disjoint and simple, so no constraint crosses another and the
+// triangulation adds no vertex), each face's nesting depth counted by a flood fill from the
+// infinite face that steps up by one across a constraint; odd depth is inside (even-odd rule).
+// Source: CGAL's 2D triangulation package (Yvinec, CGAL manual, "2D Triangulations", section
+// on constrained triangulations and domain marking).
+std::vector<std::array<double, 9>> polygon3_triangles(const polygon3_data& g) {
+    using KI = CGAL::Exact_predicates_inexact_constructions_kernel;
+    using Vb = CGAL::Triangulation_vertex_base_with_info_2<unsigned, KI>;
+    using Fb0 = CGAL::Constrained_triangulation_face_base_2<KI>;
+    using Fb = CGAL::Triangulation_face_base_with_info_2<int, KI, Fb0>;
+    using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+    using CDT = CGAL::Constrained_Delaunay_triangulation_2<KI, Tds, CGAL::Exact_predicates_tag>;
+    const int u = (g.axis + 1) % 3, w = (g.axis + 2) % 3;
+    CDT cdt;
+    std::vector<CDT::Vertex_handle> handle(g.v.size());
+    for (unsigned i = 0; i < g.v.size(); ++i) {
+        handle[i] = cdt.insert(KI::Point_2(g.v[i][static_cast<unsigned>(u)], g.v[i][static_cast<unsigned>(w)]));
+        handle[i]->info() = i;
+    }
+    unsigned b = 0;
+    for (unsigned e : g.ring_ends) {
+        for (unsigned i = b; i < e; ++i) cdt.insert_constraint(handle[i], handle[i + 1 == e ? b : i + 1]);
+        b = e;
+    }
+    for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info() = -1;
+    std::list<CDT::Edge> border;
+    auto flood = [&](CDT::Face_handle start, int depth) {
+        std::list<CDT::Face_handle> queue{start};
+        while (!queue.empty()) {
+            const CDT::Face_handle f = queue.front();
+            queue.pop_front();
+            if (f->info() != -1) continue;
+            f->info() = depth;
+            for (int i = 0; i < 3; ++i) {
+                const CDT::Face_handle n = f->neighbor(i);
+                if (n->info() != -1) continue;
+                if (cdt.is_constrained(CDT::Edge(f, i))) border.push_back(CDT::Edge(f, i));
+                else queue.push_back(n);
+            }
+        }
+    };
+    flood(cdt.infinite_face(), 0);
+    while (!border.empty()) {
+        const CDT::Edge e = border.front();
+        border.pop_front();
+        const CDT::Face_handle n = e.first->neighbor(e.second);
+        if (n->info() == -1) flood(n, e.first->info() + 1);
+    }
+    std::vector<std::array<double, 9>> out;
+    for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+        if (f->info() % 2 != 1) continue;
+        std::array<double, 9> t{};
+        for (int j = 0; j < 3; ++j)
+            for (int c = 0; c < 3; ++c) t[static_cast<unsigned>(3 * j + c)] = g.v[f->vertex(j)->info()][static_cast<unsigned>(c)];
+        out.push_back(t);
+    }
+    return out;
 }
 
 } // namespace oracle

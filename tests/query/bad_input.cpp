@@ -157,6 +157,35 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
         every_tier(cp, kd, yes);
         every_tier(kd2, fr, yes);
         yes += contains(fr, q) + contains(fr, seg) + contains(cp, q) + contains(cp, seg) + contains(fr, b) + contains(cp, b);
+        // the 3D polygon pairs: special vertices (a planar square's with one replaced, or all), ring
+        // ends that may not increase or reach past the end, plane vertices that may not exist, an axis
+        // outside 0..2
+        {
+            std::array<point3, 8> gv{{{0, 0, 1}, {4, 0, 1}, {4, 4, 1}, {0, 4, 1}, {1, 1, 1}, {1, 3, 1}, {3, 3, 1}, {3, 1, 1}}};
+            if (r.coin()) gv[static_cast<unsigned>(r.integer(0, 7))] = p();
+            else
+                for (auto& x : gv) x = p();
+            const std::array<std::uint32_t, 2> gends{static_cast<std::uint32_t>(r.integer(0, 9)), static_cast<std::uint32_t>(r.integer(0, 9))};
+            const polygon3 pg{gv, gends, {static_cast<std::uint32_t>(r.integer(0, 9)), 2, 1}, r.integer(-1, 3)};
+            const polygon3 pg2{gv, {}, {0, 2, 1}, 2};
+            every_tier(q, pg, yes);
+            every_tier(pg, seg, yes);
+            every_tier(pg, ray, yes);
+            every_tier(line, pg2, yes);
+            every_tier(pl, pg, yes);
+            every_tier(pg2, t, yes);
+            every_tier(pg, pg2, yes);
+            every_tier(b, pg2, yes);
+            every_tier(ob, pg, yes);
+            every_tier(pg2, te, yes);
+            every_tier(me, pg, yes);
+            every_tier(cp, pg2, yes);
+            every_tier(fr, pg, yes);
+            every_tier(kd2, pg2, yes);
+            yes += contains(pg, q) + contains(pg2, q);
+            (void)polygon3::make(gv, gends);
+            n += 14 * 5 + 2;
+        }
         every_tier(cp, te, yes);
         every_tier(te, fr, yes);
         every_tier(kd2, te, yes);

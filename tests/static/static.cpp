@@ -10,6 +10,7 @@ import incidence;
 #include "../support/polygon_fixtures.hpp"
 #include "../support/kdop_fixtures.hpp"
 #include "../support/polyhedron_fixtures.hpp"
+#include "../support/polygon3_fixtures.hpp"
 
 using namespace incidence;
 
@@ -248,6 +249,15 @@ static_assert(intersects(support::corner_cut, obb3{{1.5, 1.5, 1}, turned, {0.5, 
 static_assert(contains(ph::unit_cube_cut, obb3{{0.5, 0.5, 0.5}, turned, {0.25, 0.25, 0.5}}) &&
               !contains(support::corner_cut, obb3{{0.5, 0.5, 0.5}, turned, {0.25, 0.25, 0x1.0000000000001p-1}}) &&
               contains(ph::integer_frustum, obb3{{0, 0, 2}, turned, {0.5, 0.5, 0}}));
+// a planar polygon in space with a hole: a point inside, in the hole, on the hole's edge; a
+// segment through the hole and one ending on the polygon; a frustum whose section lies in a hole
+namespace pg = support::polygon3_fixtures;
+static_assert(intersects(point3{0.5, 0.5, 1}, pg::holed) && !intersects(point3{2, 2, 1}, pg::holed) && intersects(point3{1, 2, 1}, pg::holed));
+static_assert(!intersects(pg::holed, segment3{{2, 2, 0}, {2, 2, 2}}) && intersects(pg::holed, segment3{{0.5, 0.5, 0}, {0.5, 0.5, 1}}) &&
+              !intersects(pg::holed, segment3{{0.5, 0.5, 0}, {0.5, 0.5, 0x1.fffffffffffffp-1}}));
+static_assert(!intersects(ph::integer_frustum, pg::ring) && intersects(ph::integer_frustum, pg::holed));
+static_assert(intersects(aabb3{{0.25, 0.25, 0}, {0.75, 0.75, 2}}, pg::holed) && !intersects(aabb3{{1.5, 1.5, 0}, {2.5, 2.5, 2}}, pg::holed));
+static_assert(intersects(pg::tilted_l, pg::holed) && intersects(plane3{{0, 0, 1}, 1.5}, pg::tilted_l));
 // the same in the plane
 static_assert(intersects(segment2{{0, 0}, {2, 0}}, segment2{{2, 0}, {3, 5}}));
 static_assert(!intersects(segment2{{0, 0}, {2, 0}}, segment2{{0x1.0000000000001p1, 0}, {3, 0}}));

@@ -1,0 +1,177 @@
+// point3 against polygon3, contains(polygon3, point3), and the engine every 3D polygon pair shares.
+// Semantics: the polygon's point set (shapes/polygon3.cppm): the points of its plane whose
+// projection along its axis lies in the projected polygon2 (edges, and odd crossing parity).
+// Method (exact tiers): the plane is H = { x : n . (x - a) = 0 } with n = (b - a) x (c - a) for
+// its three plane vertices a, b, c, and the projection drops the coordinate where n is not zero,
+// so a point of H is in the polygon iff its projection is in the projected polygon: the 2D
+// crossing test of point2_polygon2.cppm (an edge counts when exactly one end lies above the point,
+// the half-open rule, and the point lies left of it directed upward). A point of H that is not a
+// double, where a line crosses H or a vertex of a convex set's section by H, is V / D
+// (homogeneous), and each comparison of the 2D test becomes a sign multiplied through by D. Any
+// other connected shape X meets the polygon iff it meets an edge (a segment3) or else one point
+// of X in H lies inside (a connected piece of X in H that meets no edge lies wholly inside or
+// outside): point2_polygon2's boundary-plus-inside decomposition, one dimension up.
+// Source: Haines, "Point in polygon strategies", Graphics Gems IV (1994): the projection along the
+// normal's largest component (section 1) and the crossings test with the half-open rule.
+// Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
+// magnitudes lie in [2^-500, 2^500], wrong only when a deciding sign is within 2^-40 of its
+// permanent (tests/query/point_polygon.cpp).
+module;
+#include <cstddef>
+#include <type_traits>
+export module incidence.query:point_polygon;
+import incidence.core;
+import incidence.arith;
+import incidence.shapes;
+import :segment_segment;
+
+export namespace incidence::pair {
+
+namespace planeq {
+
+// Indices valid and every vertex finite (comparisons only).
+[[nodiscard]] constexpr bool well_formed(const polygon3& g) {
+    if (!g.indices_valid()) return false;
+    for (std::size_t i = 0; i < g.vertices.size(); ++i)
+        if (!finite(g.vertices[i])) return false;
+    return true;
+}
+// n = (b - a) x (c - a) for the plane vertices a, b, c.
+template <class L>
+[[nodiscard]] constexpr auto normal(L l, const polygon3& g) {
+    const auto a = arith::lift(l, g.vertices[g.plane_vertices[0]]);
+    return arith::cross(arith::lift(l, g.vertices[g.plane_vertices[1]]) - a, arith::lift(l, g.vertices[g.plane_vertices[2]]) - a);
+}
+template <class T>
+[[nodiscard]] constexpr T component(const arith::v3<T>& v, int axis) { return axis == 0 ? v.x : (axis == 1 ? v.y : v.z); }
+// The polygon is a set: well formed, and n has a nonzero component along the axis (so the
+// projection is one to one on H).
+template <class K>
+[[nodiscard]] constexpr bool usable(K& k, const polygon3& g) {
+    if (!well_formed(g)) return false;
+    const int axis = g.axis;
+    return k.sgn([=](auto L) { return component(normal(L, g), axis); }) != sign::zero;
+}
+// n . (p - a): zero iff p lies in H.
+template <class K>
+[[nodiscard]] constexpr sign side(K& k, const polygon3& g, point3 p) {
+    return k.sgn([=](auto L) { return arith::dot(normal(L, g), arith::lift(L, p) - arith::lift(L, g.vertices[g.plane_vertices[0]])); });
+}
+
+// Calls f(segment3) for every edge of every ring (a well-formed polygon) until it returns true.
+template <class F>
+[[nodiscard]] constexpr bool any_edge(const polygon3& g, const F& f) {
+    for (std::size_t r = 0; r < g.rings(); ++r) {
+        const std::size_t b = g.ring_begin(r), e = g.ring_end(r);
+        for (std::size_t j = b; j < e; ++j)
+            if (f(segment3{g.vertices[j], g.vertices[polygon3::next(j, b, e)]})) return true;
+    }
+    return false;
+}
+
+// The projected coordinates (u, v) of a lifted 3D vector: (y, z), (z, x) or (x, y).
+template <class T>
+[[nodiscard]] constexpr T u_of(const arith::v3<T>& p, int axis) { return axis == 0 ? p.y : (axis == 1 ? p.z : p.x); }
+template <class T>
+[[nodiscard]] constexpr T v_of(const arith::v3<T>& p, int axis) { return axis == 0 ? p.z : (axis == 1 ? p.x : p.y); }
+
+// A point of H given as V / D: V(L) and D(L) lifted expressions, d the sign of D (not zero).
+template <class VF, class DF>
+struct at_homogeneous {
+    VF V;
+    DF D;
+    sign d;
+};
+// A double point of H.
+struct at_double {
+    point3 p;
+};
+
+// Is the point, in H and off the boundary, inside (odd crossings in the projection)?
+template <class K, class At>
+[[nodiscard]] constexpr bool inside(K& k, const polygon3& g, const At& at) {
+    const int axis = g.axis;
+    bool odd = false;
+    (void)any_edge(g, [&](const segment3& e) {
+        const point2 a = g.projected(e.a), b = g.projected(e.b);
+        bool a_above, b_above;
+        sign s;
+        if constexpr (std::is_same_v<At, at_double>) {
+            const point2 p = g.projected(at.p);
+            a_above = a.y > p.y, b_above = b.y > p.y;
+            if (a_above == b_above) return false;
+            if (a.x < p.x && b.x < p.x) return false; // both ends left of p: the ray misses it
+            s = k.sgn([=](auto L) { return (L(b.x) - L(a.x)) * (L(p.y) - L(a.y)) - (L(b.y) - L(a.y)) * (L(p.x) - L(a.x)); });
+        } else {
+            // w.y > p.y with p = V / D: sign(w.y D - V.v) times sign(D)
+            auto above = [&](point2 w) {
+                return k.sgn([=](auto L) { return L(w.y) * at.D(L) - v_of(at.V(L), axis); }) == at.d;
+            };
+            a_above = above(a), b_above = above(b);
+            if (a_above == b_above) return false;
+            auto left = [&](point2 w) { return k.sgn([=](auto L) { return u_of(at.V(L), axis) - L(w.x) * at.D(L); }) == at.d; };
+            if (left(a) && left(b)) return false;
+            // orient2d(a, b, V / D) times D: (b - a) x (V - a D)
+            const sign t = k.sgn([=](auto L) {
+                const auto d = at.D(L);
+                const auto v = at.V(L);
+                return (L(b.x) - L(a.x)) * (v_of(v, axis) - L(a.y) * d) - (L(b.y) - L(a.y)) * (u_of(v, axis) - L(a.x) * d);
+            });
+            s = at.d == sign::positive ? t : -t;
+        }
+        if (s == (b_above ? sign::positive : sign::negative)) odd = !odd;
+        return false;
+    });
+    return odd;
+}
+
+// The polygon (usable) against o + t u (a segment, ray or line, finite): an edge meets it, or it
+// crosses H at one point V / D inside, or it lies in H and its origin lies inside.
+template <class K>
+[[nodiscard]] constexpr bool linear_meets(K& k, const polygon3& g, const linear3& x) {
+    if (any_edge(g, [&](const segment3& e) { return linear_linear(k, as_linear(e), x); })) return true;
+    const point3 a = g.vertices[g.plane_vertices[0]];
+    // w = n . u: zero when x is parallel to H
+    const sign w = k.sgn([=](auto L) { return arith::dot(normal(L, g), x.D(L)); });
+    if (w == sign::zero) return side(k, g, x.o) == sign::zero && inside(k, g, at_double{x.o});
+    // t = n . (a - o) / w within the object's range
+    auto T = [=](auto L) { return arith::dot(normal(L, g), arith::lift(L, a) - x.O(L)); };
+    const sign t = k.sgn(T);
+    if (x.bounded_below() && t != sign::zero && t != w) return false; // t < 0
+    if (x.bounded_above()) { // t <= 1: n . (a - q) zero or of the other sign than w
+        const sign e = k.sgn([=](auto L) { return arith::dot(normal(L, g), arith::lift(L, a) - arith::lift(L, x.q)); });
+        if (e == w) return false;
+    }
+    auto D = [=](auto L) { return arith::dot(normal(L, g), x.D(L)); };
+    auto V = [=](auto L) {
+        const auto o = x.O(L);
+        const auto u = x.D(L);
+        const auto d = D(L);
+        const auto s = T(L);
+        using R = decltype(o.x * d + u.x * s);
+        return arith::v3<R>{o.x * d + u.x * s, o.y * d + u.y * s, o.z * d + u.z * s};
+    };
+    return inside(k, g, at_homogeneous<decltype(V), decltype(D)>{V, D, w});
+}
+
+} // namespace planeq
+
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const point3& p, const polygon3& g) {
+    if (!finite(p) || !planeq::usable(k, g)) return false;
+    if (planeq::side(k, g, p) != sign::zero) return false;
+    const linear3 x = as_linear(p);
+    return planeq::any_edge(g, [&](const segment3& e) { return linear_linear(k, as_linear(e), x); }) ||
+           planeq::inside(k, g, planeq::at_double{p});
+}
+// contains(polygon3, point3): the same set.
+template <class K>
+[[nodiscard]] constexpr bool contains(K& k, const polygon3& g, const point3& p) { return intersects(k, p, g); }
+
+} // namespace incidence::pair
+
+// The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
+namespace incidence::pair {
+extern template bool intersects(arith::exact_kernel&, const point3&, const polygon3&);
+extern template bool contains(arith::exact_kernel&, const polygon3&, const point3&);
+} // namespace incidence::pair

@@ -1,0 +1,55 @@
+// polygon3 x segment3: fixtures (crossing inside, through the hole, ending on the polygon and one ulp
+// short, in the plane inside the hole and across its edge); the oracle (the polygon's CGAL constrained
+// triangulation, each triangle against the other shape by CGAL Epeck, the exact LP or the mesh oracle)
+// on 20,000 random and 20,000 near-degenerate cases (support/polygon3_cases.hpp: exactly planar star
+// polygons with holes at scales 2^-500..2^500, the other shape at a vertex, an edge point or inside,
+// along the edge, in the plane or across it, nudged by ulps or not); both argument orders, rotated and
+// reversed rings, rewritten partners, exact translations.
+#include <catch2/catch_test_macros.hpp>
+#include <cmath>
+#include "../oracle/cgal_oracle.hpp"
+import incidence;
+#include "../support/testing.hpp"
+#include "../support/check.hpp"
+#include "../support/flat_checks.hpp"
+#include "../support/lp_shapes.hpp"
+#include "../support/mesh_checks.hpp"
+#include "../support/polygon3_cases.hpp"
+#include "../support/polygon3_checks.hpp"
+#include "../support/polygon3_fixtures.hpp"
+#include "../support/polyhedron_fixtures.hpp"
+#include "../support/kdop_fixtures.hpp"
+#include "../support/mesh_fixtures.hpp"
+
+namespace test_query_polygon_segment { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
+using namespace incidence;
+using namespace support::polygon3_fixtures;
+using namespace support::polyhedron_fixtures;
+using support::corner_cut;
+using support::empty14;
+using support::unit26;
+
+namespace {
+constexpr double approx_bound = 0x1p-40; // stated in modules/query/polygon_segment.cppm
+} // namespace
+
+TEST_CASE("polygon_segment: fixtures", "[polygon_segment]") {
+    CHECK(intersects(holed, segment3{{0.5, 0.5, 0}, {0.5, 0.5, 2}}));
+    CHECK_FALSE(intersects(segment3{{2, 2, 0}, {2, 2, 2}}, holed));          // through the hole
+    CHECK(intersects(holed, segment3{{0.5, 0.5, 0}, {0.5, 0.5, 1}}));        // ends on it
+    CHECK_FALSE(intersects(holed, segment3{{0.5, 0.5, 0}, {0.5, 0.5, 0x1.fffffffffffffp-1}}));
+    CHECK_FALSE(intersects(holed, segment3{{1.5, 2, 1}, {2.5, 2, 1}}));      // in the plane, in the hole
+    CHECK(intersects(holed, segment3{{0.5, 2, 1}, {2, 2, 1}}));              // in the plane, across the hole's edge
+    CHECK(intersects(holed, segment3{{3.5, 3.5, 1}, {3.75, 3.5, 1}}));       // in the plane, inside
+    CHECK(intersects(tilted_l, segment3{{1.5, 0.5, 0}, {1.5, 0.5, 2}}));
+    CHECK_FALSE(intersects(tilted_l, segment3{{1.5, 1.5, 0}, {1.5, 1.5, 2}})); // through the notch
+}
+TEST_CASE("polygon_segment: oracle, random and near-degenerate", "[polygon_segment][oracle]") {
+    support::polygon3_oracle<segment3>("polygon_segment", support::cases(20000), approx_bound);
+}
+TEST_CASE("polygon_segment: rewritten shapes and exact translations give the same answer", "[polygon_segment]") {
+    support::polygon3_symmetries<segment3>("polygon_segment", support::cases(5000));
+}
+
+} // namespace test_query_polygon_segment

@@ -1,0 +1,53 @@
+// polygon3 x triangle3: fixtures (a vertical triangle through the hole alone and across the ring,
+// coplanar triangles in the hole and over the ring, a vertex on the polygon and one ulp above); the
+// oracle (the polygon's CGAL constrained triangulation, each triangle against the other shape by CGAL
+// Epeck, the exact LP or the mesh oracle) on 20,000 random and 20,000 near-degenerate cases
+// (support/polygon3_cases.hpp: exactly planar star polygons with holes at scales 2^-500..2^500, the
+// other shape at a vertex, an edge point or inside, along the edge, in the plane or across it, nudged
+// by ulps or not); both argument orders, rotated and reversed rings, rewritten partners, exact
+// translations.
+#include <catch2/catch_test_macros.hpp>
+#include <cmath>
+#include "../oracle/cgal_oracle.hpp"
+import incidence;
+#include "../support/testing.hpp"
+#include "../support/check.hpp"
+#include "../support/flat_checks.hpp"
+#include "../support/lp_shapes.hpp"
+#include "../support/mesh_checks.hpp"
+#include "../support/polygon3_cases.hpp"
+#include "../support/polygon3_checks.hpp"
+#include "../support/polygon3_fixtures.hpp"
+#include "../support/polyhedron_fixtures.hpp"
+#include "../support/kdop_fixtures.hpp"
+#include "../support/mesh_fixtures.hpp"
+
+namespace test_query_polygon_triangle { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
+using namespace incidence;
+using namespace support::polygon3_fixtures;
+using namespace support::polyhedron_fixtures;
+using support::corner_cut;
+using support::empty14;
+using support::unit26;
+
+namespace {
+constexpr double approx_bound = 0x1p-40; // stated in modules/query/polygon_triangle.cppm
+} // namespace
+
+TEST_CASE("polygon_triangle: fixtures", "[polygon_triangle]") {
+    CHECK_FALSE(intersects(holed, triangle3{{2, 1.5, 0}, {2, 2.5, 0}, {2, 2, 2}}));   // through the hole only
+    CHECK(intersects(holed, triangle3{{2, -1, 0}, {2, 2.5, 0}, {2, 2, 2}}));          // across the ring: y from 1/2 to 9/4 at z = 1
+    CHECK_FALSE(intersects(triangle3{{1.5, 1.5, 1}, {2.5, 1.5, 1}, {2, 2.5, 1}}, holed)); // coplanar, in the hole
+    CHECK(intersects(holed, triangle3{{-9, -9, 1}, {9, -9, 1}, {0, 9, 1}}));         // coplanar, over it all
+    CHECK(intersects(holed, triangle3{{0.5, 0.5, 1}, {9, 9, 5}, {9, 0, 5}}));         // a vertex on it
+    CHECK_FALSE(intersects(holed, triangle3{{0.5, 0.5, 0x1.0000000000001p0}, {9, 9, 5}, {9, 0, 5}}));
+}
+TEST_CASE("polygon_triangle: oracle, random and near-degenerate", "[polygon_triangle][oracle]") {
+    support::polygon3_oracle<triangle3>("polygon_triangle", support::cases(20000), approx_bound);
+}
+TEST_CASE("polygon_triangle: rewritten shapes and exact translations give the same answer", "[polygon_triangle]") {
+    support::polygon3_symmetries<triangle3>("polygon_triangle", support::cases(5000));
+}
+
+} // namespace test_query_polygon_triangle
