@@ -2,9 +2,10 @@
 // Semantics: the closed box (bounds ordered and finite; an inverted box is empty) and the
 // polygon's point set (shapes/polygon3.cppm). Touching counts.
 // Method (exact tiers): an edge of the polygon meets the box (aabb_segment.cppm), or one of the
-// box's twelve edges meets the polygon (polygon_segment.cppm). Complete: where they meet and no
-// polygon edge touches the box, the box's section by the polygon's plane lies inside the polygon,
-// and its corners lie on the box's edges.
+// box's twelve edges crosses the polygon inside (planeq::crossing_inside: a box edge through a
+// polygon edge was found by the first test). Complete: where they meet and no polygon edge
+// touches the box, the box's section by the polygon's plane lies inside the polygon, and its
+// corners lie on the box's edges.
 // Source: the boundary-plus-inside decomposition of point_polygon.cppm; Kay and Kajiya, SIGGRAPH
 // 1986 (the slabs).
 // Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
@@ -30,7 +31,7 @@ template <class K>
     // corner m has bit i set for max along axis i: its edges go to m | 1 << i
     for (unsigned m = 0; m < 8; ++m)
         for (unsigned i = 0; i < 3; ++i)
-            if ((m & (1u << i)) == 0 && planeq::linear_meets(k, g, as_linear(segment3{q.p[m], q.p[m | (1u << i)]}))) return true;
+            if ((m & (1u << i)) == 0 && planeq::crossing_inside(k, g, as_linear(segment3{q.p[m], q.p[m | (1u << i)]}))) return true;
     return false;
 }
 

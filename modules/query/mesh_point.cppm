@@ -62,9 +62,9 @@ namespace meshq {
            b.min.z <= a.max.z;
 }
 // The bounding box of points.
-[[nodiscard]] constexpr aabb3 bounds(const point3* pts, int n) {
+[[nodiscard]] constexpr aabb3 bounds(const point3* pts, std::size_t n) {
     aabb3 b{pts[0], pts[0]};
-    for (int i = 1; i < n; ++i) {
+    for (std::size_t i = 1; i < n; ++i) {
         const point3 v = pts[i];
         b.min = point3{v.x < b.min.x ? v.x : b.min.x, v.y < b.min.y ? v.y : b.min.y, v.z < b.min.z ? v.z : b.min.z};
         b.max = point3{v.x > b.max.x ? v.x : b.max.x, v.y > b.max.y ? v.y : b.max.y, v.z > b.max.z ? v.z : b.max.z};

@@ -125,11 +125,12 @@ template <class K, class At>
     return odd;
 }
 
-// The polygon (usable) against o + t u (a segment, ray or line, finite): an edge meets it, or it
-// crosses H at one point V / D inside, or it lies in H and its origin lies inside.
+// The polygon (usable) against o + t u (a segment, ray or line, finite) that meets no edge of the
+// polygon: it crosses H at one point V / D inside, or it lies in H and its origin lies inside.
+// The shape pairs call this for the edges of a shape X once every polygon edge has been tested
+// against X: an edge of X through a polygon edge would have made that test true.
 template <class K>
-[[nodiscard]] constexpr bool linear_meets(K& k, const polygon3& g, const linear3& x) {
-    if (any_edge(g, [&](const segment3& e) { return linear_linear(k, as_linear(e), x); })) return true;
+[[nodiscard]] constexpr bool crossing_inside(K& k, const polygon3& g, const linear3& x) {
     const point3 a = g.vertices[g.plane_vertices[0]];
     // w = n . u: zero when x is parallel to H
     const sign w = k.sgn([=](auto L) { return arith::dot(normal(L, g), x.D(L)); });
@@ -152,6 +153,12 @@ template <class K>
         return arith::v3<R>{o.x * d + u.x * s, o.y * d + u.y * s, o.z * d + u.z * s};
     };
     return inside(k, g, at_homogeneous<decltype(V), decltype(D)>{V, D, w});
+}
+// The polygon (usable) against o + t u (a segment, ray or line, finite): an edge meets it, or
+// crossing_inside.
+template <class K>
+[[nodiscard]] constexpr bool linear_meets(K& k, const polygon3& g, const linear3& x) {
+    return any_edge(g, [&](const segment3& e) { return linear_linear(k, as_linear(e), x); }) || crossing_inside(k, g, x);
 }
 
 } // namespace planeq

@@ -2,8 +2,9 @@
 // Semantics: the polygon's point set (shapes/polygon3.cppm) and the closed solid tetrahedron
 // (coplanar vertices: their hull). Touching counts.
 // Method (exact tiers): an edge of the polygon meets the tetrahedron (segment_tetrahedron.cppm),
-// or one of its six edges meets the polygon (polygon_segment.cppm). Complete: where they meet and
-// no polygon edge touches the solid, its section by the polygon's plane lies inside the polygon,
+// or one of its six edges crosses the polygon inside (planeq::crossing_inside: an edge through a
+// polygon edge was found by the first test). Complete: where they meet and no polygon edge
+// touches the solid, its section by the polygon's plane lies inside the polygon,
 // and the section's corners lie on the solid's edges.
 // Source: the boundary-plus-inside decomposition of point_polygon.cppm.
 // Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
@@ -26,7 +27,7 @@ template <class K>
     const point3 v[4] = {t.a, t.b, t.c, t.d};
     for (int i = 0; i < 4; ++i)
         for (int j = i + 1; j < 4; ++j)
-            if (planeq::linear_meets(k, g, as_linear(segment3{v[i], v[j]}))) return true;
+            if (planeq::crossing_inside(k, g, as_linear(segment3{v[i], v[j]}))) return true;
     return false;
 }
 

@@ -2,7 +2,8 @@
 // Semantics: the polygon's point set (shapes/polygon3.cppm) and the closed solid triangle
 // (collinear corners: the segments between them). Touching counts.
 // Method (exact tiers): an edge of the polygon meets the triangle (segment_triangle.cppm), or an
-// edge of the triangle meets the polygon (polygon_segment.cppm). Complete: where the two meet and
+// edge of the triangle crosses the polygon inside (planeq::crossing_inside: a triangle edge
+// through a polygon edge was found by the first test). Complete: where the two meet and
 // no polygon edge touches the triangle, the triangle's section by the polygon's plane (a segment,
 // or the triangle itself when coplanar) lies inside the polygon, and its ends are on the
 // triangle's edges.
@@ -25,8 +26,8 @@ template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const polygon3& g, const triangle3& t) {
     if (!finite(t.a) || !finite(t.b) || !finite(t.c) || !planeq::usable(k, g)) return false;
     if (planeq::any_edge(g, [&](const segment3& e) { return intersects(k, e, t); })) return true;
-    return planeq::linear_meets(k, g, as_linear(segment3{t.a, t.b})) || planeq::linear_meets(k, g, as_linear(segment3{t.b, t.c})) ||
-           planeq::linear_meets(k, g, as_linear(segment3{t.c, t.a}));
+    return planeq::crossing_inside(k, g, as_linear(segment3{t.a, t.b})) || planeq::crossing_inside(k, g, as_linear(segment3{t.b, t.c})) ||
+           planeq::crossing_inside(k, g, as_linear(segment3{t.c, t.a}));
 }
 
 } // namespace incidence::pair
