@@ -12,6 +12,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <stdexcept>
 
@@ -103,8 +104,34 @@ bool mesh_inside(const mesh_data& m, const std::array<double, 3>& p) {
 }
 
 bool mesh_intersect(const mesh_data& m, const flat& x) {
-    for (const auto& t : m.t)
-        if (flat_intersect(triangle_of(m, t), x)) return true;
+    // A box lo..hi (infinite bounds allowed) holding x: its points v[0..3n) for a bounded x; for a
+    // ray o + t d, t >= 0, x_k >= o_k where d_k >= 0 and x_k <= o_k where d_k <= 0; for a line,
+    // x_k = o_k where d_k = 0. A triangle whose vertices' box misses it cannot meet x (comparisons
+    // of the inputs), and skips the exact test.
+    const int n = x.kind == flat::point ? 1 : x.kind == flat::segment || x.kind == flat::box ? 2 : x.kind == flat::triangle ? 3
+                : x.kind == flat::tetrahedron ? 4 : 0;
+    const double inf = std::numeric_limits<double>::infinity();
+    std::array<double, 3> lo{-inf, -inf, -inf}, hi{inf, inf, inf};
+    for (int j = 0; j < n; ++j)
+        for (unsigned k = 0; k < 3; ++k) {
+            const double c = x.v[3 * j + static_cast<int>(k)];
+            lo[k] = j == 0 ? c : std::min(lo[k], c), hi[k] = j == 0 ? c : std::max(hi[k], c);
+        }
+    if (x.kind == flat::ray || x.kind == flat::line)
+        for (unsigned k = 0; k < 3; ++k) {
+            const double o = x.v[k], d = x.v[3 + k];
+            if (d >= 0 && (x.kind == flat::ray || d == 0)) lo[k] = o;
+            if (d <= 0 && (x.kind == flat::ray || d == 0)) hi[k] = o;
+        }
+    const bool boxed = x.kind != flat::plane;
+    for (const auto& t : m.t) {
+        bool apart = false;
+        for (unsigned k = 0; k < 3 && boxed; ++k) {
+            const double a = m.v[t[0]][k], b = m.v[t[1]][k], c = m.v[t[2]][k];
+            apart = apart || std::max({a, b, c}) < lo[k] || std::min({a, b, c}) > hi[k];
+        }
+        if (!apart && flat_intersect(triangle_of(m, t), x)) return true;
+    }
     if (x.kind == flat::plane) return false; // a plane cannot lie inside a bounded solid
     if (x.kind == flat::box && !(x.v[0] <= x.v[3] && x.v[1] <= x.v[4] && x.v[2] <= x.v[5])) return false; // empty
     return mesh_inside(m, {x.v[0], x.v[1], x.v[2]}); // a point, an origin, a vertex or the box's min corner
@@ -116,22 +143,67 @@ namespace {
 // every product exact in rationals.
 int rows_decide(const convex_set& x, const std::array<std::array<double, 3>, 3>& v) {
     if (x.plane || !x.points.empty() || !x.generators.empty()) return 0;
-    auto along = [](const std::array<double, 3>& n, const std::array<double, 3>& p) -> mpq_class { // not an expression template of temporaries
-        return mpq_class(n[0]) * p[0] + mpq_class(n[1]) * p[1] + mpq_class(n[2]) * p[2];
+    // The sign of n . p - c: in double when the rounding cannot reach it (each term of
+    // n0 p0 + n1 p1 + n2 p2 - c goes through at most 4 roundings, under 2^-51 of the sum of their
+    // magnitudes, plus under 2^-1072 from products that underflow), else in rationals.
+    auto sign_of = [](const std::array<double, 3>& n, const std::array<double, 3>& p, double c) -> int {
+        const double a = n[0] * p[0], b = n[1] * p[1], d = n[2] * p[2];
+        const double s = a + b + d - c, size = std::fabs(a) + std::fabs(b) + std::fabs(d) + std::fabs(c);
+        if (std::isfinite(size)) {
+            const double reach = size * 0x1p-49 + 0x1p-1060;
+            if (s > reach) return 1;
+            if (s < -reach) return -1;
+        }
+        const mpq_class e = mpq_class(n[0]) * p[0] + mpq_class(n[1]) * p[1] + mpq_class(n[2]) * p[2] - c;
+        return sgn(e);
     };
     std::array<bool, 3> inside{true, true, true};
     for (const auto& h : x.halfspaces) {
         int beyond = 0;
         for (unsigned j = 0; j < 3; ++j)
-            if (along(h.n, v[j]) > h.offset) ++beyond, inside[j] = false;
+            if (sign_of(h.n, v[j], h.offset) > 0) ++beyond, inside[j] = false;
         if (beyond == 3) return -1;
     }
     for (const auto& sl : x.slabs) {
         int below = 0, above = 0;
         for (unsigned j = 0; j < 3; ++j) {
-            const mpq_class d = along(sl.n, v[j]);
-            if (d < sl.lo) ++below, inside[j] = false;
-            if (d > sl.hi) ++above, inside[j] = false;
+            if (sign_of(sl.n, v[j], sl.lo) < 0) ++below, inside[j] = false;
+            if (sign_of(sl.n, v[j], sl.hi) > 0) ++above, inside[j] = false;
+        }
+        if (below == 3 || above == 3) return -1;
+    }
+    return inside[0] || inside[1] || inside[2] ? 1 : 0;
+}
+// For x a parallelepiped c + sum s_i a_i, lo_i <= s_i <= hi_i (an OBB): with n_i = a_j x a_k and
+// D = n_i . a_i = det(a0, a1, a2), a point p of x has n_i . (p - c) = s_i D. So -1 when the three
+// points lie on one side beyond such a slab (the triangle misses x), +1 when D is not zero and
+// one of them lies within all three (it is in x), else 0; in exact rationals.
+int box_decide(const convex_set& x, const std::array<std::array<double, 3>, 3>& v) {
+    if (x.plane || x.points.size() != 1 || x.generators.size() != 3 || !x.slabs.empty() || !x.halfspaces.empty()) return 0;
+    for (const auto& g : x.generators)
+        if (!g.has_lo || !g.has_hi) return 0;
+    using V = std::array<mpq_class, 3>;
+    auto of = [](const std::array<double, 3>& p) { return V{mpq_class(p[0]), mpq_class(p[1]), mpq_class(p[2])}; };
+    auto cross = [](const V& a, const V& b) { return V{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; };
+    auto dot = [](const V& a, const V& b) -> mpq_class { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+    const V a[3] = {of(x.generators[0].g), of(x.generators[1].g), of(x.generators[2].g)};
+    const V c = of(x.points[0]);
+    V rel[3];
+    for (unsigned j = 0; j < 3; ++j) {
+        const V p = of(v[j]);
+        rel[j] = V{p[0] - c[0], p[1] - c[1], p[2] - c[2]};
+    }
+    const mpq_class det = dot(cross(a[1], a[2]), a[0]);
+    std::array<bool, 3> inside{det != 0, det != 0, det != 0};
+    for (unsigned i = 0; i < 3; ++i) {
+        const V n = cross(a[(i + 1) % 3], a[(i + 2) % 3]);
+        mpq_class lo = mpq_class(x.generators[i].lo) * det, hi = mpq_class(x.generators[i].hi) * det;
+        if (det < 0) std::swap(lo, hi);
+        int below = 0, above = 0;
+        for (unsigned j = 0; j < 3; ++j) {
+            const mpq_class d = dot(n, rel[j]);
+            if (d < lo) ++below, inside[j] = false;
+            if (d > hi) ++above, inside[j] = false;
         }
         if (below == 3 || above == 3) return -1;
     }
@@ -166,6 +238,10 @@ bool triangles_meet(const mesh_data& m, const convex_set& x) {
             if (apart) continue;
         }
         if (const int r = rows_decide(x, {m.v[t[0]], m.v[t[1]], m.v[t[2]]}); r != 0) {
+            if (r > 0) return true;
+            continue;
+        }
+        if (const int r = box_decide(x, {m.v[t[0]], m.v[t[1]], m.v[t[2]]}); r != 0) {
             if (r > 0) return true;
             continue;
         }

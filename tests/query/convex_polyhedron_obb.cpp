@@ -1,7 +1,7 @@
 // convex_polyhedron3 x obb3: fixtures (a skew box touching the cut cube along an edge and one ulp
 // away, a box above a wedge that no single plane separates, empty and unbounded sets, flat boxes,
 // NaN and negative extents); the exact LP oracle (the polyhedron as its half-spaces, the box as
-// its centre plus bounded multiples of its axes) on 10,000 random and 10,000 near-degenerate cases
+// its centre plus bounded multiples of its axes) on 20,000 random and 20,000 near-degenerate cases
 // (a polyhedron of 4 to 12 supporting half-spaces of a small dyadic cloud, unbounded, flat and
 // empty ones included, the box placed with a corner, an edge or face point at one of its boundary
 // points, in a permuted, near-rotation or skew frame, zero extents included; then a random
@@ -54,7 +54,7 @@ TEST_CASE("convex_polyhedron_obb: fixtures", "[convex_polyhedron_obb]") {
     CHECK(contains(half_space, upright({-1, 0, 0}, 1, 7, 7)));
 }
 TEST_CASE("convex_polyhedron_obb: oracle, random and near-degenerate", "[convex_polyhedron_obb][oracle]") {
-    support::halfspace_oracle<convex_polyhedron3, obb3>("convex_polyhedron_obb", support::cases(10000), approx_bound);
+    support::halfspace_oracle<convex_polyhedron3, obb3>("convex_polyhedron_obb", support::cases(20000), approx_bound);
 }
 TEST_CASE("convex_polyhedron_obb: rewrites of both shapes and exact translations give the same answer", "[convex_polyhedron_obb]") {
     support::halfspace_symmetries<convex_polyhedron3, obb3>("convex_polyhedron_obb", support::cases(5000));

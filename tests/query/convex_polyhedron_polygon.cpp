@@ -1,7 +1,7 @@
 // convex_polyhedron3 x polygon3: fixtures (the cut cube touching the holed square, a half-space at an
 // edge, an empty set, a post whose section lies in the hole and over the ring); the oracle (the
 // polygon's CGAL constrained triangulation, each triangle against the other shape by CGAL Epeck, the
-// exact LP or the mesh oracle) on 10,000 random and 10,000 near-degenerate cases
+// exact LP or the mesh oracle) on 20,000 random and 20,000 near-degenerate cases
 // (support/polygon3_cases.hpp: exactly planar star polygons with holes at scales 2^-500..2^500, the
 // other shape at a vertex, an edge point or inside, along the edge, in the plane or across it, nudged
 // by ulps or not); both argument orders, rotated and reversed rings, rewritten partners, exact
@@ -47,7 +47,7 @@ TEST_CASE("convex_polyhedron_polygon: fixtures", "[convex_polyhedron_polygon]") 
     CHECK(intersects(post, ring));
 }
 TEST_CASE("convex_polyhedron_polygon: oracle, random and near-degenerate", "[convex_polyhedron_polygon][oracle]") {
-    support::polygon3_oracle<convex_polyhedron3>("convex_polyhedron_polygon", support::cases(10000), approx_bound);
+    support::polygon3_oracle<convex_polyhedron3>("convex_polyhedron_polygon", support::cases(20000), approx_bound);
 }
 TEST_CASE("convex_polyhedron_polygon: rewritten shapes and exact translations give the same answer", "[convex_polyhedron_polygon]") {
     support::polygon3_symmetries<convex_polyhedron3>("convex_polyhedron_polygon", support::cases(5000));

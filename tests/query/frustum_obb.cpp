@@ -1,7 +1,7 @@
 // frustum3 x obb3: fixtures (a skew box touching the integer frustum's far corner with an edge and
 // one ulp away, a box beside a side edge that no single plane separates, a camera frustum,
 // contains on the near face); the exact LP oracle (the frustum as its half-spaces, the box as its
-// centre plus bounded multiples of its axes) on 10,000 random and 10,000 near-degenerate cases (an
+// centre plus bounded multiples of its axes) on 20,000 random and 20,000 near-degenerate cases (an
 // axis-aligned integer frustum (corners dyadic) or a camera frustum (frustum3::from_camera), the box
 // placed with a corner, an edge or face point at one of its boundary points, in a permuted,
 // near-rotation or skew frame; then a random exact-or-nudged scale 2^-500..2^500 and translation);
@@ -56,7 +56,7 @@ TEST_CASE("frustum_obb: fixtures", "[frustum_obb]") {
     CHECK_FALSE(contains(integer_frustum, obb3{{0, 0, 2}, turned, {0.5, 0.5, -1}}));  // negative extent: no box
 }
 TEST_CASE("frustum_obb: oracle, random and near-degenerate", "[frustum_obb][oracle]") {
-    support::halfspace_oracle<frustum3, obb3>("frustum_obb", support::cases(10000), approx_bound);
+    support::halfspace_oracle<frustum3, obb3>("frustum_obb", support::cases(20000), approx_bound);
 }
 TEST_CASE("frustum_obb: rewrites of both shapes and exact translations give the same answer", "[frustum_obb]") {
     support::halfspace_symmetries<frustum3, obb3>("frustum_obb", support::cases(5000));

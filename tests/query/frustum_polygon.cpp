@@ -1,7 +1,7 @@
 // frustum3 x polygon3: fixtures (the integer frustum's section [-1, 1]^2 at z = 1 inside a ring's hole
 // and touching a tighter hole's edges, the holed square, a camera frustum behind the eye); the oracle
 // (the polygon's CGAL constrained triangulation, each triangle against the other shape by CGAL Epeck,
-// the exact LP or the mesh oracle) on 10,000 random and 10,000 near-degenerate cases
+// the exact LP or the mesh oracle) on 20,000 random and 20,000 near-degenerate cases
 // (support/polygon3_cases.hpp: exactly planar star polygons with holes at scales 2^-500..2^500, the
 // other shape at a vertex, an edge point or inside, along the edge, in the plane or across it, nudged
 // by ulps or not); both argument orders, rotated and reversed rings, rewritten partners, exact
@@ -44,7 +44,7 @@ TEST_CASE("frustum_polygon: fixtures", "[frustum_polygon]") {
     CHECK_FALSE(intersects(camera, holed)); // the camera looks down -z from the origin: z = 1 is behind it
 }
 TEST_CASE("frustum_polygon: oracle, random and near-degenerate", "[frustum_polygon][oracle]") {
-    support::polygon3_oracle<frustum3>("frustum_polygon", support::cases(10000), approx_bound);
+    support::polygon3_oracle<frustum3>("frustum_polygon", support::cases(20000), approx_bound);
 }
 TEST_CASE("frustum_polygon: rewritten shapes and exact translations give the same answer", "[frustum_polygon]") {
     support::polygon3_symmetries<frustum3>("frustum_polygon", support::cases(5000));

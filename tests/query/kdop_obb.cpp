@@ -1,10 +1,10 @@
 // kdop<K> x obb3, K = 6, 14, 18, 26: fixtures (a skew box touching the corner-cut 14-DOP along an
 // edge and one ulp away, around it, an empty k-DOP, contains); the exact LP oracle (the k-DOP as
 // its slabs lo <= d . x <= hi, the box as its centre plus bounded multiples of its axes) on 5,000
-// random and 2,500 near-degenerate cases per K (10,000 and 10,000 in all: the k-DOP of a small dyadic cloud, the box placed
-// with a corner, an edge or face point at one of its extreme points, in a permuted, near-rotation
-// or skew frame; then a random exact-or-nudged scale and translation); rewritten boxes and exact
-// translations; contains against the box's exact corners.
+// random and 5,000 near-degenerate cases per K (20,000 and 20,000 in all: the k-DOP of a small
+// dyadic cloud, the box placed with a corner, an edge or face point at one of its extreme points,
+// in a permuted, near-rotation or skew frame; then a random exact-or-nudged scale and
+// translation); rewritten boxes and exact translations; contains against the box's exact corners.
 #include <catch2/catch_test_macros.hpp>
 #include <cmath>
 #include "../oracle/cgal_oracle.hpp"
@@ -41,7 +41,7 @@ TEST_CASE("kdop_obb: fixtures", "[kdop_obb]") {
     CHECK_FALSE(contains(empty14, obb3{{0.5, 0.5, 0.5}, turned, {0, 0, 0}}));
 }
 TEST_CASE("kdop_obb: oracle, random and near-degenerate, K = 6, 14, 18, 26", "[kdop_obb][oracle]") {
-    support::kdop_oracle_every_k<obb3>("kdop_obb", support::cases(2500), approx_bound);
+    support::kdop_oracle_every_k<obb3>("kdop_obb", support::cases(5000), approx_bound);
 }
 TEST_CASE("kdop_obb: rewrites of the other shape and exact translations give the same answer", "[kdop_obb]") {
     support::kdop_symmetries_every_k<obb3>("kdop_obb", support::cases(2500));

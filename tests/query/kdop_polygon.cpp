@@ -1,7 +1,7 @@
 // kdop<K> x polygon3, K = 6, 14, 18, 26: fixtures (the corner-cut 14-DOP touching the holed square, an
 // empty k-DOP, the 26-DOP around it); the oracle (the polygon's CGAL constrained triangulation, each
-// triangle against the other shape by CGAL Epeck, the exact LP or the mesh oracle) on 2,500 random and
-// 2,500 near-degenerate cases per K (10,000 and 10,000 in all) (support/polygon3_cases.hpp: exactly
+// triangle against the other shape by CGAL Epeck, the exact LP or the mesh oracle) on 5,000 random and
+// 5,000 near-degenerate cases per K (20,000 and 20,000 in all) (support/polygon3_cases.hpp: exactly
 // planar star polygons with holes at scales 2^-500..2^500, the other shape at a vertex, an edge point
 // or inside, along the edge, in the plane or across it, nudged by ulps or not); both argument orders,
 // rotated and reversed rings, rewritten partners, exact translations.
@@ -41,10 +41,10 @@ TEST_CASE("kdop_polygon: fixtures", "[kdop_polygon]") {
     CHECK(intersects(holed, corner_cut));
 }
 TEST_CASE("kdop_polygon: oracle, random and near-degenerate", "[kdop_polygon][oracle]") {
-    support::polygon3_oracle<kdop<6>>("kdop_polygon 6-dop", support::cases(2500), approx_bound);
-    support::polygon3_oracle<kdop<14>>("kdop_polygon 14-dop", support::cases(2500), approx_bound);
-    support::polygon3_oracle<kdop<18>>("kdop_polygon 18-dop", support::cases(2500), approx_bound);
-    support::polygon3_oracle<kdop<26>>("kdop_polygon 26-dop", support::cases(2500), approx_bound);
+    support::polygon3_oracle<kdop<6>>("kdop_polygon 6-dop", support::cases(5000), approx_bound);
+    support::polygon3_oracle<kdop<14>>("kdop_polygon 14-dop", support::cases(5000), approx_bound);
+    support::polygon3_oracle<kdop<18>>("kdop_polygon 18-dop", support::cases(5000), approx_bound);
+    support::polygon3_oracle<kdop<26>>("kdop_polygon 26-dop", support::cases(5000), approx_bound);
 }
 TEST_CASE("kdop_polygon: rewritten shapes and exact translations give the same answer", "[kdop_polygon]") {
     support::polygon3_symmetries<kdop<14>>("kdop_polygon 14-dop", support::cases(1000));

@@ -1,7 +1,7 @@
 // mesh3 x polygon3: fixtures (the unit cube's top face on the polygon, a triangle one ulp above the
 // cube, a triangle wholly inside the solid cube, in the dent of the dented one and below it); the
 // oracle (the polygon's CGAL constrained triangulation, each triangle against the other shape by CGAL
-// Epeck, the exact LP or the mesh oracle) on 2,500 random and 2,500 near-degenerate cases
+// Epeck, the exact LP or the mesh oracle) on 20,000 random and 20,000 near-degenerate cases
 // (support/polygon3_cases.hpp: exactly planar star polygons with holes at scales 2^-500..2^500, the
 // other shape at a vertex, an edge point or inside, along the edge, in the plane or across it, nudged
 // by ulps or not); both argument orders, rotated and reversed rings, rewritten partners, exact
@@ -46,7 +46,7 @@ TEST_CASE("mesh_polygon: fixtures", "[mesh_polygon]") {
     CHECK(intersects(support::dented, polygon3{low, {}, {0, 1, 2}, 2})); // below the dent: inside the solid
 }
 TEST_CASE("mesh_polygon: oracle, random and near-degenerate", "[mesh_polygon][oracle]") {
-    support::polygon3_oracle<mesh3>("mesh_polygon", support::cases(2500), approx_bound);
+    support::polygon3_oracle<mesh3>("mesh_polygon", support::cases(20000), approx_bound);
 }
 TEST_CASE("mesh_polygon: rewritten shapes and exact translations give the same answer", "[mesh_polygon]") {
     support::polygon3_symmetries<mesh3>("mesh_polygon", support::cases(1000));

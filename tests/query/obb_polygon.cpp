@@ -1,7 +1,7 @@
 // obb3 x polygon3: fixtures (a turned box in the hole touching its edges and one ulp smaller, a box
 // over the ring and one ulp short, flat boxes in the plane); the oracle (the polygon's CGAL
 // constrained triangulation, each triangle against the other shape by CGAL Epeck, the exact LP or the
-// mesh oracle) on 10,000 random and 10,000 near-degenerate cases (support/polygon3_cases.hpp: exactly
+// mesh oracle) on 20,000 random and 20,000 near-degenerate cases (support/polygon3_cases.hpp: exactly
 // planar star polygons with holes at scales 2^-500..2^500, the other shape at a vertex, an edge point
 // or inside, along the edge, in the plane or across it, nudged by ulps or not); both argument orders,
 // rotated and reversed rings, rewritten partners, exact translations.
@@ -45,7 +45,7 @@ TEST_CASE("obb_polygon: fixtures", "[obb_polygon]") {
     CHECK_FALSE(intersects(obb3{{2, 2, 1}, unit, {0.25, 0.25, 0}}, holed)); // flat, in the hole
 }
 TEST_CASE("obb_polygon: oracle, random and near-degenerate", "[obb_polygon][oracle]") {
-    support::polygon3_oracle<obb3>("obb_polygon", support::cases(10000), approx_bound);
+    support::polygon3_oracle<obb3>("obb_polygon", support::cases(20000), approx_bound);
 }
 TEST_CASE("obb_polygon: rewritten shapes and exact translations give the same answer", "[obb_polygon]") {
     support::polygon3_symmetries<obb3>("obb_polygon", support::cases(5000));

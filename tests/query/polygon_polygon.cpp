@@ -1,6 +1,6 @@
 // polygon3 x polygon3: fixtures (the ring and the holed square, the tilted L through the holed square,
 // a polygon in the hole); the oracle (the polygon's CGAL constrained triangulation, each triangle
-// against the other shape by CGAL Epeck, the exact LP or the mesh oracle) on 10,000 random and 10,000
+// against the other shape by CGAL Epeck, the exact LP or the mesh oracle) on 20,000 random and 20,000
 // near-degenerate cases (support/polygon3_cases.hpp: exactly planar star polygons with holes at scales
 // 2^-500..2^500, the other shape at a vertex, an edge point or inside, along the edge, in the plane or
 // across it, nudged by ulps or not); both argument orders, rotated and reversed rings, rewritten
@@ -42,7 +42,7 @@ TEST_CASE("polygon_polygon: fixtures", "[polygon_polygon]") {
     CHECK_FALSE(intersects(holed, polygon3{small_tri, {}, {0, 1, 2}, 2})); // in the hole
 }
 TEST_CASE("polygon_polygon: oracle, random and near-degenerate", "[polygon_polygon][oracle]") {
-    support::polygon3_oracle<polygon3>("polygon_polygon", support::cases(10000), approx_bound);
+    support::polygon3_oracle<polygon3>("polygon_polygon", support::cases(20000), approx_bound);
 }
 TEST_CASE("polygon_polygon: rewritten shapes and exact translations give the same answer", "[polygon_polygon]") {
     support::polygon3_symmetries<polygon3>("polygon_polygon", support::cases(5000));

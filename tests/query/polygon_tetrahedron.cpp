@@ -1,7 +1,7 @@
 // polygon3 x tetrahedron3: fixtures (an apex on the polygon and one ulp above, a tetrahedron through
 // the hole alone, one around the polygon); the oracle (the polygon's CGAL constrained triangulation,
-// each triangle against the other shape by CGAL Epeck, the exact LP or the mesh oracle) on 10,000
-// random and 10,000 near-degenerate cases (support/polygon3_cases.hpp: exactly planar star polygons
+// each triangle against the other shape by CGAL Epeck, the exact LP or the mesh oracle) on 20,000
+// random and 20,000 near-degenerate cases (support/polygon3_cases.hpp: exactly planar star polygons
 // with holes at scales 2^-500..2^500, the other shape at a vertex, an edge point or inside, along the
 // edge, in the plane or across it, nudged by ulps or not); both argument orders, rotated and reversed
 // rings, rewritten partners, exact translations.
@@ -41,7 +41,7 @@ TEST_CASE("polygon_tetrahedron: fixtures", "[polygon_tetrahedron]") {
     CHECK(intersects(holed, tetrahedron3{{-20, -20, -5}, {20, -20, -5}, {0, 20, -5}, {0, 0, 20}}));      // around it
 }
 TEST_CASE("polygon_tetrahedron: oracle, random and near-degenerate", "[polygon_tetrahedron][oracle]") {
-    support::polygon3_oracle<tetrahedron3>("polygon_tetrahedron", support::cases(10000), approx_bound);
+    support::polygon3_oracle<tetrahedron3>("polygon_tetrahedron", support::cases(20000), approx_bound);
 }
 TEST_CASE("polygon_tetrahedron: rewritten shapes and exact translations give the same answer", "[polygon_tetrahedron]") {
     support::polygon3_symmetries<tetrahedron3>("polygon_tetrahedron", support::cases(5000));
