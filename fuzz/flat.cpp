@@ -16,15 +16,27 @@
 // planar, against the 3D shape of kind byte 1 % 6 (9 more doubles): polygon3::make must accept
 // exactly the simple ones, whose contracts hold against the triangles of the polygon's CGAL
 // triangulation (oracle::polygon3_triangles, each by oracle::flat); the same vertices bent off the
-// plane (one coordinate replaced) run every tier unchecked. Any finding aborts.
+// plane (one coordinate replaced) run every tier unchecked. With bit 0x20 of byte 1 too, the
+// polygon3 is against a closed shape of kind byte 1 % 8 (up to 18 more doubles): a box (6, maybe
+// inverted), an OBB (15), a tetrahedron (12), a convex polyhedron of 1 to 4 planes, a frustum
+// (18), a 14-DOP (14), a mesh of octahedron topology (18, maybe self-intersecting) or a second
+// polygon3 (13, its plane's coordinate (byte 1 / 8) % 3); the triangles go against it by
+// oracle::flat, the exact LP or the mesh oracle (support::polygon3_truth). Any finding aborts.
 #include "../tests/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <stdexcept>
 import incidence;
 #include "contracts.hpp"
+#include "partners.hpp"
+#include "../tests/support/testing.hpp"
+#include "../tests/support/flat_cases.hpp"
 #include "../tests/support/flat_shapes.hpp"
+#include "../tests/support/lp_shapes.hpp"
+#include "../tests/support/mesh_cases.hpp"
+#include "../tests/support/polygon3_cases.hpp"
 #include <array>
 #include <cstdint>
 #include <span>
@@ -54,6 +66,45 @@ void with_shape2(int kind, const double* v, F f) {
 }
 constexpr int used[] = {3, 6, 6, 6, 4, 9};
 constexpr int used2[] = {2, 4, 4, 4};
+
+// Six vertices in the plane where coordinate `axis` is w[12], from w[0..12).
+std::array<point3, 6> planar_hexagon(const double* w, int axis) {
+    std::array<point3, 6> verts;
+    for (unsigned i = 0; i < 6; ++i) {
+        double c[3];
+        c[axis] = w[12];
+        c[(axis + 1) % 3] = w[2 * i], c[(axis + 2) % 3] = w[2 * i + 1];
+        verts[i] = point3{c[0], c[1], c[2]};
+    }
+    return verts;
+}
+// The closed partners of a polygon3 (kind 0..7) and the doubles each reads (the convex polyhedron
+// 4 per plane).
+constexpr int used_closed[] = {6, 15, 12, 16, 18, 14, 18, 13};
+template <class F>
+void with_closed(int kind, const double* h, int planes, int axis, F f) {
+    const point3 p{h[0], h[1], h[2]};
+    switch (kind) {
+    case 0: f(aabb3{p, {h[3], h[4], h[5]}}); break;
+    case 1: f(obb3{p, {vec3{h[3], h[4], h[5]}, vec3{h[6], h[7], h[8]}, vec3{h[9], h[10], h[11]}}, {h[12], h[13], h[14]}}); break;
+    case 2: f(tetrahedron3{p, {h[3], h[4], h[5]}, {h[6], h[7], h[8]}, {h[9], h[10], h[11]}}); break;
+    case 3: f(fuzz::polyhedron_from(h, planes)); break;
+    case 4: f(fuzz::frustum_from(h)); break;
+    case 5: f(fuzz::kdop14_from(h)); break;
+    case 6: {
+        std::array<point3, 6> verts;
+        for (unsigned i = 0; i < 6; ++i) verts[i] = point3{h[3 * i], h[3 * i + 1], h[3 * i + 2]};
+        f(mesh3{verts, fuzz::octahedron});
+        break;
+    }
+    default: {
+        const auto verts = planar_hexagon(h, axis);
+        const auto made = polygon3::make(verts, {});
+        f(made.has_value() ? made.value() : polygon3{verts, {}, {0, 1, 2}, axis}); // unchecked when not made
+        break;
+    }
+    }
+}
 
 // Every tier must finish on any bits; on finite input the contracts hold against the oracle.
 template <class A, class B>
@@ -103,7 +154,7 @@ void check_polygon(const polygon2& g, const B& b, bool finite) {
         if (contains(g, b) != truth) std::abort();
 }
 // The 3D polygon: every tier finishes; on finite input make() accepts exactly the simple rings, and
-// the contracts hold against the triangulation oracle.
+// the contracts hold against the triangulation oracle (support::polygon3_truth).
 template <class B>
 void check_polygon3(const std::array<point3, 6>& verts, std::span<const std::uint32_t> ends, int axis, const B& b, bool finite) {
     const auto made = polygon3::make(verts, ends);
@@ -120,24 +171,31 @@ void check_polygon3(const std::array<point3, 6>& verts, std::span<const std::uin
         return;
     }
     oracle::polygon_data flat;
-    oracle::polygon3_data d;
     for (const auto& p : verts) {
         const double c[3] = {p.x, p.y, p.z};
         flat.v.push_back({c[(axis + 1) % 3], c[(axis + 2) % 3]});
-        d.v.push_back({p.x, p.y, p.z});
     }
     if (ends.empty()) flat.ring_ends.push_back(6);
     for (auto e : ends) flat.ring_ends.push_back(e);
-    d.ring_ends = flat.ring_ends;
-    d.axis = axis;
     const bool simple = oracle::polygon_simple(flat);
     // a ring on one line has no area: make refuses it as degenerate (polygon_simple may accept it)
     if (made.has_value() && !simple) std::abort();
     if (!made.has_value()) return;
+    if constexpr (std::is_same_v<B, polygon3>)
+        if (!polygon3::make(b.vertices, b.ring_ends).has_value()) return; // a partner that is no set: unchecked
+    // empty partners: the oracle's forms need bounds in order, the library says no
+    bool empty = false;
+    if constexpr (std::is_same_v<B, aabb3>) empty = !(b.min.x <= b.max.x && b.min.y <= b.max.y && b.min.z <= b.max.z);
+    if constexpr (std::is_same_v<B, obb3>) empty = !(b.half_extents[0] >= 0 && b.half_extents[1] >= 0 && b.half_extents[2] >= 0);
+    if (empty) {
+        if (intersects(g, b)) std::abort();
+        return;
+    }
     bool truth = false;
-    for (const auto& t : oracle::polygon3_triangles(d)) {
-        const triangle3 T{{t[0], t[1], t[2]}, {t[3], t[4], t[5]}, {t[6], t[7], t[8]}};
-        truth = truth || oracle::flat_intersect(support::to_flat(T), support::to_flat(b));
+    try {
+        truth = support::polygon3_truth(g, b);
+    } catch (const std::runtime_error&) {
+        return; // the oracle declined (the LP's certificate check, or no clean ray for the parity)
     }
     contracts(g, b, truth);
     if constexpr (std::is_same_v<B, point3>)
@@ -147,7 +205,7 @@ void check_polygon3(const std::array<point3, 6>& verts, std::span<const std::uin
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     if (size < 2) return 0;
-    double v[24] = {};
+    double v[32] = {};
     std::memcpy(v, data + 2, size - 2 < sizeof v ? size - 2 : sizeof v);
     bool finite = true;
     if ((data[0] & 0xc0) == 0xc0) { // a polygon in the plane
@@ -166,19 +224,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         return 0;
     }
     if ((data[0] & 0xc0) == 0x40 && (data[1] & 0x80)) { // a planar polygon in space
-        const int axis = data[0] % 3, kb = data[1] % 6;
+        const int axis = data[0] % 3;
+        const bool closed = (data[1] & 0x20) != 0;
+        const int kb = closed ? data[1] % 8 : data[1] % 6, planes = 1 + (data[0] >> 2) % 4;
         for (int i = 0; i < 13; ++i) finite = finite && std::isfinite(v[i]);
-        for (int i = 0; i < used[kb]; ++i) finite = finite && std::isfinite(v[13 + i]);
-        std::array<point3, 6> verts;
-        for (unsigned i = 0; i < 6; ++i) {
-            double c[3];
-            c[axis] = v[12];
-            c[(axis + 1) % 3] = v[2 * i], c[(axis + 2) % 3] = v[2 * i + 1];
-            verts[i] = point3{c[0], c[1], c[2]};
-        }
+        const int reads = !closed ? used[kb] : (kb == 3 ? 4 * planes : used_closed[kb]);
+        for (int i = 0; i < reads; ++i) finite = finite && std::isfinite(v[13 + i]);
+        const std::array<point3, 6> verts = planar_hexagon(v, axis);
         static constexpr std::array<std::uint32_t, 2> two_rings{{3, 6}};
         const std::span<const std::uint32_t> ends = (data[1] & 0x40) ? std::span<const std::uint32_t>(two_rings) : std::span<const std::uint32_t>();
-        with_shape(kb, v + 13, [&](const auto& b) {
+        auto run = [&](const auto& b) {
             check_polygon3(verts, ends, axis, b, finite);
             std::array<point3, 6> bent = verts; // off the plane: unchecked, every tier finishes
             bent[data[1] % 6].x = v[(data[1] + 7) % 24];
@@ -186,7 +241,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             (void)intersects<exact>(g, b);
             (void)intersects<approximate>(b, g);
             (void)classify(g, b);
-        });
+        };
+        if (closed) with_closed(kb, v + 13, planes, (data[1] >> 3) % 3, run);
+        else with_shape(kb, v + 13, run);
         return 0;
     }
     if (data[0] & 0x80) { // in the plane

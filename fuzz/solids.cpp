@@ -26,6 +26,7 @@
 #include <stdexcept>
 import incidence;
 #include "contracts.hpp"
+#include "partners.hpp"
 #include "../tests/support/testing.hpp"
 #include "../tests/support/flat_cases.hpp"
 #include "../tests/support/mesh_cases.hpp"
@@ -125,8 +126,7 @@ void check(const tetrahedron3& a, const B& b, bool finite) {
     }
     if (const auto t = truth(a, b)) contracts(a, b, *t);
 }
-constexpr std::array<std::array<std::uint32_t, 3>, 8> octahedron{
-    {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}}};
+using fuzz::octahedron;
 
 // Two meshes that may intersect themselves (any vertex positions): PMP::do_intersect, the
 // tests' oracle, expects self-intersection-free meshes, so here the oracle is the set's
@@ -194,20 +194,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if ((data[0] & 0x40) && data[0] % 8 >= 4 && data[0] % 8 <= 6) { // a half-space set (18 doubles)
             for (int i = 0; i < 36; ++i) finite = finite && std::isfinite(w[i]);
             const double* h = w + 18;
-            if (data[0] % 8 == 6) { // 1 to 4 planes
-                convex_polyhedron3 c{};
-                c.count = 1 + data[0] / 8 % 4;
-                for (unsigned i = 0; i < static_cast<unsigned>(c.count); ++i) c.planes[i] = plane3{{h[4 * i % 18], h[(4 * i + 1) % 18], h[(4 * i + 2) % 18]}, h[(4 * i + 3) % 18]};
-                check_mesh(m, c, finite);
-            } else if (data[0] % 8 == 5) { // six planes, the doubles read again
-                frustum3 f{};
-                for (unsigned i = 0; i < 6; ++i) f.planes[i] = plane3{{h[4 * i % 18], h[(4 * i + 1) % 18], h[(4 * i + 2) % 18]}, h[(4 * i + 3) % 18]};
-                check_mesh(m, f, finite);
-            } else { // a 14-DOP's bounds (maybe inverted: empty)
-                kdop<14> kd{};
-                for (unsigned i = 0; i < 7; ++i) kd.min[i] = h[i], kd.max[i] = h[i + 7];
-                check_mesh(m, kd, finite);
-            }
+            if (data[0] % 8 == 6) check_mesh(m, fuzz::polyhedron_from(h, 1 + data[0] / 8 % 4), finite); // 1 to 4 planes
+            else if (data[0] % 8 == 5) check_mesh(m, fuzz::frustum_from(h), finite); // six planes, the doubles read again
+            else check_mesh(m, fuzz::kdop14_from(h), finite); // a 14-DOP's bounds (maybe inverted: empty)
             return 0;
         }
         if (data[0] & 0x40) { // a second mesh (18 doubles), or an OBB when byte 0 % 8 == 7 (its LP per triangle is slow)

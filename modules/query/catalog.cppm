@@ -223,7 +223,7 @@ inline constexpr std::tuple view_families{
     family<aabb3, polygon3, 0>{"aabb_polygon", "flat", "signs in double", {}},
     family<obb3, polygon3, 0>{"obb_polygon", "flat", "signs in double", {}},
     family<polygon3, tetrahedron3, 0>{"polygon_tetrahedron", "flat", "signs in double", {}},
-    family<mesh3, polygon3, 0>{"mesh_polygon", "solids", "signs in double", {}},
+    family<mesh3, polygon3, 0>{"mesh_polygon", "flat", "signs in double", {}},
     family<convex_polyhedron3, polygon3, 0>{"convex_polyhedron_polygon", "flat", "signs in double", {}},
     family<frustum3, polygon3, 0>{"frustum_polygon", "flat", "signs in double", {}},
     family<kdop<14>, polygon3, 0>{"kdop_polygon", "flat", "signs in double", {}},
