@@ -275,7 +275,7 @@ void polygon_tiers(const std::string& pair, bool near) {
 }
 // A 3D polygon pair (tests/support/polygon3_cases.hpp: exactly planar star polygons of 8 to 24
 // vertices in space, half with a hole of 8, at every scale the tests use), the triangulation
-// oracle as truth. (The mesh partner, a view of a third store, is not benchmarked.)
+// oracle as truth. (The mesh partner, a view of a third store: mesh_polygon3_tiers.)
 template <class B>
 void polygon3_tiers(const std::string& pair, bool near) {
     view_tiers<support::polygon3_store, B>(
@@ -288,6 +288,24 @@ void polygon3_tiers(const std::string& pair, bool near) {
             }
         },
         [](const polygon3& g, const B& b) { return support::polygon3_truth(g, b); });
+}
+// mesh3 x polygon3 on the same generators (the mesh: tests/support/mesh_cases.hpp), the
+// triangulation against the mesh oracle as truth.
+[[gnu::noinline]] inline void mesh_polygon3_tiers(const std::string& pair, bool near) {
+    struct stores {
+        support::polygon3_store g, unused;
+        support::mesh_store m;
+    };
+    support::rng r(20261122 + (near ? 1 : 0));
+    std::vector<stores> cs;
+    while (cs.size() < set_size) {
+        stores c;
+        const auto b = near ? support::polygon3_near<mesh3>(r, c.g, c.unused, c.m) : support::polygon3_random<mesh3>(r, c.g, c.unused, c.m);
+        if (b) cs.push_back(std::move(c)); // the views are taken again from the moved stores
+    }
+    auto truth = [](const stores& c) { return support::polygon3_truth(c.g.view(), c.m.view()); };
+    tiers(pair, near ? "near_degenerate" : "random", cs, truth,
+          [](auto tier, const stores& c) { return intersects<decltype(tier)>(c.m.view(), c.g.view()); });
 }
 // A k-DOP pair (tests/support/kdop_cases.hpp: the k-DOP of a few points, at every scale the
 // tests use), the LP oracle as truth.

@@ -1,5 +1,5 @@
 // Benchmarks: the 2D pairs: points, lines, rays, segments (CGAL Epeck as truth, Epick beside) and
-// polygons; and the planar polygon in space against every shape but the mesh.
+// polygons; and the planar polygon in space against every shape.
 #include "bench.hpp"
 
 namespace bench {
@@ -32,5 +32,6 @@ void register_planar2(bool near) {
     polygon3_tiers<convex_polyhedron3>("convex_polyhedron_polygon", near);
     polygon3_tiers<frustum3>("frustum_polygon", near);
     polygon3_tiers<kdop<14>>("kdop_polygon_14", near);
+    mesh_polygon3_tiers("mesh_polygon", near);
 }
 } // namespace bench
