@@ -125,24 +125,29 @@ template <class K, class At>
     return odd;
 }
 
-// The polygon (usable) against o + t u (a segment, ray or line, finite) that meets no edge of the
-// polygon: it crosses H at one point V / D inside, or it lies in H and its origin lies inside.
-// The shape pairs call this for the edges of a shape X once every polygon edge has been tested
-// against X: an edge of X through a polygon edge would have made that test true.
+// How o + t u (a segment, ray or line, finite) meets H: not at all, lying in it, or crossing it at
+// one point within its range (w, the sign of n . u, then nonzero).
+enum class contact { none, lies_in, crosses };
 template <class K>
-[[nodiscard]] constexpr bool crossing_inside(K& k, const polygon3& g, const linear3& x) {
+[[nodiscard]] constexpr contact plane_contact(K& k, const polygon3& g, const linear3& x, sign& w) {
     const point3 a = g.vertices[g.plane_vertices[0]];
     // w = n . u: zero when x is parallel to H
-    const sign w = k.sgn([=](auto L) { return arith::dot(normal(L, g), x.D(L)); });
-    if (w == sign::zero) return side(k, g, x.o) == sign::zero && inside(k, g, at_double{x.o});
+    w = k.sgn([=](auto L) { return arith::dot(normal(L, g), x.D(L)); });
+    if (w == sign::zero) return side(k, g, x.o) == sign::zero ? contact::lies_in : contact::none;
     // t = n . (a - o) / w within the object's range
-    auto T = [=](auto L) { return arith::dot(normal(L, g), arith::lift(L, a) - x.O(L)); };
-    const sign t = k.sgn(T);
-    if (x.bounded_below() && t != sign::zero && t != w) return false; // t < 0
+    const sign t = k.sgn([=](auto L) { return arith::dot(normal(L, g), arith::lift(L, a) - x.O(L)); });
+    if (x.bounded_below() && t != sign::zero && t != w) return contact::none; // t < 0
     if (x.bounded_above()) { // t <= 1: n . (a - q) zero or of the other sign than w
         const sign e = k.sgn([=](auto L) { return arith::dot(normal(L, g), arith::lift(L, a) - arith::lift(L, x.q)); });
-        if (e == w) return false;
+        if (e == w) return contact::none;
     }
+    return contact::crosses;
+}
+// x crosses H (w the sign of n . u): is the crossing V / D, off the boundary, inside?
+template <class K>
+[[nodiscard]] constexpr bool crossing_point_inside(K& k, const polygon3& g, const linear3& x, sign w) {
+    const point3 a = g.vertices[g.plane_vertices[0]];
+    auto T = [=](auto L) { return arith::dot(normal(L, g), arith::lift(L, a) - x.O(L)); };
     auto D = [=](auto L) { return arith::dot(normal(L, g), x.D(L)); };
     auto V = [=](auto L) {
         const auto o = x.O(L);
@@ -154,11 +159,40 @@ template <class K>
     };
     return inside(k, g, at_homogeneous<decltype(V), decltype(D)>{V, D, w});
 }
-// The polygon (usable) against o + t u (a segment, ray or line, finite): an edge meets it, or
-// crossing_inside.
+
+// The polygon (usable) against o + t u (a segment, ray or line, finite) that meets no edge of the
+// polygon: it crosses H at one point V / D inside, or it lies in H and its origin lies inside.
+// The shape pairs call this for the edges of a shape X once every polygon edge has been tested
+// against X: an edge of X through a polygon edge would have made that test true.
+template <class K>
+[[nodiscard]] constexpr bool crossing_inside(K& k, const polygon3& g, const linear3& x) {
+    sign w = sign::zero;
+    switch (plane_contact(k, g, x, w)) {
+    case contact::none: return false;
+    case contact::lies_in: return inside(k, g, at_double{x.o});
+    default: return crossing_point_inside(k, g, x, w);
+    }
+}
+// The polygon (usable) against o + t u (a segment, ray or line, finite): x misses H, or an edge
+// meets it, or crossing_inside. An x in H meets the edges in the projection (exact: a coordinate
+// dropped, one to one on H), where most orientations are not zero; an x crossing H meets an edge
+// only at its crossing point.
 template <class K>
 [[nodiscard]] constexpr bool linear_meets(K& k, const polygon3& g, const linear3& x) {
-    return any_edge(g, [&](const segment3& e) { return linear_linear(k, as_linear(e), x); }) || crossing_inside(k, g, x);
+    sign w = sign::zero;
+    switch (plane_contact(k, g, x, w)) {
+    case contact::none: return false;
+    case contact::lies_in:
+        return any_edge(g, [&](const segment3& e) {
+                   const linear3 s = as_linear(e);
+                   // the 2D step takes a first object that is not a point
+                   if (s.is_point() || x.is_point()) return linear_linear(k, s, x);
+                   return linear_linear_2d(k, s, x, g.axis);
+               }) ||
+               inside(k, g, at_double{x.o});
+    default:
+        return any_edge(g, [&](const segment3& e) { return linear_linear(k, as_linear(e), x); }) || crossing_point_inside(k, g, x, w);
+    }
 }
 
 } // namespace planeq
