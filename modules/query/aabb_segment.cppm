@@ -16,12 +16,18 @@ import incidence.core;
 import incidence.arith;
 import incidence.shapes;
 import :aabb_ray;
+import :aabb_point;
 
 export namespace incidence::pair {
 
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const aabb3& b, const segment3& s) {
     return slabs<slab_extent::segment>(k, b, s.a, vec3{0, 0, 0}, s.b);
+}
+// Is the segment inside the box? Both end points are (coordinate comparisons, exact in every tier).
+template <class K>
+[[nodiscard]] constexpr bool contains(K& k, const aabb3& b, const segment3& s) {
+    return contains(k, b, s.a) && contains(k, b, s.b);
 }
 
 // The slab method in plain double on [0, 1] (approximate tier).
@@ -36,4 +42,5 @@ template <class K>
 // The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
 namespace incidence::pair {
 extern template bool intersects(arith::exact_kernel&, const aabb3&, const segment3&);
+extern template bool contains(arith::exact_kernel&, const aabb3&, const segment3&);
 } // namespace incidence::pair

@@ -22,6 +22,7 @@ import incidence.arith;
 import incidence.shapes;
 import :segment_segment;
 import :triangle_triangle;
+import :aabb_point;
 
 export namespace incidence::pair {
 
@@ -142,6 +143,12 @@ template <class K>
     return !(d > r || d < -r);
 }
 
+// Is the triangle inside the box? Its three vertices are (coordinate comparisons, exact in every tier).
+template <class K>
+[[nodiscard]] constexpr bool contains(K& k, const aabb3& b, const triangle3& t) {
+    return contains(k, b, t.a) && contains(k, b, t.b) && contains(k, b, t.c);
+}
+
 // The approximate tier of intersects(aabb3, triangle3) is Akenine-Moeller's test in double.
 [[nodiscard]] constexpr bool intersects_approximate(const aabb3& b, const triangle3& t) { return aabb_triangle_sat(b, t); }
 
@@ -150,4 +157,5 @@ template <class K>
 // The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
 namespace incidence::pair {
 extern template bool intersects(arith::exact_kernel&, const aabb3&, const triangle3&);
+extern template bool contains(arith::exact_kernel&, const aabb3&, const triangle3&);
 } // namespace incidence::pair

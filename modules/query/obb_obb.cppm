@@ -5,6 +5,7 @@
 // which are its axes when they are orthonormal, and the nine cross products a_i x b_j). Each axis
 // is one sign of degree 4: |w . (2 c_b - 2 c_a)| against twice the sum of the projected radii
 // h_i |w . a_i| (see separating_axes for the flat cases).
+// contains(obb3, obb3): the support functions compared on the same axes (sat::zonotope_contains).
 // Source: Gottschalk, Lin and Manocha, "OBBTree", SIGGRAPH 1996, section 5 (15 axes).
 // Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
 // magnitudes lie in [2^-500, 2^500], wrong only when some axis sign is within 2^-40 of its
@@ -33,6 +34,11 @@ template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const obb3& a, const obb3& b) {
     if (!sat::well_formed(a) || !sat::well_formed(b)) return false;
     return obb_before(a, b) ? sat::zonotopes_intersect(k, sat::of(a), sat::of(b)) : sat::zonotopes_intersect(k, sat::of(b), sat::of(a));
+}
+// Is b inside a? Malformed boxes (NaN or negative extents) contain nothing and lie in nothing.
+template <class K>
+[[nodiscard]] constexpr bool contains(K& k, const obb3& a, const obb3& b) {
+    return sat::well_formed(a) && sat::well_formed(b) && sat::zonotope_contains(k, sat::of(a), sat::of(b));
 }
 
 // The classic test in plain double (an alternative, compared in the audit): the rotation
@@ -76,4 +82,5 @@ template <class K>
 // The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
 namespace incidence::pair {
 extern template bool intersects(arith::exact_kernel&, const obb3&, const obb3&);
+extern template bool contains(arith::exact_kernel&, const obb3&, const obb3&);
 } // namespace incidence::pair

@@ -13,6 +13,7 @@ import incidence.core;
 import incidence.arith;
 import incidence.shapes;
 import :separating_axes;
+import :obb_point;
 
 export namespace incidence::pair {
 
@@ -20,10 +21,16 @@ template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const obb3& a, const segment3& b) {
     return sat::well_formed(a) && sat::zonotopes_intersect(k, sat::of(a), sat::of(b));
 }
+// Is the segment inside the box? Its two end points are (the box is convex).
+template <class K>
+[[nodiscard]] constexpr bool contains(K& k, const obb3& a, const segment3& b) {
+    return contains(k, a, b.a) && contains(k, a, b.b);
+}
 
 } // namespace incidence::pair
 
 // The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
 namespace incidence::pair {
 extern template bool intersects(arith::exact_kernel&, const obb3&, const segment3&);
+extern template bool contains(arith::exact_kernel&, const obb3&, const segment3&);
 } // namespace incidence::pair

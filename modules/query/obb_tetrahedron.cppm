@@ -16,6 +16,7 @@ import incidence.shapes;
 import :segment_segment;
 import :separating_axes;
 import :obb_triangle;
+import :obb_point;
 import :point_tetrahedron;
 
 export namespace incidence::pair {
@@ -31,10 +32,16 @@ template <class K>
     const point3 pts[1] = {b.center};
     return tetra::tetrahedron_meets(k, t, [&](const triangle3& face) { return intersects(k, b, face); }, pts, 1, false);
 }
+// Is the tetrahedron inside the box? Its four vertices are (the box is convex).
+template <class K>
+[[nodiscard]] constexpr bool contains(K& k, const obb3& b, const tetrahedron3& t) {
+    return contains(k, b, t.a) && contains(k, b, t.b) && contains(k, b, t.c) && contains(k, b, t.d);
+}
 
 } // namespace incidence::pair
 
 // The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
 namespace incidence::pair {
 extern template bool intersects(arith::exact_kernel&, const obb3&, const tetrahedron3&);
+extern template bool contains(arith::exact_kernel&, const obb3&, const tetrahedron3&);
 } // namespace incidence::pair

@@ -14,6 +14,7 @@ import incidence.core;
 import incidence.arith;
 import incidence.shapes;
 import :separating_axes;
+import :obb_point;
 
 export namespace incidence::pair {
 
@@ -21,10 +22,16 @@ template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const obb3& a, const triangle3& b) {
     return sat::well_formed(a) && sat::zonotope_triangle_intersect(k, sat::of(a), b);
 }
+// Is the triangle inside the box? Its three vertices are (the box is convex).
+template <class K>
+[[nodiscard]] constexpr bool contains(K& k, const obb3& a, const triangle3& b) {
+    return contains(k, a, b.a) && contains(k, a, b.b) && contains(k, a, b.c);
+}
 
 } // namespace incidence::pair
 
 // The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
 namespace incidence::pair {
 extern template bool intersects(arith::exact_kernel&, const obb3&, const triangle3&);
+extern template bool contains(arith::exact_kernel&, const obb3&, const triangle3&);
 } // namespace incidence::pair

@@ -141,6 +141,8 @@ export import :mesh_polygon;
 export import :convex_polyhedron_polygon;
 export import :frustum_polygon;
 export import :kdop_polygon;
+export import :aabb_sphere;
+export import :obb_sphere;
 import incidence.core;
 import incidence.arith;
 import incidence.shapes;

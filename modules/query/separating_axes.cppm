@@ -194,6 +194,31 @@ template <class K>
     return !some_axis_separates(k, ds, false, ds.n, separates, offset);
 }
 
+// Is the bounded zonotope `in` inside the bounded zonotope `out`? Support functions: in lies in out
+// iff h_in(w) <= h_out(w) for every w, that is |w . (2 c_in - 2 c_out)| + 2 r_in(w) <= 2 r_out(w).
+// h_out - h_in is linear on each cone of the arrangement of the planes w . g = 0 (g any generator
+// of either), so it is enough to test the rays of that arrangement: the same axes as the
+// separating test (the cross products of two generators when three are independent; in flat and
+// lower-dimensional configurations the normal n = a x b, the in-plane normals n x g, the
+// generators, (g x d) x g and the coordinate axes, where the difference must vanish on the
+// lineality space). Every axis is a necessary condition, so the extra axes never hurt.
+// Source: Schneider, Convex Bodies: The Brunn-Minkowski Theory (2014), theorem 1.7.1 (K in L iff
+// h_K <= h_L); the zonotope's normal fan, ibid. section 3.5.
+template <class K>
+[[nodiscard]] constexpr bool zonotope_contains(K& k, const zonotope& out, const zonotope& in) {
+    directions ds;
+    add_generators(ds, out);
+    add_generators(ds, in);
+    auto pokes_out = [&](auto axis, bool) {
+        return k.sgn([=](auto L) {
+                   const auto w = axis(L);
+                   return L(1.0) * magnitude(arith::dot(w, centre2(L, in) - centre2(L, out))) + radius2(L, in, w) - radius2(L, out, w);
+               }) == sign::positive;
+    };
+    auto offset = [=](auto L) { return centre2(L, in) - centre2(L, out); };
+    return !some_axis_separates(k, ds, false, ds.n, pokes_out, offset);
+}
+
 // Two boxes (three generators each) in one pass: the 15 axis polynomials of zonotopes_intersect,
 // rewritten over shared determinants so each is a few operations (Gottschalk's R = A^T B idea,
 // with the parallelepipeds' face normals). With the face normals n_m = a_j x a_k (m, j, k cyclic):

@@ -276,26 +276,104 @@ bool is_rounded_min_sphere_sqradius(const double* xyz, unsigned long n, double x
     CGAL::Min_sphere_d<CGAL::Min_sphere_annulus_d_traits_3<KQ>> ms(pts.begin(), pts.end());
     return nearest(Q(ms.squared_radius()), x);
 }
-bool all_in_box(const double* xyz, unsigned long n, const double c[3], const double axes[9], const double h[3]) {
-    // s = M^-1 (p - c) by Cramer's rule in exact rationals, M's columns the axes.
-    const Q a[3][3] = {{Q(axes[0]), Q(axes[3]), Q(axes[6])}, {Q(axes[1]), Q(axes[4]), Q(axes[7])}, {Q(axes[2]), Q(axes[5]), Q(axes[8])}};
-    auto det = [](const Q m[3][3]) -> Q { // a Q, not a gmpxx expression over temporaries
+namespace {
+// The box { c + sum s_i a_i : |s_i| <= h_i } (axes = a0 a1 a2, 9 values) in exact rationals: each
+// point's frame coordinates s = M^-1 (p - c) by Cramer's rule, M's columns the axes.
+struct q_box {
+    Q a[3][3];
+    Q c[3], h[3], D;
+    q_box(const double cc[3], const double axes[9], const double hh[3]) {
+        for (int r = 0; r < 3; ++r)
+            for (int col = 0; col < 3; ++col) a[r][col] = Q(axes[3 * col + r]);
+        for (int i = 0; i < 3; ++i) c[i] = Q(cc[i]), h[i] = Q(hh[i]);
+        D = det(a);
+    }
+    static Q det(const Q m[3][3]) { // a Q, not a gmpxx expression over temporaries
         return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
                m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-    };
-    const Q D = det(a);
-    if (D == 0) return false;
-    for (unsigned long i = 0; i < n; ++i) {
-        const Q d[3] = {Q(xyz[3 * i]) - Q(c[0]), Q(xyz[3 * i + 1]) - Q(c[1]), Q(xyz[3 * i + 2]) - Q(c[2])};
-        for (int k = 0; k < 3; ++k) {
-            Q m[3][3];
-            for (int r = 0; r < 3; ++r)
-                for (int col = 0; col < 3; ++col) m[r][col] = col == k ? d[r] : a[r][col];
-            const Q s = det(m) / D;
-            if (qabs(s) > Q(h[k])) return false;
+    }
+    // the frame coordinate s_k of p (D != 0)
+    Q coordinate(const Q p[3], int k) const {
+        Q m[3][3];
+        for (int r = 0; r < 3; ++r)
+            for (int col = 0; col < 3; ++col) m[r][col] = col == k ? Q(p[r] - c[r]) : a[r][col];
+        return det(m) / D;
+    }
+    bool holds(const Q p[3]) const {
+        for (int k = 0; k < 3; ++k)
+            if (qabs(coordinate(p, k)) > h[k]) return false;
+        return true;
+    }
+    // corner m: c + sum +-h_i a_i (bit i of m: +)
+    void corner(int m, Q x[3]) const {
+        for (int k = 0; k < 3; ++k) x[k] = c[k];
+        for (int i = 0; i < 3; ++i) {
+            const Q f = (m >> i & 1) ? h[i] : Q(-h[i]);
+            for (int k = 0; k < 3; ++k) x[k] += f * a[k][i];
         }
     }
+};
+} // namespace
+
+bool all_in_box(const double* xyz, unsigned long n, const double c[3], const double axes[9], const double h[3]) {
+    const q_box b(c, axes, h);
+    if (b.D == 0) return false;
+    for (unsigned long i = 0; i < n; ++i) {
+        const Q p[3] = {Q(xyz[3 * i]), Q(xyz[3 * i + 1]), Q(xyz[3 * i + 2])};
+        if (!b.holds(p)) return false;
+    }
     return true;
+}
+bool box_in_box(const double c[3], const double axes[9], const double h[3], const double ic[3], const double iaxes[9],
+                const double ih[3]) {
+    const q_box out(c, axes, h), in(ic, iaxes, ih);
+    if (out.D == 0) return false;
+    for (int m = 0; m < 8; ++m) {
+        Q x[3];
+        in.corner(m, x);
+        if (!out.holds(x)) return false;
+    }
+    return true;
+}
+bool ball_in_box(const double c[3], const double axes[9], const double h[3], const double center[3], double r) {
+    const q_box b(c, axes, h);
+    if (b.D == 0) return false; // precondition: independent axes
+    const Q p[3] = {Q(center[0]), Q(center[1]), Q(center[2])};
+    const Q rr = Q(r) * Q(r);
+    for (int k = 0; k < 3; ++k) {
+        // the distance from p to the faces s_k = +-h_k is (h_k - |s_k|) |D| / |a_i x a_j|
+        const Q room = b.h[k] - qabs(b.coordinate(p, k));
+        if (room < 0) return false;
+        const int i = (k + 1) % 3, j = (k + 2) % 3;
+        const Q n[3] = {b.a[1][i] * b.a[2][j] - b.a[2][i] * b.a[1][j], b.a[2][i] * b.a[0][j] - b.a[0][i] * b.a[2][j],
+                        b.a[0][i] * b.a[1][j] - b.a[1][i] * b.a[0][j]};
+        const Q nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+        if (room * room * b.D * b.D < rr * nn) return false;
+    }
+    return true;
+}
+bool box_in_ball(const double c[3], const double axes[9], const double h[3], const double center[3], double r) {
+    const q_box b(c, axes, h);
+    const Q rr = Q(r) * Q(r);
+    for (int m = 0; m < 8; ++m) {
+        Q x[3];
+        b.corner(m, x);
+        Q d2 = 0;
+        for (int k = 0; k < 3; ++k) d2 += (x[k] - Q(center[k])) * (x[k] - Q(center[k]));
+        if (d2 > rr) return false;
+    }
+    return true;
+}
+bool ball_in_aabb(const double mn[3], const double mx[3], const double center[3], double r) {
+    for (int k = 0; k < 3; ++k)
+        if (Q(center[k]) - Q(r) < Q(mn[k]) || Q(center[k]) + Q(r) > Q(mx[k])) return false;
+    return true;
+}
+bool ball_aabb(const double mn[3], const double mx[3], const double center[3], double r) {
+    if (!(mn[0] <= mx[0] && mn[1] <= mx[1] && mn[2] <= mx[2])) return false;
+    // CGAL's Sphere_3 / Iso_cuboid_3 test compares the centre's squared distance to the box with
+    // r^2 (Intersections_3/internal/Iso_cuboid_3_Sphere_3_do_intersect.h): the ball's test.
+    return CGAL::do_intersect(K::Sphere_3(P(center), FT(r) * FT(r)), K::Iso_cuboid_3(P(mn), P(mx)));
 }
 bool box_in_constraints(const double c[3], const double axes[9], const double h[3], const convex_set& s) {
     for (int m = 0; m < 8; ++m) {

@@ -184,6 +184,20 @@ bool all_in_box(const double* xyz, unsigned long n, const double c[3], const dou
 // Is the closed box { c + sum si ai : |si| <= hi } (axes = a0 a1 a2) inside every half-space and
 // slab of s (its points, generators and plane ignored)? Its eight corners in exact rationals.
 bool box_in_constraints(const double c[3], const double axes[9], const double h[3], const convex_set& s);
+// Is the closed box (ic, iaxes, ih) inside the closed box (c, axes, h)? Its eight corners in exact
+// rationals, each in the outer box's frame by Cramer's rule (false when the outer axes are dependent).
+bool box_in_box(const double c[3], const double axes[9], const double h[3], const double ic[3], const double iaxes[9],
+                const double ih[3]);
+// Is the closed ball (center, r >= 0) inside the box (independent axes)? The centre's frame
+// coordinates in exact rationals and its distance to each face, squared.
+bool ball_in_box(const double c[3], const double axes[9], const double h[3], const double center[3], double r);
+// Is the box inside the closed ball? Its eight corners in exact rationals.
+bool box_in_ball(const double c[3], const double axes[9], const double h[3], const double center[3], double r);
+// The closed ball against the closed axis-aligned box [mn, mx]: inside it (exact rationals), and
+// meeting it (CGAL do_intersect of Sphere_3 and Iso_cuboid_3 over Epeck, a squared-distance test,
+// so the ball's; an inverted box is empty).
+bool ball_in_aabb(const double mn[3], const double mx[3], const double center[3], double r);
+bool ball_aabb(const double mn[3], const double mx[3], const double center[3], double r);
 // Is every point inside the closed ball (c, r)? Exact.
 bool all_in_ball(const double* xyz, unsigned long n, const double c[3], double r);
 // CGAL Min_sphere_of_spheres_d with Epick (double) for timing: returns the radius.

@@ -2,6 +2,9 @@
 // oracle (CGAL QP_solver over Gmpzf) on 20,000 random and 20,000 near-degenerate cases (a box's
 // corner, edge or face point on the other's boundary, flat boxes, skew and near-rotated frames,
 // ulp nudges, 2^+-500), and rewritten axes.
+// contains(aabb, obb) and contains(obb, aabb) against exact rationals (the vertices or corners by
+// Cramer's rule in the outer box's frame; the oriented box's corners against the box's slabs) on
+// 10,000 random and 10,000 cases inside, on the boundary from inside or just beyond it.
 #include <catch2/catch_test_macros.hpp>
 #include "../oracle/cgal_oracle.hpp"
 import incidence;
@@ -9,6 +12,7 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/obb_cases.hpp"
 #include "../support/obb_check.hpp"
+#include "../support/contain_cases.hpp"
 
 namespace test_query_aabb_obb { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 
@@ -38,6 +42,17 @@ TEST_CASE("aabb_obb: oracle", "[aabb_obb][oracle]") {
 }
 TEST_CASE("aabb_obb: rewritten shapes give the same answer", "[aabb_obb]") {
     support::run_rewritten<aabb3, obb3>("aabb_obb", support::cases(20000), near_case, random_case, variants);
+}
+
+TEST_CASE("aabb_obb: contains(aabb, obb)", "[aabb_obb][oracle]") {
+    support::contains_oracle<aabb3, obb3>("aabb_obb (aabb around obb)", support::cases(10000), approx_bound,
+                                     [](support::rng& r) { return support::obb_case<aabb3, obb3>::random(r); },
+                                     support::aabb_holding_obb);
+}
+TEST_CASE("aabb_obb: contains(obb, aabb)", "[aabb_obb][oracle]") {
+    support::contains_oracle<obb3, aabb3>("aabb_obb (obb around aabb)", support::cases(10000), approx_bound,
+                                     [](support::rng& r) { const auto [a, b] = support::obb_case<aabb3, obb3>::random(r); return std::pair{b, a}; },
+                                     support::obb_holding<aabb3>);
 }
 
 } // namespace test_query_aabb_obb

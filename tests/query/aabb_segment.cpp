@@ -2,11 +2,15 @@
 // 100,000 near-degenerate cases (segments ending exactly on a face, edge or corner or passing
 // through it, segments in face planes, axis-parallel, flat boxes, ulp nudges, 2^+-500), and
 // reversed end points.
+// contains(aabb, segment) against CGAL Epeck (each vertex in the Iso_cuboid_3) on 10,000 random and
+// 10,000 cases inside, on the boundary from inside or just beyond it.
 #include <catch2/catch_test_macros.hpp>
 #include "../oracle/cgal_oracle.hpp"
 import incidence;
 #include "../support/testing.hpp"
 #include "../support/check.hpp"
+#include "../support/obb_cases.hpp"
+#include "../support/contain_cases.hpp"
 #include "../support/box_linear_cases.hpp"
 
 namespace test_query_aabb_segment { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
@@ -65,6 +69,12 @@ TEST_CASE("aabb_segment: reversed end points give the same answer", "[aabb_segme
     }
     std::printf("[cases] aabb_segment reversed: %ld, %ld differ\n", n, bad);
     CHECK(bad == 0);
+}
+
+TEST_CASE("aabb_segment: contains(aabb, segment)", "[aabb_segment][oracle]") {
+    support::contains_oracle<aabb3, segment3>("aabb_segment (aabb around segment)", support::cases(10000), approx_bound,
+                                     [](support::rng& r) { const auto tr = support::random_transform(r, false); return std::pair{support::random_aabb(r, tr), segment3{support::random_point(r, tr), support::random_point(r, tr)}}; },
+                                     support::aabb_holding<segment3>, true);
 }
 
 } // namespace test_query_aabb_segment

@@ -2,12 +2,16 @@
 // near-degenerate cases (a triangle touching the box at a corner, an edge point or a face point,
 // with an edge in a face plane, its plane through a box corner or edge, flat boxes, and a random
 // exact-or-nudged scale and translation), plus box-axis symmetries and vertex order.
+// contains(aabb, triangle) against CGAL Epeck (each vertex in the Iso_cuboid_3) on 10,000 random
+// and 10,000 cases inside, on the boundary from inside or just beyond it.
 #include <catch2/catch_test_macros.hpp>
 #include <array>
 #include "../oracle/cgal_oracle.hpp"
 import incidence;
 #include "../support/testing.hpp"
 #include "../support/check.hpp"
+#include "../support/obb_cases.hpp"
+#include "../support/contain_cases.hpp"
 
 namespace test_query_aabb_triangle { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 
@@ -150,6 +154,12 @@ TEST_CASE("aabb_triangle: vertex order, axis permutations and mirror images give
     }
     std::printf("[cases] aabb_triangle symmetries: %ld, %ld differ\n", n, bad);
     CHECK(bad == 0);
+}
+
+TEST_CASE("aabb_triangle: contains(aabb, triangle)", "[aabb_triangle][oracle]") {
+    support::contains_oracle<aabb3, triangle3>("aabb_triangle (aabb around triangle)", support::cases(10000), approx_bound,
+                                     [](support::rng& r) { const auto tr = support::random_transform(r, false); return std::pair{support::random_aabb(r, tr), triangle3{support::random_point(r, tr), support::random_point(r, tr), support::random_point(r, tr)}}; },
+                                     support::aabb_holding<triangle3>, true);
 }
 
 } // namespace test_query_aabb_triangle

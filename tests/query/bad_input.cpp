@@ -31,6 +31,11 @@ void every_tier(const A& a, const B& b, long& yes) {
     yes += intersects<exact>(a, b) + intersects<conservative>(a, b) + intersects<aggressive>(a, b) +
            intersects<approximate>(a, b) + (classify(a, b) == certainty::uncertain);
 }
+template <class A, class B>
+void every_contains(const A& a, const B& b, long& yes) {
+    yes += contains<exact>(a, b) + contains<conservative>(a, b) + contains<aggressive>(a, b) + contains<approximate>(a, b) +
+           (classify_contains(a, b) == certainty::uncertain);
+}
 } // namespace
 
 TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and extremes", "[bad_input]") {
@@ -95,6 +100,23 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
         yes += contains(te, q) + contains(te, seg) + contains(te, t) + contains(te, te) + contains(te, b) + contains(b, te);
         yes += contains<approximate>(te, te) + contains<conservative>(te, b) + contains<aggressive>(b, te);
         n += 9 * 5 + 9;
+        // the boxes' and the ball's containment
+        const sphere3 ball{p(), special(r)};
+        every_tier(b, ball, yes);
+        every_contains(ob, q, yes);
+        every_contains(ob, seg, yes);
+        every_contains(ob, t, yes);
+        every_contains(ob, te, yes);
+        every_contains(ob, b, yes);
+        every_contains(b, ob, yes);
+        every_contains(ob, ob, yes);
+        every_contains(b, seg, yes);
+        every_contains(b, t, yes);
+        every_contains(b, ball, yes);
+        every_contains(ball, b, yes);
+        every_contains(ob, ball, yes);
+        every_contains(ball, ob, yes);
+        n += 14 * 5;
         // the mesh pairs: special vertices on the cube's triangles, and a triangle naming a vertex
         // that does not exist
         std::array<point3, 8> mv;

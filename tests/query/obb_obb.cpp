@@ -3,6 +3,9 @@
 // to edge and face to face, flat boxes, signed-permutation, dyadic near-rotation and skew
 // frames, ulp nudges, 2^+-500), and rewritten axes. (FCL's test and Gottschalk's are measured
 // against the same oracle in bench/: wrong_pct.)
+// contains(obb, obb) against exact rationals (the vertices or the inner box's corners by Cramer's
+// rule in the box's frame) on 10,000 random and 10,000 cases inside, on the boundary from inside or
+// just beyond it.
 #include <catch2/catch_test_macros.hpp>
 #include "../oracle/cgal_oracle.hpp"
 import incidence;
@@ -10,6 +13,7 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/obb_cases.hpp"
 #include "../support/obb_check.hpp"
+#include "../support/contain_cases.hpp"
 
 namespace test_query_obb_obb { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 
@@ -49,6 +53,12 @@ TEST_CASE("obb_obb: oracle", "[obb_obb][oracle]") {
 }
 TEST_CASE("obb_obb: rewritten boxes and swapped arguments give the same answer", "[obb_obb]") {
     support::run_rewritten<obb3, obb3>("obb_obb", support::cases(20000), near_case, random_case, variants);
+}
+
+TEST_CASE("obb_obb: contains(obb, obb)", "[obb_obb][oracle]") {
+    support::contains_oracle<obb3, obb3>("obb_obb (obb around obb)", support::cases(10000), approx_bound,
+                                     [](support::rng& r) { return support::obb_case<obb3, obb3>::random(r); },
+                                     support::obb_holding<obb3>);
 }
 
 } // namespace test_query_obb_obb

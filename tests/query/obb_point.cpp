@@ -1,6 +1,9 @@
 // obb3 x point3: the three face normals of the parallelepiped in every tier; the exact LP oracle
 // on 20,000 random and 20,000 near-degenerate cases (points on corners, edges and faces or a
 // quarter off, flat boxes, skew and near-rotated frames, ulp nudges, 2^+-500), rewritten axes.
+// contains(obb, point) (the same test) against exact rationals (the vertices or the inner box's
+// corners by Cramer's rule in the box's frame) on 10,000 random and 10,000 cases inside, on the
+// boundary from inside or just beyond it.
 #include <catch2/catch_test_macros.hpp>
 #include "../oracle/cgal_oracle.hpp"
 import incidence;
@@ -8,6 +11,7 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/obb_cases.hpp"
 #include "../support/obb_check.hpp"
+#include "../support/contain_cases.hpp"
 
 namespace test_query_obb_point { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 
@@ -35,6 +39,12 @@ TEST_CASE("obb_point: oracle", "[obb_point][oracle]") {
 }
 TEST_CASE("obb_point: rewritten shapes give the same answer", "[obb_point]") {
     support::run_rewritten<obb3, point3>("obb_point", support::cases(20000), near_case, random_case, variants);
+}
+
+TEST_CASE("obb_point: contains(obb, point)", "[obb_point][oracle]") {
+    support::contains_oracle<obb3, point3>("obb_point (obb around point)", support::cases(10000), approx_bound,
+                                     [](support::rng& r) { return support::obb_case<obb3, point3>::random(r); },
+                                     support::obb_holding<point3>);
 }
 
 } // namespace test_query_obb_point

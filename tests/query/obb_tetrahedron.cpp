@@ -3,6 +3,9 @@
 // random and 20,000 near-degenerate cases (a tetrahedron's vertex, edge or face point, inside or
 // just outside, at a box corner, edge or face point; flat boxes and coplanar tetrahedra; skew
 // frames, ulp nudges, 2^+-500), rewritten box axes and rotated and reflected vertex orders.
+// contains(obb, tetrahedron) against exact rationals (the vertices or the inner box's corners by
+// Cramer's rule in the box's frame) on 10,000 random and 10,000 cases inside, on the boundary from
+// inside or just beyond it.
 #include <catch2/catch_test_macros.hpp>
 #include "../oracle/cgal_oracle.hpp"
 import incidence;
@@ -10,6 +13,7 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/obb_cases.hpp"
 #include "../support/obb_check.hpp"
+#include "../support/contain_cases.hpp"
 
 namespace test_query_obb_tetrahedron { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 
@@ -47,6 +51,12 @@ TEST_CASE("obb_tetrahedron: oracle", "[obb_tetrahedron][oracle]") {
 }
 TEST_CASE("obb_tetrahedron: rewritten shapes give the same answer", "[obb_tetrahedron]") {
     support::run_rewritten<obb3, tetrahedron3>("obb_tetrahedron", support::cases(20000), near_case, random_case, variants);
+}
+
+TEST_CASE("obb_tetrahedron: contains(obb, tetrahedron)", "[obb_tetrahedron][oracle]") {
+    support::contains_oracle<obb3, tetrahedron3>("obb_tetrahedron (obb around tetrahedron)", support::cases(10000), approx_bound,
+                                     [](support::rng& r) { return support::obb_case<obb3, tetrahedron3>::random(r); },
+                                     support::obb_holding<tetrahedron3>);
 }
 
 } // namespace test_query_obb_tetrahedron

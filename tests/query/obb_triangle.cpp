@@ -2,6 +2,9 @@
 // and 20,000 near-degenerate cases (a triangle's vertex or edge on a corner, edge or face point,
 // flat boxes and collinear triangles, skew frames, ulp nudges, 2^+-500), rotated and reversed
 // vertices and rewritten axes.
+// contains(obb, triangle) against exact rationals (the vertices or the inner box's corners by
+// Cramer's rule in the box's frame) on 10,000 random and 10,000 cases inside, on the boundary from
+// inside or just beyond it.
 #include <catch2/catch_test_macros.hpp>
 #include "../oracle/cgal_oracle.hpp"
 import incidence;
@@ -9,6 +12,7 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/obb_cases.hpp"
 #include "../support/obb_check.hpp"
+#include "../support/contain_cases.hpp"
 
 namespace test_query_obb_triangle { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 
@@ -37,6 +41,12 @@ TEST_CASE("obb_triangle: oracle", "[obb_triangle][oracle]") {
 }
 TEST_CASE("obb_triangle: rewritten shapes give the same answer", "[obb_triangle]") {
     support::run_rewritten<obb3, triangle3>("obb_triangle", support::cases(20000), near_case, random_case, variants);
+}
+
+TEST_CASE("obb_triangle: contains(obb, triangle)", "[obb_triangle][oracle]") {
+    support::contains_oracle<obb3, triangle3>("obb_triangle (obb around triangle)", support::cases(10000), approx_bound,
+                                     [](support::rng& r) { return support::obb_case<obb3, triangle3>::random(r); },
+                                     support::obb_holding<triangle3>);
 }
 
 } // namespace test_query_obb_triangle

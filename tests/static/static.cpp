@@ -79,6 +79,18 @@ static_assert(intersects(D, plane3{{1, 0, 0}, 2}));
 static_assert(!intersects(plane3{{1, 0, 0}, 2.0000000000000004}, D));
 static_assert(intersects<conservative>(D, plane3{{1, 1, 0}, 2}));
 static_assert(intersects<approximate>(D, point3{0.5, 0.5, 0.5}));
+// containment by the boxes and the ball: D holds the unit box turned back, the box tangent inside a
+// ball, a ball tangent to D's top face
+static_assert(contains(D, aabb3{{-1, 0, -1}, {0, 1, 1}}) && !contains(D, aabb3{{-1, 0, -1}, {0, 1.0000000000000002, 1}}));
+static_assert(contains(aabb3{{-2, -2, -1}, {2, 2, 1}}, D) && !contains(aabb3{{-2, -2, -1}, {2, 2, 0.9999999999999999}}, D));
+static_assert(contains(D, obb3{{0.5, 0.5, 0}, D.axes, {0.5, 1, 1}}) && !contains(D, obb3{{0.5, 0.5, 0}, D.axes, {0.5, 1.0000000000000002, 1}}));
+static_assert(contains(D, segment3{{2, 0, 1}, {-2, 0, -1}}) && contains(D, triangle3{{2, 0, 1}, {0, 2, 1}, {0, 0, -1}}));
+static_assert(contains(aabb3{{0, 0, 0}, {1, 1, 1}}, triangle3{{0, 0, 0}, {1, 1, 1}, {1, 0, 0}}) &&
+              !contains(aabb3{{0, 0, 0}, {1, 1, 1}}, segment3{{0, 0, 0}, {1, 1, 1.0000000000000002}}));
+static_assert(contains(sphere3{{0, 0, 0}, 3}, aabb3{{-1, -2, -2}, {1, 2, 2}}) && contains(aabb3{{0, 0, 0}, {2, 2, 2}}, sphere3{{1, 1, 1}, 1}));
+static_assert(intersects(aabb3{{0, 0, 0}, {1, 1, 1}}, sphere3{{2, 3, 3}, 3}) && !intersects(aabb3{{0, 0, 0}, {1, 1, 1}}, sphere3{{2, 3, 3}, 0x1.7ffffffffffffp+1}));
+static_assert(contains(D, sphere3{{0, 0, 0}, 1}) && !contains(D, sphere3{{0, 0, 0.5}, 0.5000000000000001}));
+static_assert(contains(sphere3{{0, 0, 0}, 3}, obb3{{0, 0, 0}, {vec3{0, 1, 0}, vec3{0, 0, -1}, vec3{1, 0, 0}}, {1, 2, 2}}));
 // ray-sphere, spheres, points, boxes
 static_assert(intersects(ray3{{-5, 1, 0}, {1, 0, 0}}, S));                // tangent
 static_assert(!intersects(ray3{{-5, 1.0000000000000002, 0}, {1, 0, 0}}, S));
