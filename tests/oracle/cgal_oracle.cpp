@@ -364,6 +364,56 @@ bool box_in_ball(const double c[3], const double axes[9], const double h[3], con
     }
     return true;
 }
+namespace {
+using q3 = std::array<Q, 3>;
+q3 sub(const q3& a, const q3& b) { return {Q(a[0] - b[0]), Q(a[1] - b[1]), Q(a[2] - b[2])}; }
+q3 crossq(const q3& a, const q3& b) {
+    return {Q(a[1] * b[2] - a[2] * b[1]), Q(a[2] * b[0] - a[0] * b[2]), Q(a[0] * b[1] - a[1] * b[0])};
+}
+Q dotq(const q3& a, const q3& b) { return Q(a[0] * b[0] + a[1] * b[1] + a[2] * b[2]); }
+bool zero(const q3& a) { return a[0] == 0 && a[1] == 0 && a[2] == 0; }
+// p in the closed triangle (a, b, c), any of them possibly equal or collinear.
+bool in_triangle(const q3& p, const q3& a, const q3& b, const q3& c) {
+    const q3 n = crossq(sub(b, a), sub(c, a));
+    if (!zero(n)) {
+        if (dotq(n, sub(p, a)) != 0) return false;
+        return dotq(n, crossq(sub(b, a), sub(p, a))) >= 0 && dotq(n, crossq(sub(c, b), sub(p, b))) >= 0 &&
+               dotq(n, crossq(sub(a, c), sub(p, c))) >= 0;
+    }
+    const q3 v[3] = {a, b, c};
+    int u = 0, w = 0;
+    Q best = -1;
+    for (int i = 0; i < 3; ++i)
+        for (int j = i + 1; j < 3; ++j)
+            if (const Q d = dotq(sub(v[j], v[i]), sub(v[j], v[i])); d > best) best = d, u = i, w = j;
+    const q3 d = sub(v[w], v[u]), e = sub(p, v[u]);
+    if (zero(d)) return zero(e); // one point
+    if (!zero(crossq(d, e))) return false;
+    const Q t = dotq(e, d);
+    return t >= 0 && t <= dotq(d, d);
+}
+} // namespace
+bool box_in_tetrahedron(const double c[3], const double axes[9], const double h[3], const double t[12]) {
+    const q_box b(c, axes, h);
+    q3 v[4];
+    for (int i = 0; i < 4; ++i) v[i] = {Q(t[3 * i]), Q(t[3 * i + 1]), Q(t[3 * i + 2])};
+    auto pt = [](const q3& x) { return K::Point_3(FT(x[0]), FT(x[1]), FT(x[2])); };
+    const K::Tetrahedron_3 solid(pt(v[0]), pt(v[1]), pt(v[2]), pt(v[3]));
+    const bool flat = solid.is_degenerate();
+    for (int m = 0; m < 8; ++m) {
+        q3 x;
+        b.corner(m, x.data());
+        if (!flat) {
+            if (solid.has_on_unbounded_side(pt(x))) return false;
+            continue;
+        }
+        const int faces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+        bool in = false;
+        for (const auto& f : faces) in = in || in_triangle(x, v[f[0]], v[f[1]], v[f[2]]);
+        if (!in) return false;
+    }
+    return true;
+}
 bool ball_in_aabb(const double mn[3], const double mx[3], const double center[3], double r) {
     for (int k = 0; k < 3; ++k)
         if (Q(center[k]) - Q(r) < Q(mn[k]) || Q(center[k]) + Q(r) > Q(mx[k])) return false;

@@ -193,6 +193,11 @@ bool box_in_box(const double c[3], const double axes[9], const double h[3], cons
 bool ball_in_box(const double c[3], const double axes[9], const double h[3], const double center[3], double r);
 // Is the box inside the closed ball? Its eight corners in exact rationals.
 bool box_in_ball(const double c[3], const double axes[9], const double h[3], const double center[3], double r);
+// Is the box inside the closed tetrahedron t (its four vertices; coplanar ones are their hull)? Its
+// eight corners in exact rationals: CGAL's Tetrahedron_3 side test over Epeck for a solid one; for
+// a coplanar one, a corner in one of the four faces (Caratheodory), each face by rational
+// barycentric signs, a collinear face as the segment between its farthest vertices.
+bool box_in_tetrahedron(const double c[3], const double axes[9], const double h[3], const double t[12]);
 // The closed ball against the closed axis-aligned box [mn, mx]: inside it (exact rationals), and
 // meeting it (CGAL do_intersect of Sphere_3 and Iso_cuboid_3 over Epeck, a squared-distance test,
 // so the ball's; an inverted box is empty).

@@ -91,6 +91,12 @@ static_assert(contains(sphere3{{0, 0, 0}, 3}, aabb3{{-1, -2, -2}, {1, 2, 2}}) &&
 static_assert(intersects(aabb3{{0, 0, 0}, {1, 1, 1}}, sphere3{{2, 3, 3}, 3}) && !intersects(aabb3{{0, 0, 0}, {1, 1, 1}}, sphere3{{2, 3, 3}, 0x1.7ffffffffffffp+1}));
 static_assert(contains(D, sphere3{{0, 0, 0}, 1}) && !contains(D, sphere3{{0, 0, 0.5}, 0.5000000000000001}));
 static_assert(contains(sphere3{{0, 0, 0}, 3}, obb3{{0, 0, 0}, {vec3{0, 1, 0}, vec3{0, 0, -1}, vec3{1, 0, 0}}, {1, 2, 2}}));
+// a box in a tetrahedron: the unit cube's far corner on the face x + y + z = 3, then that face moved in
+// one ulp; a flat square in a flat tetrahedron (its hull the triangle x, y >= 0, x + y <= 2)
+constexpr obb3 unit_cube{{0.5, 0.5, 0.5}, {vec3{1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1}}, {0.5, 0.5, 0.5}};
+static_assert(contains(tetrahedron3{{0, 0, 0}, {3, 0, 0}, {0, 3, 0}, {0, 0, 3}}, unit_cube) &&
+              !contains(tetrahedron3{{0, 0, 0}, {3, 0, 0}, {0, 3, 0}, {0, 0, 0x1.7ffffffffffffp+1}}, unit_cube));
+static_assert(contains(tetrahedron3{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {1, 0, 0}}, obb3{{0.5, 0.5, 0}, {vec3{1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1}}, {0.5, 0.5, 0}}));
 // ray-sphere, spheres, points, boxes
 static_assert(intersects(ray3{{-5, 1, 0}, {1, 0, 0}}, S));                // tangent
 static_assert(!intersects(ray3{{-5, 1.0000000000000002, 0}, {1, 0, 0}}, S));

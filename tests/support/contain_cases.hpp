@@ -179,6 +179,42 @@ inline std::pair<sphere3, aabb3> ball_holding_aabb(rng& r) {
     const auto tr = contain_transform(r);
     return {moved(tr, s), moved(tr, b)};
 }
+// contains(tetrahedron, obb): a corner p of a near box and its three edges e_j into the box span
+// the tetrahedron p, p + s e_1, p + s e_2, p + s e_3, which holds the box exactly for s >= 3 (the far
+// corner p + e_1 + e_2 + e_3 on the far face at s = 3); s is 3, a little more or a little less, or
+// 4. A quarter of the cases is flat: one extent zero, the tetrahedron p, p + s e_1, p + s e_2 and a
+// fourth point in their plane (the box's far corner on the hypotenuse at s = 2). The vertices come
+// in a random order, so both orientations occur.
+inline std::pair<tetrahedron3, obb3> tetrahedron_holding_obb(rng& r) {
+    obb3 o = near_obb(r);
+    const bool flat = r.integer(0, 3) == 0;
+    const unsigned z = static_cast<unsigned>(r.integer(0, 2)); // the flat box's zero extent
+    if (flat) o.half_extents[z] = 0;
+    double t[3];
+    for (double& x : t) x = r.coin() ? 1.0 : -1.0; // the corner p
+    const int w = r.integer(0, 3);
+    const double base = flat ? 2.0 : 3.0;
+    const double s = w == 0 ? base : (w == 1 ? base * (1.0 + std::ldexp(1.0, -r.integer(4, 30))) : (w == 2 ? base * (1.0 - std::ldexp(1.0, -r.integer(4, 30))) : base + 1));
+    auto along = [&](unsigned j, double f) { // p + f e_j
+        double u[3] = {t[0], t[1], t[2]};
+        u[j] = t[j] * (1 - 2 * f);
+        return frame_point(o, u);
+    };
+    point3 v[4];
+    v[0] = frame_point(o, t);
+    if (!flat) {
+        for (unsigned j = 0; j < 3; ++j) v[j + 1] = along(j, s);
+    } else {
+        const unsigned j = (z + 1) % 3, k = (z + 2) % 3;
+        v[1] = along(j, s), v[2] = along(k, s);
+        double u[3] = {t[0], t[1], t[2]};
+        u[j] = t[j] * (1 - 2 * 0.5 * r.integer(0, 4) * 0.5), u[k] = t[k] * (1 - 2 * 0.5 * r.integer(0, 4) * 0.5);
+        v[3] = frame_point(o, u); // a point of the plane, inside the triangle or not
+    }
+    for (int i = 3; i > 0; --i) std::swap(v[i], v[r.integer(0, i)]);
+    const auto tr = contain_transform(r);
+    return {moved(tr, tetrahedron3{v[0], v[1], v[2], v[3]}), moved(tr, o)};
+}
 // contains(aabb, x) cases: the box of a unit-frame near box (its reach along each coordinate), x's
 // vertices inside it, on its boundary or just beyond.
 template <class B>
@@ -277,6 +313,11 @@ bool contains_truth(const A& a, const B& b) {
         box_arrays(b, c, x);
         arr(a.center, sc);
         return oracle::box_in_ball(c, x, b.half_extents.data(), sc, a.radius);
+    } else if constexpr (std::is_same_v<A, tetrahedron3> && std::is_same_v<B, obb3>) {
+        double c[3], x[9];
+        box_arrays(b, c, x);
+        const double tv[12] = {a.a.x, a.a.y, a.a.z, a.b.x, a.b.y, a.b.z, a.c.x, a.c.y, a.c.z, a.d.x, a.d.y, a.d.z};
+        return oracle::box_in_tetrahedron(c, x, b.half_extents.data(), tv);
     } else if constexpr (std::is_same_v<A, sphere3>) {
         const auto v = corners(b);
         std::vector<double> xyz;
