@@ -72,7 +72,16 @@ std::optional<bool> truth(const tetrahedron3& a, const B& b) {
 template <class A, class B>
 std::optional<bool> contains_truth(const A& a, const B& b) {
     try {
-        return support::flat_contains_truth(a, b);
+        if constexpr (std::is_same_v<A, tetrahedron3> && std::is_same_v<B, obb3>) {
+            // the box's exact corners against CGAL Epeck's Tetrahedron_3 (a flat one: its faces)
+            const double c[3] = {b.center.x, b.center.y, b.center.z};
+            double x[9];
+            for (unsigned i = 0; i < 3; ++i) x[3 * i] = b.axes[i].x, x[3 * i + 1] = b.axes[i].y, x[3 * i + 2] = b.axes[i].z;
+            const double tv[12] = {a.a.x, a.a.y, a.a.z, a.b.x, a.b.y, a.b.z, a.c.x, a.c.y, a.c.z, a.d.x, a.d.y, a.d.z};
+            return oracle::box_in_tetrahedron(c, x, b.half_extents.data(), tv);
+        } else {
+            return support::flat_contains_truth(a, b);
+        }
     } catch (const std::runtime_error&) {
         return std::nullopt;
     }
@@ -102,9 +111,10 @@ void check(const tetrahedron3& a, const B& b, bool finite) {
     (void)intersects<aggressive>(a, b);
     (void)classify(b, a);
     if constexpr (requires { contains(a, b); }) {
-        // an inverted box is no set the oracle can take: only the empty answer is checked
+        // an inverted box or a negative extent is no set the oracle can take: only the empty answer is checked
         bool ordered = true;
         if constexpr (std::is_same_v<B, aabb3>) ordered = b.min.x <= b.max.x && b.min.y <= b.max.y && b.min.z <= b.max.z;
+        if constexpr (std::is_same_v<B, obb3>) ordered = b.half_extents[0] >= 0 && b.half_extents[1] >= 0 && b.half_extents[2] >= 0;
         if (ordered) contains_contracts(a, b, finite);
         else if (contains(a, b)) std::abort();
     }
