@@ -21,12 +21,30 @@ export namespace incidence::arith {
 inline constexpr int dyadic_limbs = 176;
 
 struct dyadic {
-    std::array<std::uint64_t, dyadic_limbs> w{}; // magnitude, little-endian limbs
-    int n = 0;                                   // used limbs; w[n-1] != 0 unless n == 0
+    // Only w[0 .. n) is ever read: at run time the rest stays uninitialised and copies move only
+    // the used limbs (a full 176-limb clear or copy per operation cost more than the arithmetic).
+    std::array<std::uint64_t, dyadic_limbs> w; // magnitude, little-endian limbs
+    int n = 0;                                 // used limbs; w[n-1] != 0 unless n == 0
     bool neg = false;
     int e = 0; // value = (neg ? -1 : 1) * magnitude * 2^e
 
+    // Constant evaluation forbids reading indeterminate values, so fill there only.
+    constexpr dyadic() {
+        if (__builtin_is_constant_evaluated()) w.fill(0);
+    }
+    constexpr dyadic(const dyadic& o) : n(o.n), neg(o.neg), e(o.e) {
+        if (__builtin_is_constant_evaluated()) w.fill(0);
+        for (int i = 0; i < n; ++i) w[static_cast<unsigned>(i)] = o.w[static_cast<unsigned>(i)];
+    }
+    constexpr dyadic& operator=(const dyadic& o) {
+        if (this == &o) return *this;
+        for (int i = 0; i < o.n; ++i) w[static_cast<unsigned>(i)] = o.w[static_cast<unsigned>(i)];
+        n = o.n, neg = o.neg, e = o.e;
+        return *this;
+    }
+
     [[nodiscard]] constexpr bool is_zero() const { return n == 0; }
+    [[nodiscard]] constexpr std::uint64_t limb(int i) const { return i < n ? w[static_cast<unsigned>(i)] : 0; }
 };
 
 using u128 = unsigned __int128;
@@ -48,6 +66,8 @@ constexpr void trim(dyadic& a) {
     r.neg = a.neg;
     r.e = a.e - k;
     const int limbs = k / 64, bits = k % 64;
+    const int top = a.n + limbs + 1 < dyadic_limbs ? a.n + limbs + 1 : dyadic_limbs;
+    for (int i = 0; i < top; ++i) r.w[static_cast<unsigned>(i)] = 0;
     for (int i = a.n - 1; i >= 0; --i) {
         const std::uint64_t x = a.w[static_cast<unsigned>(i)];
         const int j = i + limbs;
@@ -60,8 +80,7 @@ constexpr void trim(dyadic& a) {
             if (j < dyadic_limbs) r.w[static_cast<unsigned>(j)] |= x << bits;
         }
     }
-    r.n = a.n + limbs + 1;
-    if (r.n > dyadic_limbs) r.n = dyadic_limbs;
+    r.n = top;
     trim(r);
     return r;
 }
@@ -82,7 +101,7 @@ constexpr void trim(dyadic& a) {
     const int m = a.n > b.n ? a.n : b.n;
     std::uint64_t carry = 0;
     for (int i = 0; i < m; ++i) {
-        const u128 s = u128{a.w[static_cast<unsigned>(i)]} + b.w[static_cast<unsigned>(i)] + carry;
+        const u128 s = u128{a.limb(i)} + b.limb(i) + carry;
         r.w[static_cast<unsigned>(i)] = static_cast<std::uint64_t>(s);
         carry = static_cast<std::uint64_t>(s >> 64);
     }
@@ -96,7 +115,7 @@ constexpr void trim(dyadic& a) {
     r.e = a.e;
     std::uint64_t borrow = 0;
     for (int i = 0; i < a.n; ++i) {
-        const std::uint64_t x = a.w[static_cast<unsigned>(i)], y = b.w[static_cast<unsigned>(i)];
+        const std::uint64_t x = a.w[static_cast<unsigned>(i)], y = b.limb(i);
         const std::uint64_t d = x - y - borrow;
         borrow = (x < y || (x == y && borrow)) ? 1 : 0;
         r.w[static_cast<unsigned>(i)] = d;
@@ -163,6 +182,8 @@ constexpr void trim(dyadic& a) {
     dyadic r;
     r.e = a.e + b.e;
     r.neg = a.neg != b.neg;
+    const int top = a.n + b.n < dyadic_limbs ? a.n + b.n : dyadic_limbs;
+    for (int i = 0; i < top; ++i) r.w[static_cast<unsigned>(i)] = 0;
     for (int i = 0; i < a.n; ++i) {
         std::uint64_t carry = 0;
         const u128 x = a.w[static_cast<unsigned>(i)];
@@ -175,7 +196,7 @@ constexpr void trim(dyadic& a) {
         }
         if (i + b.n < dyadic_limbs) r.w[static_cast<unsigned>(i + b.n)] = carry;
     }
-    r.n = a.n + b.n > dyadic_limbs ? dyadic_limbs : a.n + b.n;
+    r.n = top;
     trim(r);
     return r;
 }
