@@ -1,8 +1,10 @@
 // Exact dyadic rationals m * 2^e: the fallback that is exact over the whole finite binary64
 // range (subnormals to 2^1024) and usable in constant evaluation. The magnitude is a fixed-
-// capacity array of 64-bit limbs (no allocation); 176 limbs cover polynomials of degree 5 whose
-// inputs span the full exponent range (5 * 2100 bits plus carries). Products use 128-bit
-// intermediates; everything is plain integer arithmetic, so constexpr.
+// capacity array of 64-bit limbs (no allocation). A product of d inputs has its bits between
+// 2^(-1074 d) and 2^(1024 d), so a polynomial of degree d needs 2098 d bits plus carries when its
+// inputs span the full exponent range: 304 limbs (19,456 bits) cover degree 9, the highest of any
+// predicate here (the vertex searches on an oriented box). Products use 128-bit intermediates;
+// everything is plain integer arithmetic, so constexpr.
 // Correct rounding back to binary64 (nearest, ties to even) lives here; quotients are rounded
 // by exact bracketing (rounding.cppm), so no long division is needed.
 // (Boost.Multiprecision's fixed-width cpp_int 1.74 was used first and tripped its own
@@ -18,11 +20,13 @@ import :eft;
 
 export namespace incidence::arith {
 
-inline constexpr int dyadic_limbs = 176;
+inline constexpr int dyadic_limbs = 304;
+inline constexpr int dyadic_max_degree = 9;
+static_assert(2098 * dyadic_max_degree + 64 <= 64 * dyadic_limbs); // 64 bits of carries: up to 2^64 terms
 
 struct dyadic {
     // Only w[0 .. n) is ever read: at run time the rest stays uninitialised and copies move only
-    // the used limbs (a full 176-limb clear or copy per operation cost more than the arithmetic).
+    // the used limbs (a clear or copy of the whole capacity per operation cost more than the arithmetic).
     std::array<std::uint64_t, dyadic_limbs> w; // magnitude, little-endian limbs
     int n = 0;                                 // used limbs; w[n-1] != 0 unless n == 0
     bool neg = false;
@@ -71,8 +75,8 @@ constexpr void trim(dyadic& a) {
     for (int i = a.n - 1; i >= 0; --i) {
         const std::uint64_t x = a.w[static_cast<unsigned>(i)];
         const int j = i + limbs;
-        // Capacity is sized for every predicate of degree <= 5 (see top); beyond it, bits are
-        // dropped rather than written out of bounds.
+        // Capacity is sized for every predicate of degree <= dyadic_max_degree (see top); beyond
+        // it, bits are dropped rather than written out of bounds.
         if (bits == 0) {
             if (j < dyadic_limbs) r.w[static_cast<unsigned>(j)] = x;
         } else {
