@@ -4,11 +4,15 @@
 // *kernel* evaluates it with a different number type and turns the result into a sign:
 //   approx_kernel  plain double                      (tier approximate)
 //   filter_kernel  filtered<K> (rigorous error bound) (classify; conservative/aggressive)
-//   exact_kernel   filter, then expansions in a safe exponent window, then dyadic big integers
-// A query body is a template over the kernel, so the *same* decision logic runs in every tier.
+//   exact_kernel   filter, then (out of line) the filter on power-of-two-scaled inputs, plain
+//                  double with every operation exact, double-double, expansions in a safe
+//                  exponent window, dyadic big integers
+// A query body is a template over the kernel, so the *same* decision logic runs in every tier
+// (incidence.query's decide_pair: the filter kernel first, the exact kernel only when it failed).
 //
 // Rule for predicate polynomials: homogeneous in their inputs (every input has degree 1,
-// no literal constants), so scaling all inputs by 2^s keeps the sign. The range probe checks it.
+// no literal constants), so scaling all inputs by 2^s keeps the sign: the scaled filter stage and
+// the expansions' exponent window rely on it, and the range probe checks it.
 // A constant that balances degrees is lifted like an input (L(1.0)), so it scales with them.
 // abs(x) of a subexpression is allowed: every number type knows or bounds its sign, and
 // |x| keeps both the degree and the filters' error bounds.
@@ -104,16 +108,16 @@ struct exact_double {
 // exactly zero, whatever the other factor's rounding, as long as that factor's inputs are finite
 // (its true value is then a finite real): coplanar inputs (equal z, zero z-components) make many
 // terms exactly zero while their other factors round.
-[[nodiscard]] constexpr exact_double operator+(exact_double a, exact_double b) {
+[[nodiscard, gnu::always_inline]] constexpr exact_double operator+(exact_double a, exact_double b) {
     const bool fin = a.finite && b.finite;
     if (!a.exact || !b.exact || !(abs(a.v) < 0x1p1021 && abs(b.v) < 0x1p1021)) return {0.0, false, fin};
     const auto s = two_sum(a.v, b.v);
     return {s.hi, s.lo == 0.0, fin};
 }
-[[nodiscard]] constexpr exact_double operator-(exact_double a) { return {-a.v, a.exact, a.finite}; }
-[[nodiscard]] constexpr exact_double operator-(exact_double a, exact_double b) { return a + (-b); }
-[[nodiscard]] constexpr exact_double abs(exact_double a) { return {abs(a.v), a.exact, a.finite}; }
-[[nodiscard]] constexpr exact_double operator*(exact_double a, exact_double b) {
+[[nodiscard, gnu::always_inline]] constexpr exact_double operator-(exact_double a) { return {-a.v, a.exact, a.finite}; }
+[[nodiscard, gnu::always_inline]] constexpr exact_double operator-(exact_double a, exact_double b) { return a + (-b); }
+[[nodiscard, gnu::always_inline]] constexpr exact_double abs(exact_double a) { return {abs(a.v), a.exact, a.finite}; }
+[[nodiscard, gnu::always_inline]] constexpr exact_double operator*(exact_double a, exact_double b) {
     const bool fin = a.finite && b.finite;
     if (fin && ((a.exact && a.v == 0.0) || (b.exact && b.v == 0.0))) return {0.0, true, true};
     if (!a.exact || !b.exact) return {0.0, false, fin};
@@ -132,45 +136,92 @@ struct lift_dyadic {
     [[nodiscard]] constexpr dyadic operator()(double x) const { return to_dyadic(x); }
 };
 
-// Range probe: the polynomial's degree range and the exponent range of its nonzero inputs.
+// Range probe: the polynomial's degree range and the exponent range of its nonzero inputs, and
+// for the scaled filter stage hi, with the node's permanent below 2^hi (each sum counted as if
+// nothing cancelled, so it can only overestimate). Its operations are always inlined: it runs on
+// every sign the filter leaves open, and an out-of-line call per node cost more than the probe.
+inline constexpr int probe_zero = -(1 << 24); // hi of an exact zero
 struct range_probe {
     int dmin = 1, dmax = 1;
     int emin = 1 << 20, emax = -(1 << 20);
     bool finite = true;
+    int hi = probe_zero;
 };
-[[nodiscard]] constexpr range_probe merge_range(range_probe a, range_probe b) {
-    return {a.dmin, a.dmax, a.emin < b.emin ? a.emin : b.emin, a.emax > b.emax ? a.emax : b.emax,
-            a.finite && b.finite};
+[[nodiscard, gnu::always_inline]] constexpr range_probe merge_range(range_probe a, range_probe b) {
+    return {a.dmin, a.dmax, a.emin < b.emin ? a.emin : b.emin, a.emax > b.emax ? a.emax : b.emax, a.finite && b.finite, 0};
 }
-[[nodiscard]] constexpr range_probe operator+(range_probe a, range_probe b) {
+[[nodiscard, gnu::always_inline]] constexpr range_probe operator+(range_probe a, range_probe b) {
     auto r = merge_range(a, b);
     r.dmin = a.dmin < b.dmin ? a.dmin : b.dmin;
     r.dmax = a.dmax > b.dmax ? a.dmax : b.dmax;
+    r.hi = (a.hi > b.hi ? a.hi : b.hi) + 1; // an exact zero's hi stays far below every other
     return r;
 }
-[[nodiscard]] constexpr range_probe operator-(range_probe a, range_probe b) { return a + b; }
-[[nodiscard]] constexpr range_probe operator-(range_probe a) { return a; }
-[[nodiscard]] constexpr range_probe abs(range_probe a) { return a; }
-[[nodiscard]] constexpr range_probe operator*(range_probe a, range_probe b) {
+[[nodiscard, gnu::always_inline]] constexpr range_probe operator-(range_probe a, range_probe b) { return a + b; }
+[[nodiscard, gnu::always_inline]] constexpr range_probe operator-(range_probe a) { return a; }
+[[nodiscard, gnu::always_inline]] constexpr range_probe abs(range_probe a) { return a; }
+[[nodiscard, gnu::always_inline]] constexpr range_probe operator*(range_probe a, range_probe b) {
     auto r = merge_range(a, b);
     r.dmin = a.dmin + b.dmin;
     r.dmax = a.dmax + b.dmax;
+    r.hi = a.hi <= probe_zero || b.hi <= probe_zero ? probe_zero : a.hi + b.hi;
     return r;
 }
 struct lift_range {
     [[nodiscard]] constexpr range_probe operator()(double x) const {
         range_probe r;
         if (!is_finite(x)) r.finite = false;
-        else if (x != 0.0) r.emin = r.emax = exponent_of(x);
+        else if (x != 0.0) {
+            r.emin = r.emax = exponent_of(x);
+            r.hi = r.emin + 1;
+        }
         return r;
     }
 };
+
+// Inputs times 2^shift, exact by the caller's choice of shift (no overflow, no result below the
+// normal range), then lifted as Lift lifts them.
+template <class Lift>
+struct lift_scaled {
+    double factor; // 2^shift, |shift| <= 1022
+    [[nodiscard]] constexpr auto operator()(double x) const { return Lift{}(x * factor); }
+};
+[[nodiscard]] constexpr double power_of_two(int k) { // -1022 <= k <= 1023
+    return __builtin_bit_cast(double, static_cast<std::uint64_t>(k + 1023) << 52);
+}
 
 // --- exact sign ------------------------------------------------------------------------------
 [[nodiscard]] constexpr sign to_sign(int s) { return s > 0 ? sign::positive : (s < 0 ? sign::negative : sign::zero); }
 [[nodiscard]] constexpr sign sign_of_double(double v) {
     return v > 0.0 ? sign::positive : (v < 0.0 ? sign::negative : sign::zero);
 }
+
+// The scaled filter stage. Where the permanent's estimate lies outside the filter's trusted range
+// (below 2^-850, or above 2^1000: a scene near 2^-500 or 2^500, or a high degree), the power of
+// two s that brings it near 1, within the bounds that keep every scaled input normal and finite,
+// so the scaling is exact; 0 where the range is fine, or no such s exists, or the polynomial is
+// not homogeneous. An intermediate that still overflows only makes the filter fail: its bound
+// test never passes on an infinite or NaN permanent.
+[[nodiscard]] constexpr int filter_shift(const range_probe& r) {
+    if (r.dmin != r.dmax || r.hi <= probe_zero + (1 << 20) || (r.hi >= -850 && r.hi <= 1000)) return 0;
+    int s = r.hi < 0 ? (-r.hi) / r.dmax : -((r.hi + r.dmax - 1) / r.dmax); // floor(-hi / d)
+    if (s > 1022 - r.emax) s = 1022 - r.emax;
+    if (s < -1022 - r.emin || s < -1022 || s > 1022) return 0;
+    return s;
+}
+// A homogeneous polynomial of degree d keeps its sign when every input is scaled by 2^s:
+// P(2^s x) = 2^(d s) P(x). The filter on the scaled inputs: +1 / -1 when proven, 0 otherwise.
+template <class F>
+[[nodiscard]] constexpr int scaled_filter_sign(const F& f, int shift) {
+    return proven_sign(f(lift_scaled<lift_filter>{power_of_two(shift)}));
+}
+
+// Whether a filtered value's permanent lies where scaling the inputs cannot help: the filter
+// failed because the value is near zero for its magnitude, not because the error bound under- or
+// overflowed.
+[[nodiscard]] constexpr bool in_trusted_range(double permanent) { return permanent >= 0x1p-850 && permanent <= 0x1p1000; }
+template <int K>
+[[nodiscard]] constexpr bool in_trusted_range(filtered<K> v) { return in_trusted_range(v.p); }
 
 // Largest expansion capacity evaluated on the stack; larger predicates go to the dyadic path.
 inline constexpr int max_expansion_capacity = 2048;
@@ -180,24 +231,37 @@ inline constexpr int max_expansion_capacity = 2048;
 // The predicate is passed by value (predicates capture their inputs by value): nothing of the
 // fast path escapes to memory, so the filter runs on registers without store-forwarding stalls.
 template <class F>
-[[nodiscard, gnu::noinline]] constexpr sign exact_sign_fallback(F f, bool& valid);
+[[nodiscard, gnu::noinline]] constexpr sign exact_sign_fallback(F f, bool& valid, bool in_range);
 
 // Exact sign of a generic polynomial predicate at the exact values of its inputs.
 // `valid` is cleared for non-finite inputs (their sign is then reported as zero).
 template <class F>
 [[nodiscard, gnu::always_inline]] constexpr sign exact_sign(const F& f, bool& valid) {
     // Stage 1: semi-static filter.
-    if (const int s = proven_sign(f(lift_filter{})); s != 0) return to_sign(s);
-    return exact_sign_fallback(f, valid);
+    const auto v = f(lift_filter{});
+    if (const int s = proven_sign(v); s != 0) return to_sign(s);
+    return exact_sign_fallback(f, valid, in_trusted_range(v));
 }
 
 template <class F>
-[[nodiscard, gnu::noinline]] constexpr sign exact_sign_fallback(F f, bool& valid) {
-    // Stage 1a: every operation exact in double (exactly touching inputs).
+[[nodiscard, gnu::noinline]] constexpr sign exact_sign_fallback(F f, bool& valid, bool in_range) {
+    // Stage 1a: every operation exact in double (exactly touching inputs: an exact zero, which no
+    // filter can prove, is the commonest reason to be here).
     if (const exact_double x = f(lift_exact_double{}); x.exact) return sign_of_double(x.v);
-    // Stage 1b: double-double filter (decides configurations a few ulps off the boundary).
-    if (const int s = proven_sign(f(lift_filter2{})); s != 0) return to_sign(s);
-    const range_probe r = f(lift_range{});
+    // Stage 1b, where the filter's permanent left its trusted range (in_range false): the filter
+    // on inputs scaled by a power of two (scaled_filter_sign). Then 1c: the double-double filter,
+    // which decides configurations a few ulps off the boundary (on the inputs scaled as in 1b, or
+    // as they are).
+    int shift = 0;
+    range_probe r;
+    if (!in_range) {
+        r = f(lift_range{});
+        if (r.finite) shift = filter_shift(r);
+        if (shift != 0)
+            if (const int s = scaled_filter_sign(f, shift); s != 0) return to_sign(s);
+    }
+    if (const int s = proven_sign(f(lift_scaled<lift_filter2>{power_of_two(shift)})); s != 0) return to_sign(s);
+    if (in_range) r = f(lift_range{});
     if (!r.finite) {
         valid = false;
         return sign::zero;
@@ -213,8 +277,8 @@ template <class F>
             const int lo = 108 - 1000 / d; // 2 of margin for the integer halving below
             const int hi = 1000 / d - 7;
             if (r.emax - r.emin <= hi - lo - 2) {
-                const int shift = (lo + hi) / 2 - (r.emin + r.emax) / 2;
-                return to_sign(f(lift_expansion{shift}).sign());
+                const int centre = (lo + hi) / 2 - (r.emin + r.emax) / 2;
+                return to_sign(f(lift_expansion{centre}).sign());
             }
         }
     }
@@ -229,11 +293,17 @@ struct approx_kernel {
 };
 
 struct filter_kernel {
-    bool failed = false; // some sign could not be proven: the query's answer is uncertain
+    // The permanent of the last sign the filter could not prove (0 or more, or NaN), -1 while
+    // every sign is proven. One store where a flag took one, so the certain path is unchanged;
+    // it tells whether scaling the inputs could help (in_trusted_range).
+    double unproven = -1.0;
+    // some sign could not be proven: the query's answer is uncertain
+    [[nodiscard]] constexpr bool failed() const { return !(unproven < 0.0); }
     template <class F>
     [[nodiscard, gnu::always_inline]] constexpr sign sgn(const F& f) {
-        const int s = proven_sign(f(lift_filter{}));
-        if (s == 0) failed = true;
+        const auto v = f(lift_filter{});
+        const int s = proven_sign(v);
+        if (s == 0) unproven = v.p;
         return to_sign(s);
     }
     // A sign for a check whose failure decides nothing (a candidate witness point): zero when the
@@ -242,10 +312,29 @@ struct filter_kernel {
     [[nodiscard, gnu::always_inline]] constexpr sign probe(const F& f) { return to_sign(proven_sign(f(lift_filter{}))); }
 };
 
+// A probe's second chance, out of line: the scaled filter, where the permanent left the filter's
+// trusted range (zero where it cannot help or cannot prove the sign).
+template <class F>
+[[nodiscard, gnu::noinline]] constexpr int scaled_probe(F f) {
+    const range_probe r = f(lift_range{});
+    if (!r.finite) return 0;
+    const int shift = filter_shift(r);
+    return shift != 0 ? scaled_filter_sign(f, shift) : 0;
+}
+
 struct exact_kernel {
     bool valid = true; // false when a predicate saw a NaN or infinite input
     template <class F>
     [[nodiscard, gnu::always_inline]] constexpr sign sgn(const F& f) { return exact_sign(f, valid); }
+    // A check whose failure decides nothing (see probe below) needs no exact sign: the filter,
+    // and the scaled filter where the scene's scale defeated it.
+    template <class F>
+    [[nodiscard, gnu::always_inline]] constexpr sign probe(const F& f) {
+        const auto v = f(lift_filter{});
+        if (const int s = proven_sign(v); s != 0) return to_sign(s);
+        if (in_trusted_range(v)) return sign::zero; // near its boundary: unknown
+        return to_sign(scaled_probe(f));
+    }
 };
 
 // probe(k, f): k's sign of f for a check that may fail without consequence; only a positive
@@ -270,29 +359,6 @@ template <class Body>
     exact_kernel e;
     const bool x = body(e);
     return e.valid && x;
-}
-
-// Run a yes/no query body in a tier. The body is `template <class K> bool(K&)`.
-template <class Tier, class Body>
-[[nodiscard]] constexpr bool decide(const Body& body) {
-    if constexpr (__is_same(Tier, approximate)) {
-        approx_kernel k;
-        return body(k);
-    } else {
-        filter_kernel f;
-        const bool r = body(f);
-        if (!f.failed) return r;
-        if constexpr (__is_same(Tier, conservative)) return true;
-        else if constexpr (__is_same(Tier, aggressive)) return false;
-        else return decide_exactly(body);
-    }
-}
-
-template <class Body>
-[[nodiscard]] constexpr certainty classify_body(const Body& body) {
-    filter_kernel f;
-    const bool r = body(f);
-    return f.failed ? certainty::uncertain : to_certainty(r);
 }
 
 } // namespace incidence::arith

@@ -99,7 +99,7 @@ template <class F>
 [[nodiscard]] constexpr filtered_sign classify_sign(const F& f) {
     arith::filter_kernel k;
     const sign s = k.sgn(f);
-    return {s, !k.failed};
+    return {s, !k.failed()};
 }
 
 } // namespace incidence

@@ -143,6 +143,7 @@ export import :frustum_polygon;
 export import :kdop_polygon;
 export import :aabb_sphere;
 export import :obb_sphere;
+export import :scene_scale;
 import incidence.core;
 import incidence.arith;
 import incidence.shapes;
@@ -159,6 +160,62 @@ concept has_pair = canonical_pair<A, B> || canonical_pair<B, A>;
 namespace detail {
 template <class A, class B>
 concept approximate_override = requires(const A& a, const B& b) { pair::intersects_approximate(a, b); };
+
+// The tiers that filter (exact, conservative, aggressive) and classify, for one canonical pair:
+// body(k, a, b) is the pair's kernel-generic body. When the filter cannot decide, its last
+// unproven sign's error bound under- or overflowed (arith::in_trusted_range), and the pair's
+// largest length is 2^60 or more, or below 2^-60, the pair is scaled towards scale 1
+// (pair::scene::normalized) and filtered again before anything is exact: in a scene near 2^-500
+// or 2^500 the filter's range, not the configuration, is what failed. Both filter passes go
+// through one call of the body, so it is compiled (and inlined) once.
+template <class A, class B, class Body>
+[[nodiscard]] constexpr certainty filter_passes(const A*& a, const B*& b, const Body& body,
+                                                std::optional<pair::scene::scaled_pair<A, B>>& scaled) {
+    for (;;) {
+        arith::filter_kernel f;
+        const bool r = body(f, *a, *b);
+        if (!f.failed()) return to_certainty(r);
+        if constexpr (pair::scene::scalable<A> && pair::scene::scalable<B>) {
+            if (!scaled && !arith::in_trusted_range(f.unproven))
+                if (const int top = pair::scene::far_exponent(*a, *b); top != 0 && (scaled = pair::scene::normalized(*a, *b, top))) {
+                    a = &scaled->a, b = &scaled->b;
+                    continue;
+                }
+        }
+        return certainty::uncertain;
+    }
+}
+template <class Tier, class A, class B, class Body>
+[[nodiscard]] constexpr bool decide_pair(const A& a, const B& b, const Body& body) {
+    if constexpr (__is_same(Tier, approximate)) {
+        arith::approx_kernel k;
+        return body(k, a, b);
+    } else {
+        const A* pa = &a;
+        const B* pb = &b;
+        std::optional<pair::scene::scaled_pair<A, B>> scaled;
+        const certainty c = filter_passes(pa, pb, body, scaled);
+        if (c != certainty::uncertain) return c == certainty::yes;
+        if constexpr (__is_same(Tier, conservative)) return true;
+        else if constexpr (__is_same(Tier, aggressive)) return false;
+        else return arith::decide_exactly([&](auto& k) { return body(k, *pa, *pb); });
+    }
+}
+template <class A, class B, class Body>
+[[nodiscard]] constexpr certainty classify_pair(const A& a, const B& b, const Body& body) {
+    const A* pa = &a;
+    const B* pb = &b;
+    std::optional<pair::scene::scaled_pair<A, B>> scaled;
+    return filter_passes(pa, pb, body, scaled);
+}
+struct intersects_body {
+    template <class K, class A, class B>
+    [[nodiscard]] constexpr bool operator()(K& k, const A& a, const B& b) const { return pair::intersects(k, a, b); }
+};
+struct contains_body {
+    template <class K, class A, class B>
+    [[nodiscard]] constexpr bool operator()(K& k, const A& a, const B& b) const { return pair::contains(k, a, b); }
+};
 } // namespace detail
 
 // Does a meet b? Closed sets: touching counts.
@@ -169,7 +226,7 @@ template <tier Tier = exact, class A, class B>
         if constexpr (__is_same(Tier, approximate) && detail::approximate_override<A, B>)
             return pair::intersects_approximate(a, b);
         else
-            return arith::decide<Tier>([&](auto& k) { return pair::intersects(k, a, b); });
+            return detail::decide_pair<Tier>(a, b, detail::intersects_body{});
     } else {
         return intersects<Tier>(b, a);
     }
@@ -180,7 +237,7 @@ template <class A, class B>
     requires has_pair<A, B>
 [[nodiscard]] constexpr certainty classify(const A& a, const B& b) {
     if constexpr (canonical_pair<A, B>) {
-        return arith::classify_body([&](auto& k) { return pair::intersects(k, a, b); });
+        return detail::classify_pair(a, b, detail::intersects_body{});
     } else {
         return classify(b, a);
     }
@@ -190,13 +247,13 @@ template <class A, class B>
 template <tier Tier = exact, class A, class B>
     requires requires(arith::filter_kernel& k, const A& a, const B& b) { pair::contains(k, a, b); }
 [[nodiscard]] constexpr bool contains(const A& a, const B& b) {
-    return arith::decide<Tier>([&](auto& k) { return pair::contains(k, a, b); });
+    return detail::decide_pair<Tier>(a, b, detail::contains_body{});
 }
 
 template <class A, class B>
     requires requires(arith::filter_kernel& k, const A& a, const B& b) { pair::contains(k, a, b); }
 [[nodiscard]] constexpr certainty classify_contains(const A& a, const B& b) {
-    return arith::classify_body([&](auto& k) { return pair::contains(k, a, b); });
+    return detail::classify_pair(a, b, detail::contains_body{});
 }
 
 // Do the boxes a and b together cover the box c completely? Exact (comparisons only).

@@ -148,6 +148,47 @@ TEST_CASE("arith: exact signs of degree 2 to 9 over the whole exponent range", "
     CHECK(wrong == 0);
 }
 
+// A scene near 2^-500 or 2^500: orient3d of four points at 2^k times three lifted ones (degree
+// 6, as the half-space signs mix unit normals with coordinates). Unscaled, the filter's permanent
+// leaves its trusted range; scaled by filter_shift's power of two, it decides them, never wrongly.
+TEST_CASE("arith: the scaled filter decides scenes far from scale 1, never wrongly", "[arith]") {
+    support::rng r(support::seed() + 6);
+    long n = 0, wrong = 0, proven = 0, unscaled = 0;
+    for (long i = 0; i < support::cases(20000); ++i) {
+        const int k = r.integer(0, 1) ? r.integer(-520, -310) : r.integer(340, 520);
+        double x[12];
+        for (double& v : x) v = std::ldexp(r.uniform(-1, 1), k);
+        const auto f = [&x](auto L) {
+            const auto one = L(1.0);
+            auto p = [&](int j) { return arith::v3<decltype(L(0.0))>{L(x[3 * j]), L(x[3 * j + 1]), L(x[3 * j + 2])}; };
+            return one * one * one * arith::det3(p(1) - p(0), p(2) - p(0), p(3) - p(0));
+        };
+        rational v;
+        {
+            auto q = [&](int j, int c) { return Q(x[3 * j + c]) - Q(x[c]); };
+            v = q(1, 0) * (q(2, 1) * q(3, 2) - q(2, 2) * q(3, 1)) + q(1, 1) * (q(2, 2) * q(3, 0) - q(2, 0) * q(3, 2)) +
+                q(1, 2) * (q(2, 0) * q(3, 1) - q(2, 1) * q(3, 0));
+        }
+        const int want = v > 0 ? 1 : (v < 0 ? -1 : 0);
+        ++n;
+        unscaled += arith::proven_sign(f(arith::lift_filter{})) != 0;
+        const int shift = arith::filter_shift(f(arith::lift_range{}));
+        if (shift == 0) continue;
+        const int s = arith::scaled_filter_sign(f, shift);
+        if (s != 0) {
+            ++proven;
+            if (s != want) ++wrong;
+        }
+        bool valid = true;
+        if (static_cast<int>(arith::exact_sign(f, valid)) != want) ++wrong;
+    }
+    std::printf("[cases] scaled filter: %ld scenes at 2^-520..2^-310 and 2^340..2^520, proven unscaled %ld, scaled %ld, wrong %ld\n", n,
+                unscaled, proven, wrong);
+    CHECK(wrong == 0);
+    CHECK(unscaled < n / 10);
+    CHECK(proven > n * 9 / 10);
+}
+
 TEST_CASE("arith: correctly_round finds the nearest double of sqrt(2) and of 1/3", "[arith]") {
     using arith::dyadic;
     const auto two = arith::to_dyadic(2.0);
