@@ -190,14 +190,17 @@ inline std::vector<bb> aabb_aabb_set(bool near) {
 // The registering functions below are not inlined: each bench file calls many of them once, and
 // inlined they made one function per file that took most of its compile time. The timed loops
 // are the registered lambdas, not these.
+// query: "intersects" or "contains" (the name's second part).
 template <class Case, class Truth, class Tiered>
-[[gnu::noinline]] void tiers(const std::string& pair, const std::string& dist, const std::vector<Case>& cs, Truth truth_of, Tiered f) {
+[[gnu::noinline]] void tiers(const std::string& pair, const std::string& dist, const std::vector<Case>& cs, Truth truth_of, Tiered f,
+                             const std::string& query = "intersects") {
     std::vector<bool> truth;
     for (const auto& c : cs) truth.push_back(truth_of(c));
-    reg("exact/intersects/" + pair + "/" + dist, cs, truth, check::exact, [f](const Case& c) { return f(exact{}, c); });
-    reg("conservative/intersects/" + pair + "/" + dist, cs, truth, check::conservative, [f](const Case& c) { return f(conservative{}, c); });
-    reg("aggressive/intersects/" + pair + "/" + dist, cs, truth, check::aggressive, [f](const Case& c) { return f(aggressive{}, c); });
-    reg("approximate/intersects/" + pair + "/" + dist, cs, truth, check::approximate, [f](const Case& c) { return f(approximate{}, c); });
+    const std::string tail = "/" + query + "/" + pair + "/" + dist;
+    reg("exact" + tail, cs, truth, check::exact, [f](const Case& c) { return f(exact{}, c); });
+    reg("conservative" + tail, cs, truth, check::conservative, [f](const Case& c) { return f(conservative{}, c); });
+    reg("aggressive" + tail, cs, truth, check::aggressive, [f](const Case& c) { return f(aggressive{}, c); });
+    reg("approximate" + tail, cs, truth, check::approximate, [f](const Case& c) { return f(approximate{}, c); });
 }
 
 // An OBB pair on the tests' generators (tests/support/obb_cases.hpp), the LP oracle as truth.

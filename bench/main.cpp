@@ -12,6 +12,7 @@ void register_planar2(bool near);
 void register_halfspace(bool near);
 void register_classic_rays(bool near);
 void register_classic_sat(bool near);
+void register_contains(bool near);
 } // namespace bench
 
 int main(int argc, char** argv) {
@@ -24,6 +25,7 @@ int main(int argc, char** argv) {
         bench::register_halfspace(near);
         bench::register_classic_rays(near);
         bench::register_classic_sat(near);
+        bench::register_contains(near);
     }
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;

@@ -10,7 +10,7 @@ import incidence;
 #include "../support/testing.hpp"
 #include "../support/check.hpp"
 #include "../support/obb_cases.hpp"
-#include "../support/contain_cases.hpp"
+#include "../support/contain_checks.hpp"
 #include "../support/box_linear_cases.hpp"
 
 namespace test_query_aabb_segment { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)

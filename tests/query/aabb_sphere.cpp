@@ -12,7 +12,7 @@
 import incidence;
 #include "../support/testing.hpp"
 #include "../support/check.hpp"
-#include "../support/contain_cases.hpp"
+#include "../support/contain_checks.hpp"
 
 namespace test_query_aabb_sphere { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 

@@ -16,7 +16,7 @@ import incidence;
 #include "../support/check.hpp"
 #include "../support/obb_cases.hpp"
 #include "../support/obb_check.hpp"
-#include "../support/contain_cases.hpp"
+#include "../support/contain_checks.hpp"
 
 namespace test_query_obb_tetrahedron { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 

@@ -56,8 +56,6 @@ namespace support {
 
 inline std::string str(incidence::point3 q) { return "(" + hex(q.x) + "," + hex(q.y) + "," + hex(q.z) + ")"; }
 inline std::string str(incidence::vec3 q) { return "(" + hex(q.x) + "," + hex(q.y) + "," + hex(q.z) + ")"; }
-inline void arr(incidence::point3 p, double* o) { o[0] = p.x; o[1] = p.y; o[2] = p.z; }
-inline void arr(incidence::vec3 p, double* o) { o[0] = p.x; o[1] = p.y; o[2] = p.z; }
 
 // Run n generated cases of a canonical pair against the oracle and require every contract.
 // gen(rng) -> std::pair<A, B>; truth(a, b) -> bool (oracle); skip(a, b) -> bool (outside the

@@ -102,6 +102,9 @@ inline std::string hex(double x) {
     std::snprintf(buf, sizeof buf, "%a", x);
     return buf;
 }
+// A point's or vector's coordinates into a double[3] (the oracle's arrays).
+inline void arr(incidence::point3 p, double* o) { o[0] = p.x; o[1] = p.y; o[2] = p.z; }
+inline void arr(incidence::vec3 p, double* o) { o[0] = p.x; o[1] = p.y; o[2] = p.z; }
 
 } // namespace support
 

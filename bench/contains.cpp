@@ -1,0 +1,112 @@
+// Benchmarks: contains(a, b) in every tier, on random pairs (mostly not contained, as in use) and on
+// near-degenerate ones: b inside a, on its boundary from inside, or just beyond it (the tests'
+// holding generators: tests/support/contain_cases.hpp, inside_case in flat_cases.hpp,
+// kdop_inside_case, halfspace_inside_case), the tests' exact rational truth (contains_truth,
+// flat_contains_truth, contained_truth by the LP).
+#include "bench.hpp"
+#include <optional>
+#include "../tests/support/contain_cases.hpp"
+
+namespace bench {
+namespace {
+
+// gen(rng, near) returns a pair or std::nullopt (a case the generator declined).
+template <class A, class B, class Gen, class Truth>
+[[gnu::noinline]] void contains_tiers(const std::string& pair, bool near, Gen gen, Truth truth) {
+    support::rng r(20261122 + (near ? 1 : 0));
+    std::vector<std::pair<A, B>> cs;
+    while (cs.size() < set_size)
+        if (const std::optional<std::pair<A, B>> c = gen(r, near)) cs.push_back(*c);
+    tiers(pair, near ? "near_degenerate" : "random", cs, [truth](const std::pair<A, B>& c) { return truth(c.first, c.second); },
+          [](auto tier, const std::pair<A, B>& c) { return contains<decltype(tier)>(c.first, c.second); }, "contains");
+}
+
+// The boxes and the ball: the pair's random cases, or the holding generator.
+template <class A, class B, class Random, class Holding>
+void box_contains(const std::string& pair, bool near, Random random, Holding holding) {
+    contains_tiers<A, B>(
+        pair, near, [random, holding](support::rng& r, bool nr) { return std::optional{nr ? holding(r) : random(r)}; },
+        [](const A& a, const B& b) { return support::contains_truth(a, b); });
+}
+template <class B>
+void obb_contains(const std::string& pair, bool near) {
+    box_contains<obb3, B>(pair, near, [](support::rng& r) { return support::obb_case<obb3, B>::random(r, false); }, support::obb_holding<B>);
+}
+// as the tests' random cases, at scale 1 like the other sets
+std::pair<aabb3, sphere3> random_aabb_ball(support::rng& r) {
+    const auto tr = support::random_transform(r, false, false);
+    return {support::random_aabb(r, tr), support::random_ball(r, tr)};
+}
+std::pair<obb3, sphere3> random_obb_ball(support::rng& r) {
+    const auto tr = support::random_transform(r, false, false);
+    return {support::random_obb(r, tr), support::random_ball(r, tr)};
+}
+template <class A, class B>
+void flat_contains(const std::string& pair, bool near) {
+    contains_tiers<A, B>(
+        pair, near,
+        [](support::rng& r, bool nr) { return std::optional{nr ? support::inside_case<A, B>(r) : support::flat_random<A, B>(r, false)}; },
+        [](const A& a, const B& b) { return support::flat_contains_truth(a, b); });
+}
+template <int K, class B>
+void kdop_contains(const std::string& pair, bool near) {
+    contains_tiers<kdop<K>, B>(
+        pair + "_" + std::to_string(K), near,
+        [](support::rng& r, bool nr) -> std::optional<std::pair<kdop<K>, B>> {
+            const auto c = nr ? support::kdop_inside_case<K, B>(r) : support::kdop_random<K, B>(r);
+            if (!c || !support::finite_shape(c->second)) return std::nullopt;
+            return c;
+        },
+        [](const kdop<K>& a, const B& b) { return support::contained_truth(a, b); });
+}
+template <class P, class B>
+void halfspace_contains(const std::string& pair, bool near) {
+    contains_tiers<P, B>(
+        pair, near,
+        [](support::rng& r, bool nr) -> std::optional<std::pair<P, B>> {
+            std::optional<std::pair<P, B>> c;
+            if (!nr) c = support::halfspace_random<P, B>(r);
+            else if constexpr (std::is_same_v<B, point3>) {
+                if (const auto s = support::halfspace_inside_case<P>(r)) c = std::pair{s->first, s->second.b};
+            } else c = support::halfspace_inside_case<P, B>(r);
+            if (!c || !support::finite_shape(c->second)) return std::nullopt;
+            return c;
+        },
+        [](const P& a, const B& b) { return support::contained_truth(a, b); });
+}
+
+} // namespace
+
+void register_contains(bool near) {
+    obb_contains<point3>("obb_point", near);
+    obb_contains<segment3>("obb_segment", near);
+    obb_contains<triangle3>("obb_triangle", near);
+    obb_contains<tetrahedron3>("obb_tetrahedron", near);
+    obb_contains<obb3>("obb_obb", near);
+    box_contains<aabb3, obb3>("aabb_obb", near, [](support::rng& r) { return support::obb_case<aabb3, obb3>::random(r, false); },
+                              support::aabb_holding_obb);
+    box_contains<obb3, sphere3>("obb_sphere", near, random_obb_ball, support::obb_holding_ball);
+    box_contains<sphere3, obb3>("sphere_obb", near, [](support::rng& r) { const auto [b, s] = random_obb_ball(r); return std::pair{s, b}; },
+                                support::ball_holding_obb);
+    box_contains<aabb3, sphere3>("aabb_sphere", near, random_aabb_ball, support::aabb_holding_ball);
+    box_contains<sphere3, aabb3>("sphere_aabb", near, [](support::rng& r) { const auto [b, s] = random_aabb_ball(r); return std::pair{s, b}; },
+                                 support::ball_holding_aabb);
+    box_contains<tetrahedron3, obb3>("tetrahedron_obb", near, [](support::rng& r) {
+        const auto [b, t] = support::obb_case<obb3, tetrahedron3>::random(r, false);
+        return std::pair{t, b};
+    }, support::tetrahedron_holding_obb);
+    flat_contains<tetrahedron3, point3>("tetrahedron_point", near);
+    flat_contains<tetrahedron3, segment3>("tetrahedron_segment", near);
+    flat_contains<tetrahedron3, triangle3>("tetrahedron_triangle", near);
+    flat_contains<tetrahedron3, tetrahedron3>("tetrahedron_tetrahedron", near);
+    flat_contains<tetrahedron3, aabb3>("tetrahedron_aabb", near);
+    flat_contains<aabb3, tetrahedron3>("aabb_tetrahedron", near);
+    kdop_contains<14, aabb3>("kdop_aabb", near);
+    kdop_contains<14, triangle3>("kdop_triangle", near);
+    kdop_contains<26, tetrahedron3>("kdop_tetrahedron", near);
+    halfspace_contains<frustum3, point3>("frustum_point", near);
+    halfspace_contains<frustum3, triangle3>("frustum_triangle", near);
+    halfspace_contains<convex_polyhedron3, segment3>("convex_polyhedron_segment", near);
+    halfspace_contains<convex_polyhedron3, tetrahedron3>("convex_polyhedron_tetrahedron", near);
+}
+} // namespace bench
