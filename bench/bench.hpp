@@ -233,7 +233,8 @@ template <class A, class B>
 }
 // A pair of a mesh or a polygon (a view of arrays a store owns) on the tests' generators, its
 // oracle as truth: make_case(rng, store, other, near) returns the partner (for a view, other's view).
-template <class Store, class B, class Gen, class Truth>
+// Contains: contains(store's view, partner) instead of intersects.
+template <class Store, class B, bool Contains = false, class Gen, class Truth>
 [[gnu::noinline]] void view_tiers(const std::string& pair, bool near, Gen make_case, Truth truth_of) {
     struct view_case {
         Store m, other;
@@ -252,7 +253,13 @@ template <class Store, class B, class Gen, class Truth>
         cs.push_back(std::move(c));
     }
     auto truth = [&](const view_case& c) { return truth_of(c.m.view(), c.partner()); };
-    tiers(pair, dist, cs, truth, [](auto tier, const view_case& c) { return intersects<decltype(tier)>(c.m.view(), c.partner()); });
+    tiers(
+        pair, dist, cs, truth,
+        [](auto tier, const view_case& c) {
+            if constexpr (Contains) return contains<decltype(tier)>(c.m.view(), c.partner());
+            else return intersects<decltype(tier)>(c.m.view(), c.partner());
+        },
+        Contains ? "contains" : "intersects");
 }
 // A mesh pair (tests/support/mesh_cases.hpp: closed non-convex star meshes of 12 or 48
 // triangles, at every scale the tests use), the mesh oracle as truth.

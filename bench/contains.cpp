@@ -2,9 +2,10 @@
 // near-degenerate ones: b inside a, on its boundary from inside, or just beyond it (the tests'
 // holding generators: tests/support/contain_cases.hpp, inside_case in flat_cases.hpp,
 // kdop_inside_case, halfspace_inside_case), the tests' exact rational truth (contains_truth,
-// flat_contains_truth, contained_truth by the LP).
+// flat_contains_truth, contained_truth by the LP; the mesh oracle for a mesh around a segment).
 #include "bench.hpp"
 #include <optional>
+#include <stdexcept>
 #include "../tests/support/contain_cases.hpp"
 
 namespace bench {
@@ -108,5 +109,20 @@ void register_contains(bool near) {
     halfspace_contains<frustum3, triangle3>("frustum_triangle", near);
     halfspace_contains<convex_polyhedron3, segment3>("convex_polyhedron_segment", near);
     halfspace_contains<convex_polyhedron3, tetrahedron3>("convex_polyhedron_tetrahedron", near);
+    // the mesh around a segment: tests/support/mesh_cases.hpp's segment_in_mesh_{random,near}, the
+    // mesh oracle's exact breakpoints and midpoints as truth (a case it declines is drawn again)
+    view_tiers<support::mesh_store, segment3, true>(
+        "mesh_segment", near,
+        [](support::rng& r, support::mesh_store& m, support::mesh_store&, bool nr) {
+            for (;;) {
+                const segment3 s = nr ? support::segment_in_mesh_near(r, m) : support::segment_in_mesh_random(r, m);
+                try {
+                    (void)support::segment_in_mesh_truth(m.view(), s);
+                    return s;
+                } catch (const std::runtime_error&) {
+                }
+            }
+        },
+        [](const mesh3& m, const segment3& s) { return support::segment_in_mesh_truth(m, s); });
 }
 } // namespace bench

@@ -34,30 +34,12 @@ export namespace incidence::pair {
 namespace polyq {
 
 // The vertex of a half-space set where planes a, c and e meet, V / D, as meshq::inside_at reads a
-// point: each parity sign times D (every one of them flips with D's sign, which leaves the
-// decisions, agreements of those signs, as they are).
-struct at_set_vertex {
+// point (meshq::at_weighted: each parity sign times D).
+struct set_vertex_point {
     plane3 a, c, e;
     template <class L>
     [[nodiscard]] constexpr auto weighted(L lift) const {
         return std::pair{vertex_numerator(lift, a, c, e), arith::det3(arith::lift(lift, a.normal), arith::lift(lift, c.normal), arith::lift(lift, e.normal))};
-    }
-    template <class L>
-    [[nodiscard]] constexpr auto pl(L lift, const vec3& u, const point3& x, const point3& y) const {
-        const auto [V, D] = weighted(lift);
-        const auto X = arith::lift(lift, x), Y = arith::lift(lift, y);
-        const auto xy = arith::cross(X, Y);
-        const auto r = arith::cross(Y - X, V);
-        using T = decltype(D * xy.x + r.x);
-        return arith::dot(arith::lift(lift, u), arith::v3<T>{D * xy.x + r.x, D * xy.y + r.y, D * xy.z + r.z});
-    }
-    template <class L>
-    [[nodiscard]] constexpr auto ahead(L lift, const point3& a0, const point3& b0, const point3& c0) const {
-        const auto [V, D] = weighted(lift);
-        const auto A = arith::lift(lift, a0);
-        const auto n = arith::cross(arith::lift(lift, b0) - A, arith::lift(lift, c0) - A);
-        using T = decltype(D * A.x - V.x);
-        return arith::dot(n, arith::v3<T>{D * A.x - V.x, D * A.y - V.y, D * A.z - V.z});
     }
     [[nodiscard]] constexpr bool near(const aabb3&) const { return true; }
     [[nodiscard]] constexpr bool x_ray_misses(const aabb3&) const { return false; }
@@ -72,7 +54,7 @@ template <class K>
         if (triangle_meets(k, m.triangle(i), planes, count)) return true;
     const set_vertex v = first_vertex(k, planes, static_cast<unsigned>(count));
     if (!v.found) return false;
-    return meshq::inside_at(k, m, at_set_vertex{v.i, v.j, v.l});
+    return meshq::inside_at(k, m, meshq::at_weighted<set_vertex_point>{{v.i, v.j, v.l}});
 }
 
 } // namespace polyq

@@ -93,50 +93,92 @@ struct at_point {
     }
 };
 
-// Is the point q, off the surface, inside (odd crossings)?
+// A rational point V / W as inside_at reads it, for any P whose weighted(L) gives {V, W} (W of
+// either sign, nonzero): each parity sign is taken times W, u . (W (x x y) + (y - x) x V) and
+// n . (W a - V) for a triangle a b c of normal n. W's sign flips all of them together, which
+// leaves the decisions, agreements of those signs, as they are. P also gives near and
+// x_ray_misses.
+template <class P>
+struct at_weighted : P {
+    template <class L>
+    [[nodiscard]] constexpr auto pl(L lift, const vec3& u, const point3& x, const point3& y) const {
+        const auto [V, W] = this->weighted(lift);
+        const auto X = arith::lift(lift, x), Y = arith::lift(lift, y);
+        const auto xy = arith::cross(X, Y);
+        const auto r = arith::cross(Y - X, V);
+        using T = decltype(W * xy.x + r.x);
+        return arith::dot(arith::lift(lift, u), arith::v3<T>{W * xy.x + r.x, W * xy.y + r.y, W * xy.z + r.z});
+    }
+    template <class L>
+    [[nodiscard]] constexpr auto ahead(L lift, const point3& a0, const point3& b0, const point3& c0) const {
+        const auto [V, W] = this->weighted(lift);
+        const auto A = arith::lift(lift, a0);
+        const auto n = arith::cross(arith::lift(lift, b0) - A, arith::lift(lift, c0) - A);
+        using T = decltype(W * A.x - V.x);
+        return arith::dot(n, arith::v3<T>{W * A.x - V.x, W * A.y - V.y, W * A.z - V.z});
+    }
+};
+
+// The crossings of the ray from q along direction j (u_j = (1, c_j, c_j^2)): 1 odd, 0 even, -1 not
+// clean (through an edge or a vertex, or in a triangle's plane). Tentative: every sign by
+// arith::probe, which may answer zero for a sign it cannot prove without touching the query's
+// certainty, and any such zero that would matter makes the direction unclean.
+template <class K, class Q>
+[[nodiscard]] constexpr int crossings(K& k, const mesh3& m, const Q& q, std::size_t j, bool tentative) {
+    const double c = j == 0 ? 0.0 : (j % 2 ? double((j + 1) / 2) : -double(j / 2));
+    const vec3 u{1.0, c, c * c};
+    auto sgn = [&](const auto& f) { return tentative ? arith::probe(k, f) : k.sgn(f); };
+    bool odd = false;
+    for (std::size_t i = 0; i < m.triangles.size(); ++i) {
+        const triangle3 t = m.triangle(i);
+        if (j == 0) { // the ray along +x misses a triangle whose box it misses (comparisons)
+            const point3 v[3] = {t.a, t.b, t.c};
+            if (q.x_ray_misses(bounds(v, 3))) continue;
+        }
+        auto pl = [&](point3 x, point3 y) { return sgn([=](auto L) { return q.pl(L, u, x, y); }); };
+        const sign s0 = pl(t.a, t.b), s1 = pl(t.b, t.c), s2 = pl(t.c, t.a);
+        const bool pos = s0 == sign::positive || s1 == sign::positive || s2 == sign::positive;
+        const bool neg = s0 == sign::negative || s1 == sign::negative || s2 == sign::negative;
+        if (pos && neg) continue; // the ray's line misses the triangle
+        if (!pos && !neg) {       // in the triangle's plane, or a collinear triangle
+            if (tentative) return -1;
+            const point3 a = t.a, b = t.b, cc = t.c;
+            bool collinear = true;
+            for (int axis = 0; axis < 3 && collinear; ++axis)
+                collinear = k.sgn([=](auto L) {
+                                const auto n = arith::cross(arith::lift(L, b) - arith::lift(L, a), arith::lift(L, cc) - arith::lift(L, a));
+                                return axis == 0 ? n.x : (axis == 1 ? n.y : n.z);
+                            }) == sign::zero;
+            if (!collinear) return -1;
+            continue;
+        }
+        const sign s = pos ? sign::positive : sign::negative;
+        const point3 a = t.a, b = t.b, cc = t.c;
+        const sign d = sgn([=](auto L) { return q.ahead(L, a, b, cc); });
+        if (tentative && d == sign::zero) return -1;
+        // det(a - p, b - p, c - p): the crossing lies ahead iff it has sign s
+        if (d != s) continue;
+        if (s0 == sign::zero || s1 == sign::zero || s2 == sign::zero) return -1; // through an edge or vertex
+        odd = !odd;
+    }
+    return odd ? 1 : 0;
+}
+
+// Is the point q, off the surface, inside (odd crossings)? For a closed surface every clean
+// direction gives the same parity, so a kernel that can probe (the filter, the exact kernel's
+// filter stages) first tries a few directions on signs it proves cheaply: an axis-parallel edge
+// makes the first direction unclean for every point, and the filter cannot prove that zero. Then
+// every direction in turn with exact signs.
 template <class K, class Q>
 [[nodiscard]] constexpr bool inside_at(K& k, const mesh3& m, const Q& q) {
     if (!q.near(bounds(m))) return false;
+    if constexpr (requires { k.probe([](auto L) { return L(0.0); }); })
+        for (std::size_t j = 0; j < 4; ++j)
+            if (const int r = crossings(k, m, q, j, true); r >= 0) return r == 1;
     const std::size_t tries = 8 * m.triangles.size() + m.vertices.size() + 8;
-    bool odd = false;
-    for (std::size_t j = 0; j < tries; ++j) {
-        const double c = j == 0 ? 0.0 : (j % 2 ? double((j + 1) / 2) : -double(j / 2));
-        const vec3 u{1.0, c, c * c};
-        odd = false;
-        bool clean = true;
-        for (std::size_t i = 0; i < m.triangles.size() && clean; ++i) {
-            const triangle3 t = m.triangle(i);
-            if (j == 0) { // the ray along +x misses a triangle whose box it misses (comparisons)
-                const point3 v[3] = {t.a, t.b, t.c};
-                if (q.x_ray_misses(bounds(v, 3))) continue;
-            }
-            auto pl = [&](point3 x, point3 y) { return k.sgn([=](auto L) { return q.pl(L, u, x, y); }); };
-            const sign s0 = pl(t.a, t.b), s1 = pl(t.b, t.c), s2 = pl(t.c, t.a);
-            const bool pos = s0 == sign::positive || s1 == sign::positive || s2 == sign::positive;
-            const bool neg = s0 == sign::negative || s1 == sign::negative || s2 == sign::negative;
-            if (pos && neg) continue; // the ray's line misses the triangle
-            if (!pos && !neg) {       // in the triangle's plane, or a collinear triangle
-                const point3 a = t.a, b = t.b, cc = t.c;
-                bool collinear = true;
-                for (int axis = 0; axis < 3 && collinear; ++axis)
-                    collinear = k.sgn([=](auto L) {
-                                    const auto n = arith::cross(arith::lift(L, b) - arith::lift(L, a), arith::lift(L, cc) - arith::lift(L, a));
-                                    return axis == 0 ? n.x : (axis == 1 ? n.y : n.z);
-                                }) == sign::zero;
-                if (!collinear) clean = false;
-                continue;
-            }
-            const sign s = pos ? sign::positive : sign::negative;
-            const point3 a = t.a, b = t.b, cc = t.c;
-            const sign d = k.sgn([=](auto L) { return q.ahead(L, a, b, cc); });
-            // det(a - p, b - p, c - p): the crossing lies ahead iff it has sign s
-            if (d != s) continue;
-            if (s0 == sign::zero || s1 == sign::zero || s2 == sign::zero) clean = false; // through an edge or vertex
-            else odd = !odd;
-        }
-        if (clean) return odd;
-    }
-    return odd; // reached only by inexact arithmetic (the approximate tier, a filter's guess)
+    for (std::size_t j = 0; j < tries; ++j)
+        if (const int r = crossings(k, m, q, j, false); r >= 0) return r == 1;
+    return false; // reached only by inexact arithmetic (the approximate tier, a filter's guess)
 }
 template <class K>
 [[nodiscard]] constexpr bool inside(K& k, const mesh3& m, point3 p) {

@@ -10,6 +10,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/intersection.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/intersections.h>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -271,6 +272,73 @@ bool mesh_intersect(const mesh_data& m, const convex_set& x) {
     }
     using E = CGAL::Exact_predicates_exact_constructions_kernel;
     return crossing_parity<E>(m, E::Point_3(E::FT((*q)[0]), E::FT((*q)[1]), E::FT((*q)[2])), p, lo, hi);
+}
+
+// Is every point of the segment a b in the mesh's point set? Epeck constructs where it meets
+// each triangle (CGAL::intersection: a point or a segment; a collinear triangle as its three
+// edges), as parameters t = (P - a) . d / d . d; the open intervals between consecutive ones each
+// lie on a triangle or off the surface, and their exact midpoints decide: on a triangle
+// (do_intersect, or an edge's has_on) or inside by crossing parity over Epeck.
+bool mesh_contains_segment(const mesh_data& m, const std::array<double, 3>& a, const std::array<double, 3>& b) {
+    if (!mesh_inside(m, a) || !mesh_inside(m, b)) return false;
+    using P = K::Point_3;
+    const P A(a[0], a[1], a[2]), B(b[0], b[1], b[2]);
+    if (A == B) return true;
+    const K::Segment_3 S(A, B);
+    const K::Vector_3 D = B - A;
+    const K::FT dd = D * D;
+    std::vector<K::FT> ts{K::FT(0), K::FT(1)};
+    std::vector<K::Triangle_3> tris;
+    std::vector<K::Segment_3> edges;
+    auto add = [&](const auto& r) {
+        if (!r) return;
+        if (const P* p = boost::get<P>(&*r)) ts.push_back(((*p - A) * D) / dd);
+        else if (const K::Segment_3* q = boost::get<K::Segment_3>(&*r)) {
+            ts.push_back(((q->source() - A) * D) / dd);
+            ts.push_back(((q->target() - A) * D) / dd);
+        }
+    };
+    for (const auto& t : m.t) {
+        bool apart = false;
+        for (unsigned k = 0; k < 3; ++k) {
+            const double lo = std::min(a[k], b[k]), hi = std::max(a[k], b[k]);
+            const double x = m.v[t[0]][k], y = m.v[t[1]][k], z = m.v[t[2]][k];
+            apart = apart || std::max({x, y, z}) < lo || std::min({x, y, z}) > hi;
+        }
+        if (apart) continue;
+        const P p(m.v[t[0]][0], m.v[t[0]][1], m.v[t[0]][2]), q(m.v[t[1]][0], m.v[t[1]][1], m.v[t[1]][2]),
+            r(m.v[t[2]][0], m.v[t[2]][1], m.v[t[2]][2]);
+        if (!CGAL::collinear(p, q, r)) {
+            const K::Triangle_3 T(p, q, r);
+            add(CGAL::intersection(S, T));
+            tris.push_back(T);
+            continue;
+        }
+        for (const auto& [x, y] : {std::pair{p, q}, std::pair{q, r}, std::pair{r, p}}) {
+            if (x == y) {
+                if (S.has_on(x)) ts.push_back(((x - A) * D) / dd);
+                continue;
+            }
+            const K::Segment_3 E(x, y);
+            add(CGAL::intersection(S, E));
+            edges.push_back(E);
+        }
+    }
+    std::sort(ts.begin(), ts.end());
+    ts.erase(std::unique(ts.begin(), ts.end()), ts.end());
+    std::array<double, 3> lo{}, hi{};
+    vertex_box(m, lo, hi);
+    for (std::size_t i = 0; i + 1 < ts.size(); ++i) {
+        const K::FT tm = (ts[i] + ts[i + 1]) / 2;
+        const P M = A + tm * D;
+        bool on = false;
+        for (const auto& T : tris) on = on || CGAL::do_intersect(T, M);
+        for (const auto& E : edges) on = on || E.has_on(M);
+        if (on) continue;
+        const std::array<double, 3> approx{CGAL::to_double(M.x()), CGAL::to_double(M.y()), CGAL::to_double(M.z())};
+        if (!crossing_parity<K>(m, M, approx, lo, hi)) return false;
+    }
+    return true;
 }
 
 bool mesh_mesh_intersect(const mesh_data& a, const mesh_data& b) {

@@ -182,6 +182,48 @@ B mesh_random(rng& r, mesh_store& store, mesh_store& other) {
     }
 }
 
+// A star mesh (support/mesh_cases.hpp, star-shaped about its centre) and a segment from the
+// centre to a surface point X (inside, touching), from X along a triangle's edge in its plane,
+// between two surface points, or from halfway to X to a little short of or past X; the far end
+// nudged by ulps or not; then one exact-or-nudged scale 2^-500..2^500 and translation.
+inline incidence::segment3 segment_in_mesh_near(rng& r, mesh_store& store) {
+    using namespace incidence;
+    const point3 centre = small_point(r);
+    star_mesh(r, r.integer(1, 2), centre, 1.0, store);
+    vec3 along{}, unused{};
+    const point3 X = surface_point(r, store, along);
+    segment3 s{};
+    switch (r.integer(0, 3)) {
+    case 0: s = {centre, X}; break;
+    case 1: s = {X, X + along * (r.integer(-4, 4) * 0.25)}; break;
+    case 2: s = {X, surface_point(r, store, unused)}; break;
+    default: s = {centre + (X - centre) * 0.5, X + (X - centre) * (r.integer(-2, 2) * 0.125)}; break;
+    }
+    if (r.coin()) s.b = {nudge(s.b.x, r.integer(-2, 2)), nudge(s.b.y, r.integer(-2, 2)), nudge(s.b.z, r.integer(-2, 2))};
+    if (r.coin()) std::swap(s.a, s.b);
+    transform tr = random_transform(r, r.integer(0, 3) == 0, true);
+    realise_mesh(store, tr);
+    return realise(s, tr);
+}
+// A random star mesh and a segment between two points of its vertices' box, or an eighth of one.
+inline incidence::segment3 segment_in_mesh_random(rng& r, mesh_store& store) {
+    using namespace incidence;
+    mesh_store other;
+    (void)mesh_random<point3>(r, store, other);
+    const aabb3 box = incidence::pair::meshq::bounds(store.view());
+    auto at = [&] {
+        return point3{box.min.x + (box.max.x - box.min.x) * r.uniform(0, 1), box.min.y + (box.max.y - box.min.y) * r.uniform(0, 1),
+                      box.min.z + (box.max.z - box.min.z) * r.uniform(0, 1)};
+    };
+    const point3 a = at(), b = at();
+    if (r.coin()) return {a, b};
+    return {a, a + (b - a) * 0.125}; // a short one: more of them inside
+}
+// The oracle's answer to contains(m, s) (tests/oracle/cgal_mesh.cpp; std::runtime_error when it
+// finds no clean parity segment).
+inline bool segment_in_mesh_truth(const incidence::mesh3& m, const incidence::segment3& s) {
+    return oracle::mesh_contains_segment(mesh_data_of(m), {s.a.x, s.a.y, s.a.z}, {s.b.x, s.b.y, s.b.z});
+}
 // The oracle's answer (tests/oracle/cgal_mesh.cpp).
 template <class B>
 bool mesh_truth(const incidence::mesh3& m, const B& b) {
