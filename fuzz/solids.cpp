@@ -215,7 +215,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const mesh3 m{verts, octahedron};
         bool finite = true;
         if ((data[0] & 0x40) && data[0] % 8 >= 4 && data[0] % 8 <= 6) { // a half-space set (18 doubles)
-            for (int i = 0; i < 36; ++i) finite = finite && std::isfinite(w[i]);
+            // the doubles each set reads: 4 per plane (1 to 4), a frustum's 18, a 14-DOP's 14
+            const int reads = data[0] % 8 == 6 ? 4 * (1 + data[0] / 8 % 4) : (data[0] % 8 == 5 ? 18 : 14);
+            for (int i = 0; i < 18 + reads; ++i) finite = finite && std::isfinite(w[i]);
             const double* h = w + 18;
             if (data[0] % 8 == 6) check_mesh(m, fuzz::polyhedron_from(h, 1 + data[0] / 8 % 4), finite); // 1 to 4 planes
             else if (data[0] % 8 == 5) check_mesh(m, fuzz::frustum_from(h), finite); // six planes, the doubles read again

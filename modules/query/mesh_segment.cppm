@@ -156,6 +156,7 @@ template <class K, class Q>
     // a collinear triangle: the union of its edges; (V - W x) . (y - x) >= 0 from both ends
     for (int i = 0; i < 3; ++i) {
         const point3 x = v[i], y = v[(i + 1) % 3];
+        if (x.x == y.x && x.y == y.y && x.z == y.z) continue; // a point holds no piece
         if (edge(x, y, 0) != sign::zero || edge(x, y, 1) != sign::zero || edge(x, y, 2) != sign::zero) continue;
         auto from = [&](point3 p, point3 r) {
             return k.sgn([=, &q](auto L) {

@@ -80,6 +80,19 @@ TEST_CASE("mesh_segment: contains, fixtures", "[mesh_segment]") {
     CHECK(contains(long_box, segment3{{-1024, 0.5, 0.5}, {1, 0.5, 0.5}}));
     CHECK_FALSE(contains(long_box, segment3{{-1024, 0.5, 0.5}, {0x1.0000000000001p0, 0.5, 0.5}}));
     CHECK_FALSE(contains<approximate>(long_box, segment3{{-1024, 0.5, 0.5}, {0x1.0000000000001p0, 0.5, 0.5}}));
+    // an unchecked octahedron with three vertices at the origin (the triangles there are collinear
+    // or points): a zero-length edge holds no piece of the segment (found by fuzz/solids)
+    const std::array<point3, 6> collapsed{{{0x0.07f9f5bae8dap-1022, 0x0.0000000000007p-1022, 0x0.0000000002p-1022},
+                                           {0x0.7007ap-1022, 0, 0x1.000000f001ep+737},
+                                           {0x0.000000000056ep-1022, 0x1.e6e6e6e6e6ep+743, 0x1.e6e6e6e6e6e6ep+743},
+                                           {0, 0, 0},
+                                           {0, 0, 0},
+                                           {0, 0, 0}}};
+    const std::array<std::array<std::uint32_t, 3>, 8> octahedron{{{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}}};
+    const mesh3 odd{collapsed, octahedron};
+    CHECK_FALSE(contains(odd, segment3{{0, 0, 0}, {0, 0, 0x1.e6e6ep+743}})); // the far end is outside
+    CHECK_FALSE(contains(odd, point3{0, 0, 0x1.e6e6ep+743}));
+    CHECK(contains(odd, segment3{{0, 0, 0}, {0, 0, 0}}));
     CHECK(contains<conservative>(cube, segment3{{0.2, 0.2, 0.2}, {0.8, 0.8, 0.8}}));
     CHECK_FALSE(contains<aggressive>(cube, segment3{{0.5, 0.5, 0.5}, {0.5, 0.5, 2}}));
     CHECK(classify_contains(cube, segment3{{0.5, 0.5, 0.5}, {0.5, 0.5, 1}}) == certainty::uncertain); // touching: the filter cannot tell
