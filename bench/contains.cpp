@@ -2,7 +2,8 @@
 // near-degenerate ones: b inside a, on its boundary from inside, or just beyond it (the tests'
 // holding generators: tests/support/contain_cases.hpp, inside_case in flat_cases.hpp,
 // kdop_inside_case, halfspace_inside_case), the tests' exact rational truth (contains_truth,
-// flat_contains_truth, contained_truth by the LP; the mesh oracle for a mesh around a segment).
+// flat_contains_truth, contained_truth by the LP; the mesh and polygon oracles for a mesh or a
+// polygon around a segment or a triangle).
 #include "bench.hpp"
 #include <optional>
 #include <stdexcept>
@@ -32,6 +33,21 @@ void box_contains(const std::string& pair, bool near, Random random, Holding hol
 template <class B>
 void obb_contains(const std::string& pair, bool near) {
     box_contains<obb3, B>(pair, near, [](support::rng& r) { return support::obb_case<obb3, B>::random(r, false); }, support::obb_holding<B>);
+}
+// contains(polygon3, B) for B a segment or a triangle of points_in_polygon3 (a case the generator
+// declines is drawn again).
+template <class B, class Truth>
+void polygon3_contains(const std::string& pair, bool near, Truth truth) {
+    view_tiers<support::polygon3_store, B, true>(
+        pair, near,
+        [](support::rng& r, support::polygon3_store& g, support::polygon3_store&, bool nr) {
+            for (;;)
+                if (const auto p = support::points_in_polygon3(r, g, nr)) {
+                    if constexpr (std::is_same_v<B, segment3>) return segment3{(*p)[0], (*p)[1]};
+                    else return triangle3{(*p)[0], (*p)[1], (*p)[2]};
+                }
+        },
+        truth);
 }
 // as the tests' random cases, at scale 1 like the other sets
 std::pair<aabb3, sphere3> random_aabb_ball(support::rng& r) {
@@ -124,5 +140,16 @@ void register_contains(bool near) {
             }
         },
         [](const mesh3& m, const segment3& s) { return support::segment_in_mesh_truth(m, s); });
+    // the polygon around a segment (2D and 3D) or a triangle (3D): polygon_cases.hpp's
+    // segment_in_polygon_{random,near}, polygon3_cases.hpp's points_in_polygon3, the polygon
+    // oracles' exact breakpoints and clipped areas as truth
+    view_tiers<support::polygon_store, segment2, true>(
+        "polygon2_segment2", near,
+        [](support::rng& r, support::polygon_store& g, support::polygon_store&, bool nr) {
+            return nr ? support::segment_in_polygon_near(r, g) : support::segment_in_polygon_random(r, g);
+        },
+        [](const polygon2& g, const segment2& s) { return support::segment_in_polygon_truth(g, s); });
+    polygon3_contains<segment3>("polygon_segment", near, [](const polygon3& g, const segment3& s) { return support::segment_in_polygon3_truth(g, s); });
+    polygon3_contains<triangle3>("polygon_triangle", near, [](const polygon3& g, const triangle3& t) { return support::triangle_in_polygon3_truth(g, t); });
 }
 } // namespace bench

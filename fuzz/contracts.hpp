@@ -14,3 +14,16 @@ void contracts(const A& x, const B& y, bool truth) {
     const certainty c = classify(x, y);
     if (c != certainty::uncertain && (c == certainty::yes) != truth) std::abort();
 }
+
+// contains(x, y) against the truth: the exact tier agrees, conservative never misses, aggressive
+// never lies, classify_contains is never wrong, the approximate tier finishes.
+template <class A, class B>
+void contains_contracts_with(const A& x, const B& y, bool truth) {
+    using namespace incidence;
+    (void)contains<approximate>(x, y);
+    if (contains<exact>(x, y) != truth) std::abort();
+    if (truth && !contains<conservative>(x, y)) std::abort();
+    if (!truth && contains<aggressive>(x, y)) std::abort();
+    const certainty c = classify_contains(x, y);
+    if (c != certainty::uncertain && (c == certainty::yes) != truth) std::abort();
+}

@@ -10,12 +10,14 @@
 // segment, ray or line in the plane (4 doubles) or a triangle polygon (6 doubles), byte 1 % 5;
 // any positions, so possibly self-intersecting: polygon2::make must accept exactly the simple
 // ones (CGAL Polygon_2::is_simple and disjoint rings, oracle::polygon_simple), and for those the
-// contracts hold against oracle::polygon_intersect; contains(polygon, point) too. 3D polygon mode
+// contracts hold against oracle::polygon_intersect; contains(polygon, point | segment) too (the
+// segment against oracle::polygon_contains_segment). 3D polygon mode
 // (byte 0 & 0xc0 == 0x40 and byte 1 & 0x80): a polygon3 of six vertices (12 doubles, one ring or
 // two of three as above) in the plane where coordinate byte 0 % 3 is the 13th double, exactly
 // planar, against the 3D shape of kind byte 1 % 6 (9 more doubles): polygon3::make must accept
 // exactly the simple ones, whose contracts hold against the triangles of the polygon's CGAL
-// triangulation (oracle::polygon3_triangles, each by oracle::flat); the same vertices bent off the
+// triangulation (oracle::polygon3_triangles, each by oracle::flat), and contains(polygon3,
+// segment3 | triangle3) against the oracle's covering by those triangles; the same vertices bent off the
 // plane (one coordinate replaced) run every tier unchecked. With bit 0x20 of byte 1 too, the
 // polygon3 is against a closed shape of kind byte 1 % 8 (up to 18 more doubles): a box (6, maybe
 // inverted), an OBB (15), a tetrahedron (12), a convex polyhedron of 1 to 4 planes, a frustum
@@ -134,6 +136,9 @@ void check_polygon(const polygon2& g, const B& b, bool finite) {
     (void)classify(b, g);
     if (!finite) {
         if (intersects<exact>(g, b)) std::abort();
+        if constexpr (std::is_same_v<B, segment2>) (void)contains<approximate>(g, b), (void)classify_contains(g, b);
+        if constexpr (std::is_same_v<B, segment2>)
+            if (contains(g, b)) std::abort();
         bool vertices_finite = true;
         for (const auto& p : g.vertices) vertices_finite = vertices_finite && std::isfinite(p.x) && std::isfinite(p.y);
         if (!vertices_finite && polygon2::make(g.vertices, g.ring_ends).has_value()) std::abort();
@@ -152,6 +157,8 @@ void check_polygon(const polygon2& g, const B& b, bool finite) {
     contracts(g, b, truth);
     if constexpr (std::is_same_v<B, point2>)
         if (contains(g, b) != truth) std::abort();
+    if constexpr (std::is_same_v<B, segment2>) // contains against the oracle's exact breakpoints
+        contains_contracts_with(g, b, oracle::polygon_contains_segment(data_of(g), {b.a.x, b.a.y}, {b.b.x, b.b.y}));
 }
 // The 3D polygon: every tier finishes; on finite input make() accepts exactly the simple rings, and
 // the contracts hold against the triangulation oracle (support::polygon3_truth).
@@ -168,6 +175,10 @@ void check_polygon3(const std::array<point3, 6>& verts, std::span<const std::uin
         for (const auto& p : verts) vertices_finite = vertices_finite && std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
         if (!vertices_finite && made.has_value()) std::abort();
         if (intersects<exact>(g, b)) std::abort();
+        if constexpr (std::is_same_v<B, segment3> || std::is_same_v<B, triangle3>) {
+            (void)contains<approximate>(g, b), (void)classify_contains(g, b);
+            if (contains(g, b)) std::abort();
+        }
         return;
     }
     oracle::polygon_data flat;
@@ -200,6 +211,15 @@ void check_polygon3(const std::array<point3, 6>& verts, std::span<const std::uin
     contracts(g, b, truth);
     if constexpr (std::is_same_v<B, point3>)
         if (contains(g, b) != truth) std::abort();
+    if constexpr (std::is_same_v<B, segment3> || std::is_same_v<B, triangle3>) { // contains: in the plane, covered by the triangulation
+        try {
+            if constexpr (std::is_same_v<B, segment3>) truth = support::segment_in_polygon3_truth(g, b);
+            else truth = support::triangle_in_polygon3_truth(g, b);
+        } catch (const std::runtime_error&) {
+            return;
+        }
+        contains_contracts_with(g, b, truth);
+    }
 }
 } // namespace
 

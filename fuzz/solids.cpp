@@ -197,9 +197,7 @@ void check_mesh(const mesh3& m, const B& b, bool finite) {
         } catch (const std::runtime_error&) {
             return;
         }
-        (void)contains<approximate>(m, b);
-        if (contains(m, b) != in || (in && !contains<conservative>(m, b)) || (!in && contains<aggressive>(m, b))) std::abort();
-        if (const certainty c = classify_contains(m, b); c != certainty::uncertain && (c == certainty::yes) != in) std::abort();
+        contains_contracts_with(m, b, in);
     }
 }
 } // namespace

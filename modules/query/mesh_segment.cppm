@@ -37,6 +37,7 @@ import :segment_segment;
 import :mesh_point;
 import :segment_triangle;
 import :point_tetrahedron;
+import :segment_pieces;
 import incidence.predicates;
 
 export namespace incidence::pair {
@@ -109,23 +110,6 @@ struct segment_point : in_segment_box {
     }
 };
 
-// Sorts v by less(x, y) (a merge sort: an inconsistent order from an inexact kernel leaves v
-// unsorted, never reads out of range).
-template <class T, class Less>
-constexpr void merge_sort(std::vector<T>& v, const Less& less) {
-    std::vector<T> tmp(v.size());
-    for (std::size_t w = 1; w < v.size(); w *= 2) {
-        for (std::size_t lo = 0; lo < v.size(); lo += 2 * w) {
-            const std::size_t mid = lo + w < v.size() ? lo + w : v.size(), hi = lo + 2 * w < v.size() ? lo + 2 * w : v.size();
-            std::size_t i = lo, j = mid, o = lo;
-            while (i < mid && j < hi) tmp[o++] = less(v[j], v[i]) ? v[j++] : v[i++];
-            while (i < mid) tmp[o++] = v[i++];
-            while (j < hi) tmp[o++] = v[j++];
-        }
-        v.swap(tmp);
-    }
-}
-
 // Is the midpoint q (of a segment in t's plane, or along a collinear t) on the triangle t?
 template <class K, class Q>
 [[nodiscard]] constexpr bool on_triangle(K& k, const triangle3& t, const Q& q) {
@@ -185,25 +169,16 @@ template <class K>
     // An axis along which the segment moves, for the parameters of points (det(e_j+1, e_j+2, x - a) = (x - a)_j).
     const int j = s.a.x != s.b.x ? 0 : (s.a.y != s.b.y ? 1 : 2);
     const point3 u1 = meshq::unit((j + 1) % 3), u2 = meshq::unit((j + 2) % 3);
-    auto denominator = [&](const segment_param& p) {
-        return k.sgn([=](auto L) { return p.fraction(L, s).second; });
-    };
-    auto numerator = [&](const segment_param& p) {
-        return k.sgn([=](auto L) { return p.fraction(L, s).first; });
-    };
+    auto fraction = [s](auto L, const segment_param& p) { return p.fraction(L, s); };
     std::vector<segment_param> params;
     std::vector<std::size_t> in_plane; // triangles that may hold a piece of the segment
     bool met = false;
-    // Keeps p if D != 0 and 0 < t < 1 (D made positive).
+    // Keeps p if D != 0 (made positive) and 0 < t < 1; false when D = 0.
     auto keep = [&](segment_param p) {
-        const sign d = denominator(p);
+        const sign d = k.sgn([=](auto L) { return p.fraction(L, s).second; });
         if (d == sign::zero) return false;
         p.flip = d == sign::negative;
-        if (numerator(p) == sign::positive && k.sgn([=](auto L) {
-                const auto [n, dd] = p.fraction(L, s);
-                return dd - n;
-            }) == sign::positive)
-            params.push_back(p);
+        if (pieces::inside_unit(k, fraction, p)) params.push_back(p);
         return true;
     };
     auto at_point = [&](point3 x) { (void)keep(segment_param{x, meshq::origin, u1, meshq::origin, u2}); };
@@ -227,41 +202,18 @@ template <class K>
         }
     }
     if (!met) return meshq::inside(k, m, s.a); // wholly off the surface
-    const segment_param start{s.a, meshq::origin, u1, meshq::origin, u2, denominator({s.a, meshq::origin, u1, meshq::origin, u2}) == sign::negative};
-    const segment_param end{s.b, meshq::origin, u1, meshq::origin, u2, start.flip};
-    auto order = [&](const segment_param& x, const segment_param& y) {
-        return k.sgn([=](auto L) {
-            const auto [nx, dx] = x.fraction(L, s);
-            const auto [ny, dy] = y.fraction(L, s);
-            return nx * dy - ny * dx;
-        });
+    // t = (a - a)_j / (b - a)_j = 0 and (b - a)_j / (b - a)_j = 1, D made positive
+    const bool flip = s.b.x != s.a.x ? s.b.x < s.a.x : (s.b.y != s.a.y ? s.b.y < s.a.y : s.b.z < s.a.z);
+    const segment_param start{s.a, meshq::origin, u1, meshq::origin, u2, flip}, end{s.b, meshq::origin, u1, meshq::origin, u2, flip};
+    // a piece on a triangle in its plane, or else inside
+    auto decide = [&](const auto& q) {
+        for (std::size_t n = 0; n < in_plane.size(); ++n)
+            if (meshq::on_triangle(k, m.triangle(in_plane[n]), q)) return true;
+        return meshq::inside_at(k, m, q);
     };
-    meshq::merge_sort(params, [&](const segment_param& x, const segment_param& y) { return order(x, y) == sign::negative; });
-    for (std::size_t i = 0; i <= params.size(); ++i) {
-        const segment_param& lo = i == 0 ? start : params[i - 1];
-        const segment_param& hi = i == params.size() ? end : params[i];
-        if (order(lo, hi) == sign::zero) continue; // no interval between them
-        // the piece's point: a double t provably between lo and hi (t D - N of degree 4, by a probe
-        // that may fail without consequence), else the exact midpoint
-        auto decide = [&](const auto& q) {
-            for (std::size_t n = 0; n < in_plane.size(); ++n)
-                if (meshq::on_triangle(k, m.triangle(in_plane[n]), q)) return true;
-            return meshq::inside_at(k, m, q);
-        };
-        const auto [nl, dl] = lo.fraction(arith::lift_double{}, s);
-        const auto [nh, dh] = hi.fraction(arith::lift_double{}, s);
-        const double t = dl > 0.0 && dh > 0.0 ? 0.5 * (nl / dl + nh / dh) : -1.0;
-        auto beyond = [&](const segment_param& p) { // sign of t D - N
-            return arith::probe(k, [=](auto L) {
-                const auto [n, d] = p.fraction(L, s);
-                return L(t) * d - L(1.0) * n;
-            });
-        };
-        const bool between = t > 0.0 && t < 1.0 && beyond(lo) == sign::positive && beyond(hi) == sign::negative;
-        if (!(between ? decide(meshq::at_weighted<meshq::segment_at>{{{sb}, s, t}}) : decide(meshq::at_weighted<meshq::segment_point>{{{sb}, s, lo, hi}})))
-            return false;
-    }
-    return true;
+    return pieces::all_pieces(
+        k, params, start, end, fraction, [&](double t) { return decide(meshq::at_weighted<meshq::segment_at>{{{sb}, s, t}}); },
+        [&](const segment_param& lo, const segment_param& hi) { return decide(meshq::at_weighted<meshq::segment_point>{{{sb}, s, lo, hi}}); });
 }
 
 } // namespace incidence::pair

@@ -4,10 +4,22 @@
 // Method (exact tiers): the polygon engine (point2_polygon2.cppm): an edge meets the segment
 // (segment2_segment2's signs, degree <= 2), or else the segment lies off the boundary and its
 // end point a decides by exact crossing parity.
+// contains: every point of the segment in the set. The segment is split where it meets an edge
+// (segment_pieces.cppm): t = E x (x - a) / E x (b - a) (degree 2 over 2) where an edge p q crosses
+// it (E = q - p, x = p), or for an edge along the segment's line the parameters of p and q (E a
+// unit axis, L(1) - L(0)); each open piece lies on such an edge or off the boundary, where one
+// point decides by the crossing parity, each comparison multiplied through by the point's weight
+// W > 0: a + t (b - a) for a double t (degree 3), or the exact midpoint (degree 6). The same
+// engine serves contains(polygon3, segment3 | triangle3) in the projection (polygon_segment.cppm,
+// polygon_triangle.cppm).
 // Source: Haines, "Point in polygon strategies", Graphics Gems IV (1994), the crossings test.
 // Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
 // magnitudes lie in [2^-500, 2^500], wrong only when a deciding sign is within 2^-44 of its
 // permanent (tests/query/polygon2_segment2.cpp).
+module;
+#include <cstddef>
+#include <utility>
+#include <vector>
 export module incidence.query:polygon2_segment2;
 import incidence.core;
 import incidence.arith;
@@ -15,6 +27,7 @@ import incidence.shapes;
 import :segment_segment;
 import :segment2_segment2;
 import :point2_polygon2;
+import :segment_pieces;
 
 export namespace incidence::pair {
 
@@ -27,9 +40,150 @@ template <class K>
     return polyq::polygon_meets(k, g, [&](const segment2& e) { return intersects(k, e, s); }, s.a, &xb);
 }
 
+namespace polyq {
+
+// A parameter along a + t (b - a): N = E x (x - a), D = E x (b - a), E = e1 - e0; both negated
+// when `flip`, so that D > 0.
+struct param2 {
+    point2 x, e0, e1;
+    bool flip = false;
+    template <class L>
+    [[nodiscard]] constexpr auto fraction(L lift, point2 a, point2 b) const {
+        const auto E = arith::lift(lift, e1) - arith::lift(lift, e0);
+        const auto A = arith::lift(lift, a);
+        const auto n = arith::cross(E, arith::lift(lift, x) - A), d = arith::cross(E, arith::lift(lift, b) - A);
+        return flip ? std::pair{-n, -d} : std::pair{n, d};
+    }
+};
+// The point a + t (b - a) for a double t, V / W with W = L(1) (a constant lifted as an input).
+struct point2_at {
+    point2 a, b;
+    double t;
+    template <class L>
+    [[nodiscard]] constexpr auto weighted(L lift) const {
+        const auto W = lift(1.0), T = lift(t);
+        const auto A = arith::lift(lift, a);
+        const auto D = arith::lift(lift, b) - A;
+        using U = decltype(W * A.x + T * D.x);
+        return std::pair{arith::v2<U>{W * A.x + T * D.x, W * A.y + T * D.y}, W};
+    }
+};
+// The midpoint of a + t (b - a) between the parameters lo and hi, V / W with W = 2 D_lo D_hi > 0.
+struct point2_mid {
+    point2 a, b;
+    param2 lo, hi;
+    template <class L>
+    [[nodiscard]] constexpr auto weighted(L lift) const {
+        const auto [n1, d1] = lo.fraction(lift, a, b);
+        const auto [n2, d2] = hi.fraction(lift, a, b);
+        const auto W = d1 * d2 + d1 * d2;
+        const auto M = n1 * d2 + n2 * d1;
+        const auto A = arith::lift(lift, a);
+        const auto D = arith::lift(lift, b) - A;
+        using T = decltype(W * A.x + M * D.x);
+        return std::pair{arith::v2<T>{W * A.x + M * D.x, W * A.y + M * D.y}, W};
+    }
+};
+
+// Is the point q = V / W (W > 0, q.weighted(L) gives {V, W}), off the boundary, inside? The
+// crossing test of inside() with every comparison multiplied through by W; edges(f) calls f(p, q)
+// for every edge until it returns true.
+template <class K, class Edges, class Q>
+[[nodiscard]] constexpr bool inside_weighted(K& k, const Edges& edges, const Q& q) {
+    bool odd = false;
+    (void)edges([&](point2 a, point2 b) {
+        auto above = [&](point2 w) { // w.y > V.y / W
+            return k.sgn([=](auto L) {
+                       const auto [V, W] = q.weighted(L);
+                       return L(w.y) * W - V.y;
+                   }) == sign::positive;
+        };
+        const bool a_above = above(a), b_above = above(b);
+        if (a_above == b_above) return false;
+        auto left = [&](point2 w) { // w.x < V.x / W, proven (a skip only)
+            return arith::probe(k, [=](auto L) {
+                       const auto [V, W] = q.weighted(L);
+                       return V.x - L(w.x) * W;
+                   }) == sign::positive;
+        };
+        if (left(a) && left(b)) return false; // both ends left of q: the ray misses the edge
+        // orient2d(a, b, V / W) times W
+        const sign s = k.sgn([=](auto L) {
+            const auto [V, W] = q.weighted(L);
+            return (L(b.x) - L(a.x)) * (V.y - L(a.y) * W) - (L(b.y) - L(a.y)) * (V.x - L(a.x) * W);
+        });
+        if (s == (b_above ? sign::positive : sign::negative)) odd = !odd;
+        return false;
+    });
+    return odd;
+}
+
+// Is every point of the segment a b (a != b, finite) in the set of the polygon whose edges
+// edges(f) lists (f(p, q) until it returns true)?
+template <class K, class Edges>
+[[nodiscard]] constexpr bool segment_inside(K& k, const Edges& edges, point2 a, point2 b) {
+    const point2 ends[2] = {a, b};
+    const box2 sb = bounds(ends, 2);
+    auto fraction = [a, b](auto L, const param2& p) { return p.fraction(L, a, b); };
+    // a unit axis u with u x (b - a) != 0: (1, 0) x d = d.y, (0, 1) x d = -d.x
+    const point2 o{0.0, 0.0}, u = a.y != b.y ? point2{1.0, 0.0} : point2{0.0, 1.0};
+    std::vector<param2> params;
+    std::vector<std::pair<point2, point2>> along; // edges on the segment's line
+    bool met = false;
+    // Keeps p if D != 0 (made positive) and 0 < t < 1; false when D = 0.
+    auto keep = [&](param2 p) {
+        const sign d = k.sgn([=](auto L) { return p.fraction(L, a, b).second; });
+        if (d == sign::zero) return false;
+        p.flip = d == sign::negative;
+        if (pieces::inside_unit(k, fraction, p)) params.push_back(p);
+        return true;
+    };
+    (void)edges([&](point2 p, point2 q) {
+        const point2 v[2] = {p, q};
+        if (!boxes_meet(bounds(v, 2), sb) || !linear_linear(k, as_linear(segment2{a, b}), as_linear(segment2{p, q}))) return false;
+        met = true;
+        if (!keep(param2{p, p, q})) { // parallel to the segment and meeting it: along its line
+            if (p.x != q.x || p.y != q.y) along.push_back({p, q});
+            (void)keep(param2{p, o, u}), (void)keep(param2{q, o, u});
+        }
+        return false;
+    });
+    if (!met) return inside_weighted(k, edges, point2_at{a, b, 0.0}); // wholly off the boundary
+    const bool flip = a.y != b.y ? b.y < a.y : b.x > a.x; // the sign of u x (b - a)
+    const param2 start{a, o, u, flip}, end{b, o, u, flip};
+    auto decide = [&](const auto& q) {
+        for (const auto& [p, r] : along) { // on the edge p r: (V - W p) . (r - p) >= 0 and (V - W r) . (p - r) >= 0
+            auto toward = [&](point2 x, point2 y) {
+                return k.sgn([=](auto L) {
+                    const auto [V, W] = q.weighted(L);
+                    return (V.x - L(x.x) * W) * (L(y.x) - L(x.x)) + (V.y - L(x.y) * W) * (L(y.y) - L(x.y));
+                });
+            };
+            if (toward(p, r) != sign::negative && toward(r, p) != sign::negative) return true;
+        }
+        return inside_weighted(k, edges, q);
+    };
+    return pieces::all_pieces(
+        k, params, start, end, fraction, [&](double t) { return decide(point2_at{a, b, t}); },
+        [&](const param2& lo, const param2& hi) { return decide(point2_mid{a, b, lo, hi}); });
+}
+
+} // namespace polyq
+
+// contains(polygon, segment): every point of the segment in the polygon's set.
+template <class K>
+[[nodiscard]] constexpr bool contains(K& k, const polygon2& g, const segment2& s) {
+    if (!polyq::well_formed(g) || !finite(s.a) || !finite(s.b)) return false;
+    const polyq::box2 gb = polyq::bounds(g);
+    if (!polyq::in_box(gb, s.a) || !polyq::in_box(gb, s.b)) return false; // the set lies in the vertices' box
+    if (s.a.x == s.b.x && s.a.y == s.b.y) return contains(k, g, s.a);
+    return polyq::segment_inside(k, [&](const auto& f) { return polyq::any_edge(g, f); }, s.a, s.b);
+}
+
 } // namespace incidence::pair
 
 // The exact tier's fallback, compiled once in the library (see query.cppm): an importer calls it.
 namespace incidence::pair {
 extern template bool intersects(arith::exact_kernel&, const polygon2&, const segment2&);
+extern template bool contains(arith::exact_kernel&, const polygon2&, const segment2&);
 } // namespace incidence::pair

@@ -144,6 +144,7 @@ export import :kdop_polygon;
 export import :aabb_sphere;
 export import :obb_sphere;
 export import :scene_scale;
+export import :segment_pieces;
 import incidence.core;
 import incidence.arith;
 import incidence.shapes;

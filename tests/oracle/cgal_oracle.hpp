@@ -164,6 +164,15 @@ struct polygon3_data {
     int axis = 2;
 };
 std::vector<std::array<double, 9>> polygon3_triangles(const polygon3_data& g);
+// Containment (cgal_polygon.cpp): a segment in a polygon, by its exact breakpoints with the edges
+// and the pieces' exact midpoints (on an edge, or on the bounded side of an odd number of rings);
+// a segment or a triangle in a 3D polygon, in its plane (CGAL::orientation) and covered by the
+// projection of its triangulation (the segment's pieces' midpoints in a triangle; the triangle's
+// area equal to the sum of the areas of its intersections with the triangles, clipped in GMP
+// rationals).
+bool polygon_contains_segment(const polygon_data& g, const std::array<double, 2>& a, const std::array<double, 2>& b);
+bool polygon3_contains_segment(const polygon3_data& g, const std::array<double, 3>& a, const std::array<double, 3>& b);
+bool polygon3_contains_triangle(const polygon3_data& g, const std::array<double, 9>& t);
 
 // Is `x` the correctly rounded (nearest, ties to even) value of the exact quantity?
 bool is_rounded_ray_triangle_t(const double o[3], const double d[3], const double a[3], const double b[3],

@@ -12,7 +12,7 @@
 // segment_in_mesh_near, segment_in_mesh_random).
 #include <catch2/catch_test_macros.hpp>
 #include <cmath>
-#include <stdexcept>
+#include <optional>
 #include <utility>
 #include "../oracle/cgal_oracle.hpp"
 import incidence;
@@ -100,37 +100,18 @@ TEST_CASE("mesh_segment: contains, fixtures", "[mesh_segment]") {
     CHECK_FALSE(contains(cube, segment3{{0.5, 0.5, 0.5}, {0.5, 0.5, std::nan("")}}));
 }
 TEST_CASE("mesh_segment: contains against the oracle, random and near-degenerate", "[mesh_segment][oracle]") {
-    support::rng r(support::seed() + 29);
     support::mesh_store store;
-    for (int near = 0; near < 2; ++near) {
-        support::tally t{near ? "mesh_segment contains near-degenerate" : "mesh_segment contains random"};
-        long yes = 0, skipped = 0, crossed = 0;
-        for (long i = 0; i < support::cases(10000); ++i) {
+    support::contains_oracle_cases(
+        "mesh_segment", support::cases(10000), approx_bound,
+        [&](support::rng& r, bool near) -> std::optional<std::pair<mesh3, segment3>> {
             const segment3 s = near ? support::segment_in_mesh_near(r, store) : support::segment_in_mesh_random(r, store);
-            const mesh3 m = store.view();
-            bool fin = std::isfinite(s.a.x) && std::isfinite(s.a.y) && std::isfinite(s.a.z) && std::isfinite(s.b.x) && std::isfinite(s.b.y) && std::isfinite(s.b.z);
-            for (const auto& p : m.vertices) fin = fin && std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-            if (!fin) { ++skipped; continue; }
-            bool truth = false;
-            try {
-                truth = support::segment_in_mesh_truth(m, s);
-            } catch (const std::runtime_error&) { // no clean parity segment found
-                ++skipped;
-                continue;
-            }
-            yes += truth;
-            bool meets = false; // the segment meets a triangle: the breakpoints are used
-            for (std::size_t j = 0; j < m.triangles.size() && !meets; ++j) meets = intersects(s, m.triangle(j));
-            crossed += truth && meets;
-            support::check_contains(t, m, s, truth, approx_bound, [&] { return support::shape_str(m) + " " + support::shape_str(s); });
-        }
-        t.print();
-        std::printf("[cases] %s: %ld contained (%ld of them meeting a triangle), %ld skipped\n", t.name.c_str(), yes, crossed, skipped);
-        support::require_contracts(t);
-        CHECK(yes > t.n / 10);
-        CHECK(yes < t.n);
-        if (near) CHECK(crossed > t.n / 10);
-    }
+            bool fin = support::finite_shape(s);
+            for (const auto& p : store.v) fin = fin && std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+            if (!fin) return std::nullopt;
+            return std::pair{store.view(), s};
+        },
+        [](const mesh3& m, const segment3& s) { return support::segment_in_mesh_truth(m, s); },
+        [](const mesh3& m, const segment3& s) { return support::shape_str(m) + " " + support::shape_str(s); });
 }
 TEST_CASE("mesh_segment: oracle, random and near-degenerate", "[mesh_segment][oracle]") {
     support::mesh_oracle<segment3>("mesh_segment", support::cases(20000), approx_bound);

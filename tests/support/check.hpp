@@ -2,6 +2,8 @@
 #pragma once
 #include <functional>
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace support {
@@ -116,6 +118,41 @@ void check_contains(tally& t, const A& a, const B& b, bool truth, double bound, 
         support_margin::margin_kernel mk;
         (void)pair::contains(mk, a, b);
         if (mk.min_rel > bound) say("approximate wrong outside its bound", t.approx_outside_bound);
+    }
+}
+
+
+// contains(a, b) on `n` random and `n` near-degenerate cases of gen(rng, near) (an optional pair;
+// std::nullopt: declined), against truth(a, b) (std::runtime_error: the oracle declined), with
+// every tier contract; both answers must occur, "contained" in at least a twentieth of them.
+template <class Gen, class Truth, class Describe>
+void contains_oracle_cases(const std::string& name, long n, double approx_bound, Gen gen, Truth truth_of, Describe describe) {
+    rng r(seed() + 29);
+    for (int near = 0; near < 2; ++near) {
+        tally t{name + (near ? " contains near-degenerate" : " contains random")};
+        long yes = 0, skipped = 0;
+        for (long i = 0; i < n; ++i) {
+            const auto c = gen(r, near == 1);
+            if (!c) {
+                ++skipped;
+                continue;
+            }
+            const auto& [a, b] = *c;
+            bool truth = false;
+            try {
+                truth = truth_of(a, b);
+            } catch (const std::runtime_error&) {
+                ++skipped;
+                continue;
+            }
+            yes += truth;
+            check_contains(t, a, b, truth, approx_bound, [&] { return describe(a, b); });
+        }
+        t.print();
+        std::printf("[cases] %s: %ld contained, %ld skipped (declined or not finite)\n", t.name.c_str(), yes, skipped);
+        require_contracts(t);
+        CHECK(yes > t.n / 20);
+        CHECK(yes < t.n);
     }
 }
 

@@ -20,6 +20,8 @@
 // The oracle (tests/oracle/cgal_polygon.cpp): the polygon's CGAL constrained triangulation, each
 // triangle against the other shape by the flat, LP or mesh oracle.
 #pragma once
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -190,6 +192,57 @@ std::optional<B> polygon3_random(rng& r, polygon3_store& store, polygon3_store& 
     } else {
         return realise(random_shape<B>(r, false, 0.0), tr);
     }
+}
+
+// For contains(polygon3, segment3 | triangle3): points_in_star's polygon (polygon_cases.hpp) in
+// a small plane (small_frame), and its points in that plane (exact); then one exact scale
+// 2^-500..2^500, the points nudged by ulps a quarter of the time (off the plane, most of them).
+// Random: a star polygon of polygon3_random's kind and points of its plane (a random point of the
+// flat polygon's box, or an eighth of the way to another), at one scale.
+// std::nullopt when the polygon could not be made or a point overflowed.
+inline std::optional<std::array<incidence::point3, 3>> points_in_polygon3(rng& r, polygon3_store& store, bool near) {
+    using namespace incidence;
+    polygon_store flat;
+    std::array<point2, 3> p2{};
+    plane_frame f{};
+    if (near) {
+        p2 = points_in_star(r, flat);
+        f = small_frame(r);
+    } else {
+        auto grid = [&] { return std::ldexp(double(r.integer(-(1 << 20), 1 << 20)), -20); };
+        star_polygon(r, r.integer(1, 3), point2{grid(), grid()}, 0.125, flat);
+        f = small_frame(r, false);
+        const auto box = pair::polyq::bounds(flat.view());
+        auto at = [&] {
+            const double u = box.min.x + (box.max.x - box.min.x) * r.uniform(0, 1), v = box.min.y + (box.max.y - box.min.y) * r.uniform(0, 1);
+            return point2{std::ldexp(std::round(std::ldexp(u, 24)), -24), std::ldexp(std::round(std::ldexp(v, 24)), -24)}; // exact in the plane
+        };
+        p2 = {at(), at(), at()};
+        if (r.coin()) p2[1] = p2[0] + 0.125 * (p2[1] - p2[0]), p2[2] = p2[0] + 0.125 * (p2[2] - p2[0]);
+    }
+    embed(flat, f, store);
+    transform tr = random_transform(r, false, true);
+    tr.t[0] = tr.t[1] = tr.t[2] = 0;
+    scale_polygon(store, tr);
+    if (!store.finish()) return std::nullopt;
+    std::array<point3, 3> out{};
+    for (int i = 0; i < 3; ++i) {
+        const point3 q = f.at(p2[static_cast<std::size_t>(i)]);
+        out[static_cast<std::size_t>(i)] = {std::ldexp(q.x, tr.k), std::ldexp(q.y, tr.k), std::ldexp(q.z, tr.k)};
+        if (r.integer(0, 3) == 0) {
+            point3& o = out[static_cast<std::size_t>(i)];
+            o = {nudge(o.x, r.integer(-2, 2)), nudge(o.y, r.integer(-2, 2)), nudge(o.z, r.integer(-2, 2))};
+        }
+    }
+    for (const auto& q : out)
+        if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z)) return std::nullopt;
+    return out;
+}
+inline bool segment_in_polygon3_truth(const incidence::polygon3& g, const incidence::segment3& s) {
+    return oracle::polygon3_contains_segment(polygon3_data_of(g), {s.a.x, s.a.y, s.a.z}, {s.b.x, s.b.y, s.b.z});
+}
+inline bool triangle_in_polygon3_truth(const incidence::polygon3& g, const incidence::triangle3& t) {
+    return oracle::polygon3_contains_triangle(polygon3_data_of(g), {t.a.x, t.a.y, t.a.z, t.b.x, t.b.y, t.b.z, t.c.x, t.c.y, t.c.z});
 }
 
 // The oracle: some triangle of the polygon's CGAL triangulation meets b.

@@ -13,6 +13,7 @@
 // [-1, 1]^2 of size about 1/2 and a random shape of flat_cases.hpp.
 #pragma once
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -117,6 +118,55 @@ B polygon_random(rng& r, polygon_store& store, polygon_store& other) {
         const auto b = random_shape2<B>(r);
         return realise(b, tr);
     }
+}
+
+// For contains(polygon, segment | triangle), in the polygon's own small coordinates: a star
+// polygon (a hole half of the time) and three points: a ring point X, then along that ring's edge,
+// another ring point, or from the point between the rings (inside) towards X, a little short of or
+// past it, or along a random direction; the last two points are X's partners (a segment's end, a
+// triangle's corners), the second nudged by ulps half of the time.
+inline std::array<incidence::point2, 3> points_in_star(rng& r, polygon_store& store) {
+    using namespace incidence;
+    const point2 centre{small(r), small(r)};
+    const int n = r.integer(1, 3);
+    star_polygon(r, n, centre, 1.0, store);
+    vec2 along{}, unused{};
+    const point2 X = ring_point(r, store, along);
+    const point2 P = centre + vec2{0.375 * n, 0.0}; // between the rings: inside
+    std::array<point2, 3> out{X, X, X};
+    for (int i = 1; i < 3; ++i) switch (r.integer(0, 3)) {
+        case 0: out[i] = X + (r.integer(-4, 4) * 0.25) * along; break;
+        case 1: out[i] = ring_point(r, store, unused); break;
+        case 2: out[0] = P, out[i] = X + (r.integer(-2, 2) * 0.125) * (X - P); break;
+        default: out[i] = P + (r.integer(1, 4) * 0.125) * small_dir2(r); break;
+        }
+    if (r.coin()) out[1] = {nudge(out[1].x, r.integer(-2, 2)), nudge(out[1].y, r.integer(-2, 2))};
+    return out;
+}
+// contains(polygon, segment): points_in_star's first two points, then one exact-or-nudged scale
+// 2^-500..2^500 and translation.
+inline incidence::segment2 segment_in_polygon_near(rng& r, polygon_store& store) {
+    const auto p = points_in_star(r, store);
+    incidence::segment2 s{p[0], p[1]};
+    if (r.coin()) std::swap(s.a, s.b);
+    transform tr = random_transform(r, r.integer(0, 3) == 0, true);
+    realise_polygon(store, tr);
+    return realise(s, tr);
+}
+// A random star polygon (as polygon_random) and a segment between two points of its vertices'
+// box, or an eighth of one.
+inline incidence::segment2 segment_in_polygon_random(rng& r, polygon_store& store) {
+    using namespace incidence;
+    star_polygon(r, r.integer(1, 3), point2{r.uniform(-1, 1), r.uniform(-1, 1)}, 0.125, store);
+    transform tr = random_transform(r, false, true);
+    realise_polygon(store, tr);
+    const auto box = pair::polyq::bounds(store.view());
+    auto at = [&] { return point2{box.min.x + (box.max.x - box.min.x) * r.uniform(0, 1), box.min.y + (box.max.y - box.min.y) * r.uniform(0, 1)}; };
+    const point2 a = at(), b = at();
+    return r.coin() ? segment2{a, b} : segment2{a, a + 0.125 * (b - a)};
+}
+inline bool segment_in_polygon_truth(const incidence::polygon2& g, const incidence::segment2& s) {
+    return oracle::polygon_contains_segment(polygon_data_of(g), {s.a.x, s.a.y}, {s.b.x, s.b.y});
 }
 
 // The oracle's answer (tests/oracle/cgal_polygon.cpp).
