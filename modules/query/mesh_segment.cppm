@@ -173,14 +173,7 @@ template <class K>
     std::vector<segment_param> params;
     std::vector<std::size_t> in_plane; // triangles that may hold a piece of the segment
     bool met = false;
-    // Keeps p if D != 0 (made positive) and 0 < t < 1; false when D = 0.
-    auto keep = [&](segment_param p) {
-        const sign d = k.sgn([=](auto L) { return p.fraction(L, s).second; });
-        if (d == sign::zero) return false;
-        p.flip = d == sign::negative;
-        if (pieces::inside_unit(k, fraction, p)) params.push_back(p);
-        return true;
-    };
+    auto keep = [&](const segment_param& p) { return pieces::keep(k, fraction, p, params); };
     auto at_point = [&](point3 x) { (void)keep(segment_param{x, meshq::origin, u1, meshq::origin, u2}); };
     for (std::size_t i = 0; i < m.triangles.size(); ++i) {
         const triangle3 t = m.triangle(i);

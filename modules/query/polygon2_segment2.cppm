@@ -130,14 +130,7 @@ template <class K, class Edges>
     std::vector<param2> params;
     std::vector<std::pair<point2, point2>> along; // edges on the segment's line
     bool met = false;
-    // Keeps p if D != 0 (made positive) and 0 < t < 1; false when D = 0.
-    auto keep = [&](param2 p) {
-        const sign d = k.sgn([=](auto L) { return p.fraction(L, a, b).second; });
-        if (d == sign::zero) return false;
-        p.flip = d == sign::negative;
-        if (pieces::inside_unit(k, fraction, p)) params.push_back(p);
-        return true;
-    };
+    auto keep = [&](const param2& p) { return pieces::keep(k, fraction, p, params); };
     (void)edges([&](point2 p, point2 q) {
         const point2 v[2] = {p, q};
         if (!boxes_meet(bounds(v, 2), sb) || !linear_linear(k, as_linear(segment2{a, b}), as_linear(segment2{p, q}))) return false;

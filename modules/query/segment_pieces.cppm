@@ -44,6 +44,18 @@ template <class K, class Frac, class P>
            }) == sign::positive;
 }
 
+// Adds the parameter p to `params` (made D > 0 by its `flip`) when it lies strictly inside (0, 1);
+// false when its D is zero (no parameter: the line is parallel to what defined it).
+template <class K, class Frac, class P>
+[[nodiscard]] constexpr bool keep(K& k, const Frac& fraction, P p, std::vector<P>& params) {
+    p.flip = false;
+    const sign d = k.sgn([=](auto L) { return fraction(L, p).second; });
+    if (d == sign::zero) return false;
+    p.flip = d == sign::negative;
+    if (inside_unit(k, fraction, p)) params.push_back(p);
+    return true;
+}
+
 // Sorts `params` (breakpoints strictly inside (0, 1)) and calls at_double(t) or at_midpoint(lo,
 // hi) for one point of every open piece between start (t = 0), the breakpoints and end (t = 1);
 // false as soon as one of them is.
