@@ -2,8 +2,9 @@
 // range (subnormals to 2^1024) and usable in constant evaluation. The magnitude is a fixed-
 // capacity array of 64-bit limbs (no allocation). A product of d inputs has its bits between
 // 2^(-1074 d) and 2^(1024 d), so a polynomial of degree d needs 2098 d bits plus carries when its
-// inputs span the full exponent range: 304 limbs (19,456 bits) cover degree 9, the highest of any
-// predicate here (the vertex searches on an oriented box). Products use 128-bit intermediates;
+// inputs span the full exponent range: 336 limbs (21,504 bits) cover degree 10, the highest of any
+// predicate here (the order of two crossings on a coplanar triangle's edges as seen from a vertex,
+// contains(mesh, triangle)). Products use 128-bit intermediates;
 // everything is plain integer arithmetic, so constexpr.
 // Correct rounding back to binary64 (nearest, ties to even) lives here; quotients are rounded
 // by exact bracketing (rounding.cppm), so no long division is needed.
@@ -20,8 +21,8 @@ import :eft;
 
 export namespace incidence::arith {
 
-inline constexpr int dyadic_limbs = 304;
-inline constexpr int dyadic_max_degree = 9;
+inline constexpr int dyadic_limbs = 336;
+inline constexpr int dyadic_max_degree = 10;
 static_assert(2098 * dyadic_max_degree + 64 <= 64 * dyadic_limbs); // 64 bits of carries: up to 2^64 terms
 
 struct dyadic {

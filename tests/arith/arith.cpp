@@ -137,14 +137,14 @@ long exact_sign_wrong(support::rng& r, long cases) {
     }
     return wrong;
 }
-TEST_CASE("arith: exact signs of degree 2 to 9 over the whole exponent range", "[arith]") {
+TEST_CASE("arith: exact signs of degree 2 to 10 over the whole exponent range", "[arith]") {
     support::rng r(support::seed() + 5);
     const long each = support::cases(300);
-    static_assert(arith::dyadic_max_degree == 9);
+    static_assert(arith::dyadic_max_degree == 10);
     const long wrong = exact_sign_wrong<2>(r, each) + exact_sign_wrong<3>(r, each) + exact_sign_wrong<4>(r, each) +
                        exact_sign_wrong<5>(r, each) + exact_sign_wrong<6>(r, each) + exact_sign_wrong<7>(r, each) +
-                       exact_sign_wrong<8>(r, each) + exact_sign_wrong<9>(r, each);
-    std::printf("[cases] exact signs, degree 2 to %d, full exponent range: %ld, wrong %ld\n", arith::dyadic_max_degree, 8 * each, wrong);
+                       exact_sign_wrong<8>(r, each) + exact_sign_wrong<9>(r, each) + exact_sign_wrong<10>(r, each);
+    std::printf("[cases] exact signs, degree 2 to %d, full exponent range: %ld, wrong %ld\n", arith::dyadic_max_degree, 9 * each, wrong);
     CHECK(wrong == 0);
 }
 
