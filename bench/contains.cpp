@@ -140,6 +140,20 @@ void register_contains(bool near) {
             }
         },
         [](const mesh3& m, const segment3& s) { return support::segment_in_mesh_truth(m, s); });
+    // the mesh around a triangle: triangle_in_mesh_{random,near}, the oracle's chords as truth
+    view_tiers<support::mesh_store, triangle3, true>(
+        "mesh_triangle", near,
+        [](support::rng& r, support::mesh_store& m, support::mesh_store&, bool nr) {
+            for (;;) {
+                const triangle3 t = nr ? support::triangle_in_mesh_near(r, m) : support::triangle_in_mesh_random(r, m);
+                try {
+                    (void)support::triangle_in_mesh_truth(m.view(), t);
+                    return t;
+                } catch (const std::runtime_error&) {
+                }
+            }
+        },
+        [](const mesh3& m, const triangle3& t) { return support::triangle_in_mesh_truth(m, t); });
     // the polygon around a segment (2D and 3D) or a triangle (3D): polygon_cases.hpp's
     // segment_in_polygon_{random,near}, polygon3_cases.hpp's points_in_polygon3, the polygon
     // oracles' exact breakpoints and clipped areas as truth

@@ -274,16 +274,15 @@ bool mesh_intersect(const mesh_data& m, const convex_set& x) {
     return crossing_parity<E>(m, E::Point_3(E::FT((*q)[0]), E::FT((*q)[1]), E::FT((*q)[2])), p, lo, hi);
 }
 
-// Is every point of the segment a b in the mesh's point set? Epeck constructs where it meets
-// each triangle (CGAL::intersection: a point or a segment; a collinear triangle as its three
-// edges), as parameters t = (P - a) . d / d . d; the open intervals between consecutive ones each
-// lie on a triangle or off the surface, and their exact midpoints decide: on a triangle
-// (do_intersect, or an edge's has_on) or inside by crossing parity over Epeck.
-bool mesh_contains_segment(const mesh_data& m, const std::array<double, 3>& a, const std::array<double, 3>& b) {
-    if (!mesh_inside(m, a) || !mesh_inside(m, b)) return false;
+namespace {
+// Is every point of the segment A B (Epeck points, A != B, inside the double box lo3..hi3) in the mesh's
+// point set? Epeck constructs where it meets each triangle (CGAL::intersection: a point or a
+// segment; a collinear triangle as its three edges), as parameters t = (P - A) . d / d . d; the
+// open intervals between consecutive ones each lie on a triangle or off the surface, and their
+// exact midpoints decide: on a triangle (do_intersect, or an edge's has_on) or inside by crossing
+// parity over Epeck. The end points count through the closure (the set is closed).
+bool segment_in_mesh(const mesh_data& m, const K::Point_3& A, const K::Point_3& B, const std::array<double, 3>& lo3, const std::array<double, 3>& hi3) {
     using P = K::Point_3;
-    const P A(a[0], a[1], a[2]), B(b[0], b[1], b[2]);
-    if (A == B) return true;
     const K::Segment_3 S(A, B);
     const K::Vector_3 D = B - A;
     const K::FT dd = D * D;
@@ -301,9 +300,8 @@ bool mesh_contains_segment(const mesh_data& m, const std::array<double, 3>& a, c
     for (const auto& t : m.t) {
         bool apart = false;
         for (unsigned k = 0; k < 3; ++k) {
-            const double lo = std::min(a[k], b[k]), hi = std::max(a[k], b[k]);
             const double x = m.v[t[0]][k], y = m.v[t[1]][k], z = m.v[t[2]][k];
-            apart = apart || std::max({x, y, z}) < lo || std::min({x, y, z}) > hi;
+            apart = apart || std::max({x, y, z}) < lo3[k] || std::min({x, y, z}) > hi3[k];
         }
         if (apart) continue;
         const P p(m.v[t[0]][0], m.v[t[0]][1], m.v[t[0]][2]), q(m.v[t[1]][0], m.v[t[1]][1], m.v[t[1]][2]),
@@ -337,6 +335,97 @@ bool mesh_contains_segment(const mesh_data& m, const std::array<double, 3>& a, c
         if (on) continue;
         const std::array<double, 3> approx{CGAL::to_double(M.x()), CGAL::to_double(M.y()), CGAL::to_double(M.z())};
         if (!crossing_parity<K>(m, M, approx, lo, hi)) return false;
+    }
+    return true;
+}
+} // namespace
+
+bool mesh_contains_segment(const mesh_data& m, const std::array<double, 3>& a, const std::array<double, 3>& b) {
+    if (!mesh_inside(m, a) || !mesh_inside(m, b)) return false;
+    if (a == b) return true;
+    std::array<double, 3> lo{}, hi{};
+    for (unsigned k = 0; k < 3; ++k) lo[k] = std::min(a[k], b[k]), hi[k] = std::max(a[k], b[k]);
+    return segment_in_mesh(m, K::Point_3(a[0], a[1], a[2]), K::Point_3(b[0], b[1], b[2]), lo, hi);
+}
+
+// Is every point of the triangle a b c in the mesh's point set? Its vertices by mesh_inside; a
+// collinear one as its three edges. Otherwise the surface's traces on it (CGAL::intersection of
+// it with every triangle: points, segments, and the edges of coplanar overlaps) cut it into
+// cells; their vertices are the traces' end points and every crossing of two traces
+// (CGAL::intersection of segments, all pairs). The directions of those vertices from a, s along b
+// c (exact rationals), sorted; every cell is met by the chord from a to b + s (c - b) for an s
+// strictly between two consecutive ones, and the triangle is in the (closed) set iff each such
+// chord, at the exact midpoints, is (segment_in_mesh).
+bool mesh_contains_triangle(const mesh_data& m, const std::array<double, 3>& a, const std::array<double, 3>& b, const std::array<double, 3>& c) {
+    if (!mesh_inside(m, a) || !mesh_inside(m, b) || !mesh_inside(m, c)) return false;
+    using P = K::Point_3;
+    const P A(a[0], a[1], a[2]), B(b[0], b[1], b[2]), C(c[0], c[1], c[2]);
+    if (CGAL::collinear(A, B, C)) return mesh_contains_segment(m, a, b) && mesh_contains_segment(m, b, c) && mesh_contains_segment(m, c, a);
+    std::array<double, 3> lo{}, hi{};
+    for (unsigned k = 0; k < 3; ++k) lo[k] = std::min({a[k], b[k], c[k]}), hi[k] = std::max({a[k], b[k], c[k]});
+    const K::Triangle_3 T(A, B, C);
+    std::vector<K::Segment_3> traces;
+    std::vector<P> vertices;
+    auto add_segment = [&](const P& x, const P& y) {
+        vertices.push_back(x), vertices.push_back(y);
+        if (x != y) traces.emplace_back(x, y);
+    };
+    for (const auto& t : m.t) {
+        bool apart = false;
+        for (unsigned k = 0; k < 3; ++k) {
+            const double x = m.v[t[0]][k], y = m.v[t[1]][k], z = m.v[t[2]][k];
+            apart = apart || std::max({x, y, z}) < lo[k] || std::min({x, y, z}) > hi[k];
+        }
+        if (apart) continue;
+        const P p(m.v[t[0]][0], m.v[t[0]][1], m.v[t[0]][2]), q(m.v[t[1]][0], m.v[t[1]][1], m.v[t[1]][2]),
+            r(m.v[t[2]][0], m.v[t[2]][1], m.v[t[2]][2]);
+        if (CGAL::collinear(p, q, r)) {
+            for (const auto& [x, y] : {std::pair{p, q}, std::pair{q, r}, std::pair{r, p}}) {
+                if (x == y) {
+                    if (CGAL::do_intersect(T, x)) vertices.push_back(x);
+                    continue;
+                }
+                const auto res = CGAL::intersection(T, K::Segment_3(x, y));
+                if (!res) continue;
+                if (const P* v = boost::get<P>(&*res)) vertices.push_back(*v);
+                else if (const K::Segment_3* e = boost::get<K::Segment_3>(&*res)) add_segment(e->source(), e->target());
+            }
+            continue;
+        }
+        const auto res = CGAL::intersection(T, K::Triangle_3(p, q, r));
+        if (!res) continue;
+        if (const P* v = boost::get<P>(&*res)) vertices.push_back(*v);
+        else if (const K::Segment_3* e = boost::get<K::Segment_3>(&*res)) add_segment(e->source(), e->target());
+        else if (const K::Triangle_3* f = boost::get<K::Triangle_3>(&*res)) {
+            for (int i = 0; i < 3; ++i) add_segment(f->vertex(i), f->vertex(i + 1));
+        } else if (const auto* poly = boost::get<std::vector<P>>(&*res)) {
+            for (std::size_t i = 0; i < poly->size(); ++i) add_segment((*poly)[i], (*poly)[(i + 1) % poly->size()]);
+        }
+    }
+    for (std::size_t i = 0; i < traces.size(); ++i)
+        for (std::size_t j = i + 1; j < traces.size(); ++j) {
+            const auto res = CGAL::intersection(traces[i], traces[j]);
+            if (!res) continue;
+            if (const P* v = boost::get<P>(&*res)) vertices.push_back(*v);
+            else if (const K::Segment_3* e = boost::get<K::Segment_3>(&*res)) vertices.push_back(e->source()), vertices.push_back(e->target());
+        }
+    // s of the line from A through V on B C, in the plane seen along an axis where T's normal is nonzero
+    const K::Vector_3 n = CGAL::cross_product(B - A, C - A);
+    const int axis = n.x() != 0 ? 0 : (n.y() != 0 ? 1 : 2);
+    auto cross = [axis](const K::Vector_3& u, const K::Vector_3& v) { return CGAL::cross_product(u, v)[axis]; };
+    std::vector<K::FT> ss{K::FT(0), K::FT(1)};
+    for (const P& V : vertices) {
+        if (V == A) continue;
+        const K::FT den = cross(V - A, C - B);
+        if (den == 0) continue;
+        const K::FT s = cross(B - A, V - A) / den;
+        if (s > 0 && s < 1) ss.push_back(s);
+    }
+    std::sort(ss.begin(), ss.end());
+    ss.erase(std::unique(ss.begin(), ss.end()), ss.end());
+    for (std::size_t i = 0; i + 1 < ss.size(); ++i) {
+        const K::FT s = (ss[i] + ss[i + 1]) / 2;
+        if (!segment_in_mesh(m, A, B + s * (C - B), lo, hi)) return false;
     }
     return true;
 }

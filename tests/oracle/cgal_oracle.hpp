@@ -128,6 +128,8 @@ bool any_triangle_meets(const mesh_data& soup, const convex_set& x);
 bool mesh_mesh_intersect(const mesh_data& a, const mesh_data& b);
 // Is every point of the segment a b in the mesh's point set (exact breakpoints and midpoints)?
 bool mesh_contains_segment(const mesh_data& m, const std::array<double, 3>& a, const std::array<double, 3>& b);
+// Is every point of the triangle a b c in it (the traces' vertices, chords between their directions)?
+bool mesh_contains_triangle(const mesh_data& m, const std::array<double, 3>& a, const std::array<double, 3>& b, const std::array<double, 3>& c);
 
 // The same in the plane: a point, segment, ray or line (v: a point's 2 values, a segment's end
 // points, a ray's or line's origin and direction; degenerate ones are Point_2), CGAL's 2D

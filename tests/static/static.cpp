@@ -176,6 +176,10 @@ static_assert(intersects(support::dented, Q) && contains(support::dented, point3
 // contains(mesh, segment): the segment split where it meets the surface, each piece decided at its
 // exact midpoint (up to the top face; across the dent)
 static_assert(contains(support::cube, segment3{{0.5, 0.5, 0.5}, {0.5, 0.5, 1}}) && !contains(support::dented, segment3{{0.1, 0.5, 0.9}, {0.9, 0.5, 0.9}}));
+// contains(mesh, triangle): the sweep by chords from a vertex; on the top face (every vertex on the
+// surface: the chords' lines followed from outside), under the dent up to its apex, across the dent
+static_assert(contains(support::cube, triangle3{{0, 0, 1}, {1, 0, 1}, {0, 1, 1}}) && contains(support::dented, triangle3{{0, 0, 0}, {1, 1, 0}, {0.5, 0.5, 0.25}}) &&
+              !contains(support::dented, triangle3{{0.1, 0.1, 0.5}, {0.9, 0.1, 0.5}, {0.5, 0.9, 0.5}}));
 // a half-space set against a mesh: inside it (no triangle meets it: the parity of its vertex), above
 // the dent, a flat one on the dent's apex and one ulp above
 static_assert(intersects(kdop<6>{{0.4, 0.4, 0.4}, {0.6, 0.6, 0.6}}, support::cube) && !intersects(support::dented, kdop<6>{{0.45, 0.45, 0.5}, {0.55, 0.55, 0.9}}));

@@ -224,6 +224,89 @@ inline incidence::segment3 segment_in_mesh_random(rng& r, mesh_store& store) {
 inline bool segment_in_mesh_truth(const incidence::mesh3& m, const incidence::segment3& s) {
     return oracle::mesh_contains_segment(mesh_data_of(m), {s.a.x, s.a.y, s.a.z}, {s.b.x, s.b.y, s.b.z});
 }
+// A star mesh and a triangle touching its surface: the centre and two surface points; three
+// surface points; a surface point, a step along a triangle's edge and the centre; or one of the
+// mesh's own triangles (on the surface), with a vertex pulled towards the centre or pushed out
+// by a quarter, or its third vertex moved to the centre; vertices nudged by ulps or not, the
+// order rotated or reversed; then one exact-or-nudged scale 2^-500..2^500 and translation.
+inline incidence::triangle3 triangle_in_mesh_near(rng& r, mesh_store& store) {
+    using namespace incidence;
+    const point3 centre = small_point(r);
+    star_mesh(r, r.integer(1, 2), centre, 1.0, store);
+    vec3 along{}, unused{};
+    const point3 X = surface_point(r, store, along);
+    triangle3 t{};
+    switch (r.integer(0, 3)) {
+    case 0: t = {centre, X, surface_point(r, store, unused)}; break;
+    case 1: t = {X, surface_point(r, store, unused), surface_point(r, store, unused)}; break;
+    case 2: t = {X, X + along * (r.integer(-4, 4) * 0.25), centre}; break;
+    default: {
+        const auto& f = store.t[static_cast<std::size_t>(r.integer(0, static_cast<int>(store.t.size()) - 1))];
+        t = {store.v[f[0]], store.v[f[1]], store.v[f[2]]};
+        switch (r.integer(0, 3)) {
+        case 0: break;
+        case 1: t.c = t.c + (centre - t.c) * 0.25; break;
+        case 2: t.c = t.c + (t.c - centre) * 0.25; break;
+        default: t.c = centre; break;
+        }
+    }
+    }
+    if (r.coin()) t.c = {nudge(t.c.x, r.integer(-2, 2)), nudge(t.c.y, r.integer(-2, 2)), nudge(t.c.z, r.integer(-2, 2))};
+    for (int i = r.integer(0, 2); i > 0; --i) t = {t.b, t.c, t.a};
+    if (r.coin()) std::swap(t.b, t.c);
+    transform tr = random_transform(r, r.integer(0, 3) == 0, true);
+    realise_mesh(store, tr);
+    return realise(t, tr);
+}
+// A random star mesh and a triangle of three points of its vertices' box, or an eighth of one.
+inline incidence::triangle3 triangle_in_mesh_random(rng& r, mesh_store& store) {
+    using namespace incidence;
+    mesh_store other;
+    (void)mesh_random<point3>(r, store, other);
+    const aabb3 box = incidence::pair::meshq::bounds(store.view());
+    auto at = [&] {
+        return point3{box.min.x + (box.max.x - box.min.x) * r.uniform(0, 1), box.min.y + (box.max.y - box.min.y) * r.uniform(0, 1),
+                      box.min.z + (box.max.z - box.min.z) * r.uniform(0, 1)};
+    };
+    const point3 a = at(), b = at(), c = at();
+    if (r.coin()) return {a, b, c};
+    return {a, a + (b - a) * 0.125, a + (c - a) * 0.125}; // a small one: more of them inside
+}
+// Two star meshes, the second's centre a few quarters off the first's, kept as one unchecked
+// surface that crosses itself (their common part has even parity), and a triangle on or near
+// either's surface (one of its triangles, possibly with a vertex moved, or surface points of both):
+// lines of the other surface then cross the covering triangle's edges.
+inline incidence::triangle3 triangle_in_crossed_meshes(rng& r, mesh_store& store) {
+    using namespace incidence;
+    const point3 centre = small_point(r);
+    const point3 other_centre = centre + vec3{r.integer(-3, 3) * 0.25, r.integer(-3, 3) * 0.25, r.integer(-3, 3) * 0.25};
+    mesh_store a, b;
+    star_mesh(r, 1, centre, 1.0, a);
+    star_mesh(r, 1, other_centre, 1.0, b);
+    vec3 unused{};
+    triangle3 t{};
+    if (r.coin()) {
+        const mesh_store& from = r.coin() ? a : b;
+        const auto& f = from.t[static_cast<std::size_t>(r.integer(0, static_cast<int>(from.t.size()) - 1))];
+        t = {from.v[f[0]], from.v[f[1]], from.v[f[2]]};
+        if (r.coin()) t.c = r.coin() ? t.c + (centre - t.c) * 0.25 : surface_point(r, r.coin() ? a : b, unused);
+    } else {
+        t = {surface_point(r, a, unused), surface_point(r, b, unused), r.coin() ? centre : surface_point(r, r.coin() ? a : b, unused)};
+    }
+    store = a;
+    const auto base = static_cast<std::uint32_t>(store.v.size());
+    store.v.insert(store.v.end(), b.v.begin(), b.v.end());
+    for (const auto& f : b.t) store.t.push_back({f[0] + base, f[1] + base, f[2] + base});
+    for (int i = r.integer(0, 2); i > 0; --i) t = {t.b, t.c, t.a};
+    transform tr = random_transform(r, false, true);
+    realise_mesh(store, tr);
+    return realise(t, tr);
+}
+// The oracle's answer to contains(m, t) (tests/oracle/cgal_mesh.cpp; std::runtime_error when it
+// finds no clean parity segment).
+inline bool triangle_in_mesh_truth(const incidence::mesh3& m, const incidence::triangle3& t) {
+    return oracle::mesh_contains_triangle(mesh_data_of(m), {t.a.x, t.a.y, t.a.z}, {t.b.x, t.b.y, t.b.z}, {t.c.x, t.c.y, t.c.z});
+}
 // The oracle's answer (tests/oracle/cgal_mesh.cpp).
 template <class B>
 bool mesh_truth(const incidence::mesh3& m, const B& b) {
