@@ -57,6 +57,7 @@ import :triangle_triangle;
 import :point_triangle;
 import :point_tetrahedron;
 import :segment_pieces;
+import :segment_triangle;
 
 export namespace incidence::pair {
 
@@ -155,6 +156,7 @@ struct sweep_line {
     sweep_end e0{}, e1{};
     int tau = 0;
     int band = -1;
+    bool near = true; // from a triangle meeting t
 };
 // A line crossed by the chord at t = N / D (D > 0 with flip); pos: its group along the chord.
 struct chord_cut {
@@ -242,6 +244,37 @@ template <class K>
         at.flip = k.sgn([=](auto L) { return at.fraction(L, e).second; }) == sign::negative;
         return sweep_end{false, p, q, at};
     };
+    // Is the end e (a vertex in H, or where an edge crosses H) in the closed triangle? Only such
+    // points are vertices of the cells the sweep must meet; the others matter only where the
+    // chord's line is followed from outside (a line's end on it would break the half-open count).
+    const sign turn = k.sgn([=](auto L) {
+        const auto P = arith::lift(L, A);
+        return cross_along(axis, arith::lift(L, B) - P, arith::lift(L, C) - P);
+    });
+    auto in_triangle = [&](const sweep_end& e) {
+        auto side = [&](point3 u0, point3 u1) {
+            if (e.vertex) {
+                const point3 p = e.p;
+                return k.sgn([=](auto L) {
+                    const auto U = arith::lift(L, u0);
+                    return cross_along(axis, arith::lift(L, u1) - U, arith::lift(L, p) - U);
+                });
+            }
+            const segment_param at = e.at;
+            const segment3 pq{e.p, e.q};
+            return k.sgn([=](auto L) { // (x - u0) D = (x - a) D - (u0 - a) D
+                const auto F = offset_on_edge(L, at, pq, A);
+                const auto d = at.fraction(L, pq).second;
+                const auto U = arith::lift(L, u0) - arith::lift(L, A);
+                using T = decltype(F.x - U.x * d);
+                return cross_along(axis, arith::lift(L, u1) - arith::lift(L, u0), arith::v3<T>{F.x - U.x * d, F.y - U.y * d, F.z - U.z * d});
+            });
+        };
+        const point3 corner[3] = {A, B, C};
+        for (int j = 0; j < 3; ++j)
+            if (const sign x = side(corner[j], corner[(j + 1) % 3]); x != sign::zero && x != turn) return false;
+        return true;
+    };
     auto add_face = [&](std::size_t i, bool is_near) {
         const triangle3 f = m.triangle(i);
         const point3 v[3] = {f.a, f.b, f.c};
@@ -257,17 +290,34 @@ template <class K>
                             return ax == 0 ? n.x : (ax == 1 ? n.y : n.z);
                         }) == sign::zero;
         if (collinear) return; // no interior: neither crossed nor covering
-        std::vector<sweep_dir>& into = is_near ? dirs : far_dirs;
         for (int j = 0; j < 3; ++j) {
             const point3 p = v[j], q = v[(j + 1) % 3];
+            // a point in the triangle goes to dirs; one outside only to far_dirs, and only when the
+            // chord's line is followed from outside
+            auto to = [&](const sweep_end& e) -> std::vector<sweep_dir>* {
+                if (is_near && in_triangle(e)) return &dirs;
+                return free_apex ? nullptr : &far_dirs;
+            };
             if (o[j] == sign::zero && !(p.x == A.x && p.y == A.y && p.z == A.z)) // a vertex in H: the plane through a, p and e_k
-                keep_dir(sweep_dir{segment_param{A, A, p, origin, ek}}, into);
+                if (std::vector<sweep_dir>* d = to(sweep_end{true, p})) keep_dir(sweep_dir{segment_param{A, A, p, origin, ek}}, *d);
             if ((o[j] == sign::positive && o[(j + 1) % 3] == sign::negative) || (o[j] == sign::negative && o[(j + 1) % 3] == sign::positive))
-                keep_dir(sweep_dir{segment_param{A, A, p, A, q}}, into); // an edge across H: the plane through a, p, q
+                if (std::vector<sweep_dir>* d = to(crossing_end(p, q))) // an edge across H: the plane through a, p, q
+                    keep_dir(sweep_dir{segment_param{A, A, p, A, q}}, *d);
         }
+        // where an edge in H meets b c, when it does (a cell's vertex)
+        auto meets_bc = [&](point3 p, point3 q) {
+            auto cr = [&](point3 x0, point3 x1, point3 y) {
+                return k.sgn([=](auto L) {
+                    const auto X = arith::lift(L, x0);
+                    return cross_along(axis, arith::lift(L, x1) - X, arith::lift(L, y) - X);
+                });
+            };
+            const sign sp = cr(B, C, p), sq = cr(B, C, q), sb = cr(p, q, B), sc = cr(p, q, C);
+            return sp != sq && sb != sc && !(sp == sign::zero && sq == sign::zero);
+        };
         auto in_plane_edge = [&](point3 p, point3 q, int tau, int band) {
-            lines.push_back(sweep_line{1, p, q, q, sweep_end{true, p}, sweep_end{true, q}, tau, band});
-            if (is_near) keep_dir(sweep_dir{segment_param{p, p, q, origin, ek}}, dirs); // where it meets b c
+            lines.push_back(sweep_line{1, p, q, q, sweep_end{true, p}, sweep_end{true, q}, tau, band, is_near});
+            if (is_near && meets_bc(p, q)) keep_dir(sweep_dir{segment_param{p, p, q, origin, ek}}, dirs);
         };
         if (zeros == 3) { // covering
             const int band = bands++;
@@ -290,8 +340,9 @@ template <class K>
             for (int j = 0; j < 3; ++j)
                 if (o[j] != o[(j + 1) % 3]) ends[n++] = crossing_end(v[j], v[(j + 1) % 3]);
         }
-        lines.push_back(sweep_line{0, v[0], v[1], v[2], ends[0], ends[1], 1, -1});
-        if (is_near) keep_dir(sweep_dir{segment_param{v[0], v[0], v[1], v[0], v[2]}}, dirs); // where b c crosses its plane
+        lines.push_back(sweep_line{0, v[0], v[1], v[2], ends[0], ends[1], 1, -1, is_near});
+        if (is_near && intersects(k, segment3{B, C}, f)) // where b c crosses it
+            keep_dir(sweep_dir{segment_param{v[0], v[0], v[1], v[0], v[2]}}, dirs);
     };
     if (free_apex) {
         for (const std::size_t i : near) add_face(i, true);
@@ -300,15 +351,17 @@ template <class K>
         for (const std::size_t i : near) is_near[i] = 1;
         for (std::size_t i = 0; i < m.triangles.size(); ++i) add_face(i, is_near[i] != 0);
     }
-    // crossings of a covering triangle's edge by another line, strictly inside both
+    if (gave_up(k)) return sweep_result::outside; // (a filter that failed here would find every triangle in H)
+    // crossings of a covering triangle's edge by another line, strictly inside both (lines of
+    // triangles meeting t: no other line has a point in t)
     const std::size_t n_lines = lines.size();
     for (std::size_t i = 0; i < n_lines && bands > 0; ++i) {
-        if (lines[i].band < 0) continue;
+        if (lines[i].band < 0 || !lines[i].near) continue;
         const point3 p = lines[i].a0, q = lines[i].a1;
         const segment3 e{p, q};
         for (std::size_t j = 0; j < n_lines; ++j) {
             const sweep_line& l = lines[j];
-            if (j == i || l.band == lines[i].band) continue;
+            if (j == i || l.band == lines[i].band || !l.near) continue;
             if (l.kind == 0) {
                 const point3 g0 = l.a0, g1 = l.a1, g2 = l.a2;
                 const sign sp = k.sgn([=](auto L) { return poly::orient3d(L, g0, g1, g2, p); });

@@ -22,6 +22,7 @@ export namespace incidence::pair::pieces {
 // unsorted, never reads out of range).
 template <class T, class Less>
 constexpr void merge_sort(std::vector<T>& v, const Less& less) {
+    if (v.size() < 2) return; // (no scratch allocation for what is already sorted)
     std::vector<T> tmp(v.size());
     for (std::size_t w = 1; w < v.size(); w *= 2) {
         for (std::size_t lo = 0; lo < v.size(); lo += 2 * w) {
