@@ -275,6 +275,20 @@ bool mesh_intersect(const mesh_data& m, const convex_set& x) {
 }
 
 namespace {
+// Does the triangle t's vertices' box miss the box lo..hi (comparisons)?
+bool apart(const mesh_data& m, const std::array<unsigned, 3>& t, const std::array<double, 3>& lo, const std::array<double, 3>& hi) {
+    for (unsigned k = 0; k < 3; ++k) {
+        const double x = m.v[t[0]][k], y = m.v[t[1]][k], z = m.v[t[2]][k];
+        if (std::max({x, y, z}) < lo[k] || std::min({x, y, z}) > hi[k]) return true;
+    }
+    return false;
+}
+// The triangle t's vertices as Epeck points.
+std::array<K::Point_3, 3> corners(const mesh_data& m, const std::array<unsigned, 3>& t) {
+    std::array<K::Point_3, 3> c;
+    for (unsigned j = 0; j < 3; ++j) c[j] = K::Point_3(m.v[t[j]][0], m.v[t[j]][1], m.v[t[j]][2]);
+    return c;
+}
 // Is every point of the segment A B (Epeck points, A != B, inside the double box lo3..hi3) in the mesh's
 // point set? Epeck constructs where it meets each triangle (CGAL::intersection: a point or a
 // segment; a collinear triangle as its three edges), as parameters t = (P - A) . d / d . d; the
@@ -298,14 +312,8 @@ bool segment_in_mesh(const mesh_data& m, const K::Point_3& A, const K::Point_3& 
         }
     };
     for (const auto& t : m.t) {
-        bool apart = false;
-        for (unsigned k = 0; k < 3; ++k) {
-            const double x = m.v[t[0]][k], y = m.v[t[1]][k], z = m.v[t[2]][k];
-            apart = apart || std::max({x, y, z}) < lo3[k] || std::min({x, y, z}) > hi3[k];
-        }
-        if (apart) continue;
-        const P p(m.v[t[0]][0], m.v[t[0]][1], m.v[t[0]][2]), q(m.v[t[1]][0], m.v[t[1]][1], m.v[t[1]][2]),
-            r(m.v[t[2]][0], m.v[t[2]][1], m.v[t[2]][2]);
+        if (apart(m, t, lo3, hi3)) continue;
+        const auto [p, q, r] = corners(m, t);
         if (!CGAL::collinear(p, q, r)) {
             const K::Triangle_3 T(p, q, r);
             add(CGAL::intersection(S, T));
@@ -371,14 +379,8 @@ bool mesh_contains_triangle(const mesh_data& m, const std::array<double, 3>& a, 
         if (x != y) traces.emplace_back(x, y);
     };
     for (const auto& t : m.t) {
-        bool apart = false;
-        for (unsigned k = 0; k < 3; ++k) {
-            const double x = m.v[t[0]][k], y = m.v[t[1]][k], z = m.v[t[2]][k];
-            apart = apart || std::max({x, y, z}) < lo[k] || std::min({x, y, z}) > hi[k];
-        }
-        if (apart) continue;
-        const P p(m.v[t[0]][0], m.v[t[0]][1], m.v[t[0]][2]), q(m.v[t[1]][0], m.v[t[1]][1], m.v[t[1]][2]),
-            r(m.v[t[2]][0], m.v[t[2]][1], m.v[t[2]][2]);
+        if (apart(m, t, lo, hi)) continue;
+        const auto [p, q, r] = corners(m, t);
         if (CGAL::collinear(p, q, r)) {
             for (const auto& [x, y] : {std::pair{p, q}, std::pair{q, r}, std::pair{r, p}}) {
                 if (x == y) {

@@ -205,16 +205,21 @@ inline incidence::segment3 segment_in_mesh_near(rng& r, mesh_store& store) {
     realise_mesh(store, tr);
     return realise(s, tr);
 }
-// A random star mesh and a segment between two points of its vertices' box, or an eighth of one.
-inline incidence::segment3 segment_in_mesh_random(rng& r, mesh_store& store) {
+// A random star mesh in store (mesh_random), and a function drawing points of its vertices' box.
+inline auto random_mesh_and_box_points(rng& r, mesh_store& store) {
     using namespace incidence;
     mesh_store other;
     (void)mesh_random<point3>(r, store, other);
     const aabb3 box = incidence::pair::meshq::bounds(store.view());
-    auto at = [&] {
+    return [&r, box] {
         return point3{box.min.x + (box.max.x - box.min.x) * r.uniform(0, 1), box.min.y + (box.max.y - box.min.y) * r.uniform(0, 1),
                       box.min.z + (box.max.z - box.min.z) * r.uniform(0, 1)};
     };
+}
+// A random star mesh and a segment between two points of its vertices' box, or an eighth of one.
+inline incidence::segment3 segment_in_mesh_random(rng& r, mesh_store& store) {
+    using namespace incidence;
+    const auto at = random_mesh_and_box_points(r, store);
     const point3 a = at(), b = at();
     if (r.coin()) return {a, b};
     return {a, a + (b - a) * 0.125}; // a short one: more of them inside
@@ -261,13 +266,7 @@ inline incidence::triangle3 triangle_in_mesh_near(rng& r, mesh_store& store) {
 // A random star mesh and a triangle of three points of its vertices' box, or an eighth of one.
 inline incidence::triangle3 triangle_in_mesh_random(rng& r, mesh_store& store) {
     using namespace incidence;
-    mesh_store other;
-    (void)mesh_random<point3>(r, store, other);
-    const aabb3 box = incidence::pair::meshq::bounds(store.view());
-    auto at = [&] {
-        return point3{box.min.x + (box.max.x - box.min.x) * r.uniform(0, 1), box.min.y + (box.max.y - box.min.y) * r.uniform(0, 1),
-                      box.min.z + (box.max.z - box.min.z) * r.uniform(0, 1)};
-    };
+    const auto at = random_mesh_and_box_points(r, store);
     const point3 a = at(), b = at(), c = at();
     if (r.coin()) return {a, b, c};
     return {a, a + (b - a) * 0.125, a + (c - a) * 0.125}; // a small one: more of them inside
