@@ -182,16 +182,26 @@ B mesh_random(rng& r, mesh_store& store, mesh_store& other) {
     }
 }
 
+// A star mesh of grid size 1 or 2 about a small centre, and a point X of its surface with a step
+// `along` an edge of X's triangle (surface_point): what the near-degenerate generators start from.
+struct star_near {
+    incidence::point3 centre, X;
+    incidence::vec3 along;
+};
+inline star_near star_mesh_near(rng& r, mesh_store& store) {
+    star_near n{small_point(r), {}, {}};
+    star_mesh(r, r.integer(1, 2), n.centre, 1.0, store);
+    n.X = surface_point(r, store, n.along);
+    return n;
+}
 // A star mesh (support/mesh_cases.hpp, star-shaped about its centre) and a segment from the
 // centre to a surface point X (inside, touching), from X along a triangle's edge in its plane,
 // between two surface points, or from halfway to X to a little short of or past X; the far end
 // nudged by ulps or not; then one exact-or-nudged scale 2^-500..2^500 and translation.
 inline incidence::segment3 segment_in_mesh_near(rng& r, mesh_store& store) {
     using namespace incidence;
-    const point3 centre = small_point(r);
-    star_mesh(r, r.integer(1, 2), centre, 1.0, store);
-    vec3 along{}, unused{};
-    const point3 X = surface_point(r, store, along);
+    const auto [centre, X, along] = star_mesh_near(r, store);
+    vec3 unused{};
     segment3 s{};
     switch (r.integer(0, 3)) {
     case 0: s = {centre, X}; break;
@@ -236,10 +246,8 @@ inline bool segment_in_mesh_truth(const incidence::mesh3& m, const incidence::se
 // order rotated or reversed; then one exact-or-nudged scale 2^-500..2^500 and translation.
 inline incidence::triangle3 triangle_in_mesh_near(rng& r, mesh_store& store) {
     using namespace incidence;
-    const point3 centre = small_point(r);
-    star_mesh(r, r.integer(1, 2), centre, 1.0, store);
-    vec3 along{}, unused{};
-    const point3 X = surface_point(r, store, along);
+    const auto [centre, X, along] = star_mesh_near(r, store);
+    vec3 unused{};
     triangle3 t{};
     switch (r.integer(0, 3)) {
     case 0: t = {centre, X, surface_point(r, store, unused)}; break;
