@@ -247,19 +247,17 @@ template <class K>
     // Is the end e (a vertex in H, or where an edge crosses H) in the closed triangle? Only such
     // points are vertices of the cells the sweep must meet; the others matter only where the
     // chord's line is followed from outside (a line's end on it would break the half-open count).
-    const sign turn = k.sgn([=](auto L) {
-        const auto P = arith::lift(L, A);
-        return cross_along(axis, arith::lift(L, B) - P, arith::lift(L, C) - P);
-    });
+    // the side of y from the line x0 x1 in H, seen along the axis (degree 2)
+    auto side_of = [&](point3 x0, point3 x1, point3 y) {
+        return k.sgn([=](auto L) {
+            const auto X = arith::lift(L, x0);
+            return cross_along(axis, arith::lift(L, x1) - X, arith::lift(L, y) - X);
+        });
+    };
+    const sign turn = side_of(A, B, C);
     auto in_triangle = [&](const sweep_end& e) {
         auto side = [&](point3 u0, point3 u1) {
-            if (e.vertex) {
-                const point3 p = e.p;
-                return k.sgn([=](auto L) {
-                    const auto U = arith::lift(L, u0);
-                    return cross_along(axis, arith::lift(L, u1) - U, arith::lift(L, p) - U);
-                });
-            }
+            if (e.vertex) return side_of(u0, u1, e.p);
             const segment_param at = e.at;
             const segment3 pq{e.p, e.q};
             return k.sgn([=](auto L) { // (x - u0) D = (x - a) D - (u0 - a) D
@@ -306,13 +304,7 @@ template <class K>
         }
         // where an edge in H meets b c, when it does (a cell's vertex)
         auto meets_bc = [&](point3 p, point3 q) {
-            auto cr = [&](point3 x0, point3 x1, point3 y) {
-                return k.sgn([=](auto L) {
-                    const auto X = arith::lift(L, x0);
-                    return cross_along(axis, arith::lift(L, x1) - X, arith::lift(L, y) - X);
-                });
-            };
-            const sign sp = cr(B, C, p), sq = cr(B, C, q), sb = cr(p, q, B), sc = cr(p, q, C);
+            const sign sp = side_of(B, C, p), sq = side_of(B, C, q), sb = side_of(p, q, B), sc = side_of(p, q, C);
             return sp != sq && sb != sc && !(sp == sign::zero && sq == sign::zero);
         };
         auto in_plane_edge = [&](point3 p, point3 q, int tau, int band) {
@@ -374,13 +366,7 @@ template <class K>
                 keep_dir(sweep_dir{segment_param{g0, g0, g1, g0, g2}, true, e}, dirs);
             } else {
                 const point3 r = l.a0, w = l.a1;
-                auto cr = [&](point3 x0, point3 x1, point3 y) {
-                    return k.sgn([=](auto L) {
-                        const auto X = arith::lift(L, x0);
-                        return cross_along(axis, arith::lift(L, x1) - X, arith::lift(L, y) - X);
-                    });
-                };
-                const sign a1 = cr(p, q, r), a2 = cr(p, q, w), b1 = cr(r, w, p), b2 = cr(r, w, q);
+                const sign a1 = side_of(p, q, r), a2 = side_of(p, q, w), b1 = side_of(r, w, p), b2 = side_of(r, w, q);
                 if (a1 == sign::zero || a2 == sign::zero || a1 == a2 || b1 == sign::zero || b2 == sign::zero || b1 == b2) continue;
                 keep_dir(sweep_dir{segment_param{r, r, w, origin, ek}, true, e}, dirs);
             }
