@@ -130,6 +130,10 @@ bool mesh_mesh_intersect(const mesh_data& a, const mesh_data& b);
 bool mesh_contains_segment(const mesh_data& m, const std::array<double, 3>& a, const std::array<double, 3>& b);
 // Is every point of the triangle a b c in it (the traces' vertices, chords between their directions)?
 bool mesh_contains_triangle(const mesh_data& m, const std::array<double, 3>& a, const std::array<double, 3>& b, const std::array<double, 3>& c);
+// Is every point of the box lo..hi (lo <= hi) in it (the odd coverage of each plane's cells inside
+// the box, then one point's parity; cgal_mesh_box.cpp)? std::runtime_error when no clean parity
+// segment or no point off the surface is found.
+bool mesh_contains_box(const mesh_data& m, const std::array<double, 3>& lo, const std::array<double, 3>& hi);
 
 // The same in the plane: a point, segment, ray or line (v: a point's 2 values, a segment's end
 // points, a ray's or line's origin and direction; degenerate ones are Point_2), CGAL's 2D
