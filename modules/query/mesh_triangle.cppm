@@ -17,17 +17,22 @@
 // every line there crosses that chord, and (apart from the covering triangles' edges, whose
 // crossings are directions too) the cells' parities are sums of toggles that the chord sees in
 // order. The chord's s is a double, or where a sector holds none, a sum of two or three (each
-// lifted as an input, so no degree grows). Along a chord (degree 2: a + t ((b - a) + s (c - b))),
+// lifted as an input, so no degree grows), or a pair chord (below). Along a chord (degree 2: a + t ((b - a) + s (c - b))),
 // the lines are crossed at t = N / D (degree 4/4, or 3/3 for an edge in H; compared at degree 8);
 // the parity starts inside at a free
 // apex (a vertex on no triangle, inside), or else outside the mesh's box, the chord's line being
 // followed from t = -infinity through every triangle (at a itself a half-open rule: only the lines
 // leaving a to the chord's left are crossed). Every piece of the chord inside t must be covered or
 // of odd parity. A chord through a point where two lines cross (only on a self-intersecting
-// surface) is moved to the next double; after 32 such moves, or with no sum of three doubles in
-// a sector, the next apex is tried (free apexes first, then each vertex with the line followed
-// from outside), and after all of them the answer is "not contained": on the tests' 22,000 exact
-// cases no query got there (a sector without such an s came 3 times, the next apex served).
+// surface) is moved to the next double; after 32 such moves, or where a sector holds no sum of
+// three doubles (two directions closer than about 2^-159 apart: nearly coincident line ends, as
+// on two shells glued face to face and nudged by ulps), the chord is w0 V0 + w1 V1, a positive
+// combination of the sector's two bounding directions (each of degree 4), strictly inside the
+// sector however thin: along it a cut's parameter is n / d with n of degree 3 and d of 7 (ordered
+// at degree 10), and a cut before the chord's end is one on a's side of b c (degree 9). Each point
+// where two lines cross rules out one ratio w1 / w0, so one of lines^2 + 2 ratios gives a clean
+// chord, and one apex decides (free apexes first, then a vertex with the line followed from
+// outside; the next apex, and after all of them "not contained", only for an inexact kernel).
 // Source: the boundary-plus-inside decomposition and crossing parity of mesh_point.cppm (Haines,
 // Graphics Gems IV, 1994); the sweep of a plane section by a pencil of lines through a vertex, cut
 // at the arrangement's vertices (Bentley and Ottmann, IEEE Trans. Computers 28(9), 1979, in
@@ -164,22 +169,84 @@ struct chord_cut {
     bool flip = false;
     int pos = 0;
 };
-// use(f) with f(L) = {N, D} of the cut's parameter along the chord s.
-template <class Use>
-[[nodiscard]] constexpr auto with_cut(const sweep_frame& fr, const sweep_s& s, const sweep_line& l, bool flip, const Use& use) {
+// A chord of the sweep from the apex a: its direction dir(L); a cut at t = n / d along a + t dir,
+// where num(L, x) balances a cut's numerator x with dir's degree; before(L, n, d), whose sign
+// times before_sign is positive when the cut lies before the chord's end on b c.
+// s_chord: the chord to e(s), dir = e(s) - a (degree 2, with 1 lifted), the end at t = 1.
+struct s_chord {
+    sweep_frame fr;
+    sweep_s s;
+    int before_sign = 1;
+    template <class L>
+    [[nodiscard]] constexpr auto dir(L lift) const { return fr.dir(lift, s); }
+    template <class L, class T>
+    [[nodiscard]] constexpr auto num(L lift, const T& x) const { return lift(1.0) * x; }
+    template <class L, class N, class D>
+    [[nodiscard]] constexpr auto before(L, const N& n, const D& d) const { return d - n; }
+};
+// The direction of a sector's bound from the apex, of degree 4 and pointing into the triangle:
+// e(s) - a times D for a direction s = N / D (D > 0; s = 0 and 1 as the planes through b and c
+// across b c along coordinate axes), or (z - a) D for a crossing z on an edge (`negate` when that
+// D is negative).
+struct sector_bound {
+    sweep_dir d{};
+    bool negate = false;
+};
+template <class L>
+[[nodiscard]] constexpr auto bound_vector(L lift, const sweep_frame& fr, const sector_bound& b) {
+    if (b.d.on_edge) {
+        const auto Z = offset_on_edge(lift, b.d.plane, b.d.edge, fr.a);
+        using T = decltype(Z.x);
+        return b.negate ? arith::v3<T>{-Z.x, -Z.y, -Z.z} : Z;
+    }
+    segment_param p = b.d.plane;
+    p.flip = b.d.flip;
+    const auto [n, dd] = p.fraction(lift, segment3{fr.b, fr.c});
+    const auto A = arith::lift(lift, fr.a), B = arith::lift(lift, fr.b);
+    const auto u = B - A, w = arith::lift(lift, fr.c) - B;
+    using T = decltype(u.x * dd + w.x * n);
+    return arith::v3<T>{u.x * dd + w.x * n, u.y * dd + w.y * n, u.z * dd + w.z * n};
+}
+// pair_chord: w0 V0 + w1 V1 for the bounds V0, V1 of a sector (degree 5, strictly inside it
+// however thin it is); a cut's numerator as it is (t = n / d is then of degree -4), and its side
+// of b c, d S_a + n ((c - b) x dir) along the axis (degree 9), against that of a, S_a.
+struct pair_chord {
+    sweep_frame fr;
+    sector_bound lo, hi;
+    double w0 = 1.0, w1 = 1.0;
+    int before_sign = 1; // the sign of S_a = (c - b) x (a - b) along the axis
+    template <class L>
+    [[nodiscard]] constexpr auto dir(L lift) const {
+        const auto v0 = bound_vector(lift, fr, lo), v1 = bound_vector(lift, fr, hi);
+        const auto x0 = lift(w0), x1 = lift(w1);
+        using T = decltype(v0.x * x0 + v1.x * x1);
+        return arith::v3<T>{v0.x * x0 + v1.x * x1, v0.y * x0 + v1.y * x1, v0.z * x0 + v1.z * x1};
+    }
+    template <class L, class T>
+    [[nodiscard]] constexpr const T& num(L, const T& x) const { return x; }
+    template <class L, class N, class D>
+    [[nodiscard]] constexpr auto before(L lift, const N& n, const D& d) const {
+        const auto B = arith::lift(lift, fr.b);
+        const auto w = arith::lift(lift, fr.c) - B;
+        return d * cross_along(fr.axis, w, arith::lift(lift, fr.a) - B) + n * cross_along(fr.axis, w, dir(lift));
+    }
+};
+// use(f) with f(L) = {N, D} of the cut's parameter along the chord ch.
+template <class Chord, class Use>
+[[nodiscard]] constexpr auto with_cut(const sweep_frame& fr, const Chord& ch, const sweep_line& l, bool flip, const Use& use) {
     if (l.kind == 1)
-        return use([fr, s, l, flip](auto L) {
+        return use([fr, ch, l, flip](auto L) {
             const auto P = arith::lift(L, l.a0), A = arith::lift(L, fr.a);
             const auto e = arith::lift(L, l.a1) - P;
-            const auto n = L(1.0) * cross_along(fr.axis, e, P - A);
-            const auto d = cross_along(fr.axis, e, fr.dir(L, s));
+            const auto n = ch.num(L, cross_along(fr.axis, e, P - A));
+            const auto d = cross_along(fr.axis, e, ch.dir(L));
             return flip ? std::pair{-n, -d} : std::pair{n, d};
         });
-    return use([fr, s, l, flip](auto L) {
+    return use([fr, ch, l, flip](auto L) {
         const auto P = arith::lift(L, l.a0), A = arith::lift(L, fr.a);
         const auto nf = arith::cross(arith::lift(L, l.a1) - P, arith::lift(L, l.a2) - P);
-        const auto n = L(1.0) * arith::dot(nf, P - A);
-        const auto d = arith::dot(nf, fr.dir(L, s));
+        const auto n = ch.num(L, arith::dot(nf, P - A));
+        const auto d = arith::dot(nf, ch.dir(L));
         return flip ? std::pair{-n, -d} : std::pair{n, d};
     });
 }
@@ -403,18 +470,18 @@ template <class K>
     // One chord: inside, outside, or retry (it passes where two lines cross).
     std::vector<chord_cut> cuts;
     std::vector<std::array<int, 3>> band_at; // per covering triangle: its crossings' groups, and their count
-    auto chord = [&](const sweep_s& s) {
+    auto chord = [&](const auto& ch) {
         cuts.clear();
         band_at.assign(static_cast<std::size_t>(bands), std::array<int, 3>{0, 0, 0});
         int parity = free_apex ? 1 : 0;
         auto end_side = [&](const sweep_end& e) {
             if (e.vertex) {
                 const point3 p = e.p;
-                return k.sgn([=](auto L) { return cross_along(axis, fr.dir(L, s), arith::lift(L, p) - arith::lift(L, A)); });
+                return k.sgn([=](auto L) { return cross_along(axis, ch.dir(L), arith::lift(L, p) - arith::lift(L, A)); });
             }
             const segment_param at = e.at;
             const segment3 pq{e.p, e.q};
-            return k.sgn([=](auto L) { return cross_along(axis, fr.dir(L, s), offset_on_edge(L, at, pq, A)); });
+            return k.sgn([=](auto L) { return cross_along(axis, ch.dir(L), offset_on_edge(L, at, pq, A)); });
         };
         auto band_mark = [&](int band, int pos) {
             auto& b = band_at[static_cast<std::size_t>(band)];
@@ -424,30 +491,30 @@ template <class K>
         for (std::size_t i = 0; i < lines.size(); ++i) {
             const sweep_line& l = lines[i];
             if ((end_side(l.e0) == sign::positive) == (end_side(l.e1) == sign::positive)) continue; // half-open: not crossed
-            const sign den = with_cut(fr, s, l, false, [&](auto f) { return k.sgn([=](auto L) { return f(L).second; }); });
+            const sign den = with_cut(fr, ch, l, false, [&](auto f) { return k.sgn([=](auto L) { return f(L).second; }); });
             if (den == sign::zero) continue;
             const bool flip = den == sign::negative;
-            const sign num = with_cut(fr, s, l, flip, [&](auto f) { return k.sgn([=](auto L) { return f(L).first; }); });
+            const sign num = with_cut(fr, ch, l, flip, [&](auto f) { return k.sgn([=](auto L) { return f(L).first; }); });
             if (num != sign::positive) { // at or before the apex
                 if (!free_apex) parity ^= l.tau;
                 if (l.band >= 0) band_mark(l.band, -1);
                 continue;
             }
-            const sign rest = with_cut(fr, s, l, flip, [&](auto f) {
+            const sign rest = with_cut(fr, ch, l, flip, [&](auto f) {
                 return k.sgn([=](auto L) {
                     const auto [n, d] = f(L);
-                    return d - n;
+                    return ch.before(L, n, d);
                 });
             });
-            if (rest != sign::positive) { // at or beyond e(s)
+            if (rest == sign::zero || (rest == sign::positive) != (ch.before_sign > 0)) { // at or beyond the chord's end on b c
                 if (l.band >= 0) band_mark(l.band, -2);
                 continue;
             }
             cuts.push_back(chord_cut{i, flip, 0});
         }
         auto cut_order = [&](const chord_cut& x, const chord_cut& y) {
-            return with_cut(fr, s, lines[x.line], x.flip, [&](auto fx) {
-                return with_cut(fr, s, lines[y.line], y.flip, [&](auto fy) {
+            return with_cut(fr, ch, lines[x.line], x.flip, [&](auto fx) {
+                return with_cut(fr, ch, lines[y.line], y.flip, [&](auto fy) {
                     return k.sgn([=](auto L) {
                         const auto [nx, dx] = fx(L);
                         const auto [ny, dy] = fy(L);
@@ -500,6 +567,35 @@ template <class K>
             if (above(s, d) == sign::zero) return false;
         return true;
     };
+    // the same for a pair chord: its direction parallel to none
+    auto generic_pair = [&](const pair_chord& c) {
+        for (const sweep_dir& d : far_dirs)
+            if (k.sgn([=](auto L) { return cross_along(axis, c.dir(L), bound_vector(L, fr, sector_bound{d, false})); }) == sign::zero) return false;
+        return true;
+    };
+    // a sector's bound: a direction (an edge's crossing z with its D's sign), or for s = 0 (b) or
+    // s = 1 (c) the plane through that point and two coordinate axes, det(e_j, e_k, x - b) =
+    // (x - b)_i for an axis i along which b c moves
+    const int along = B.x != C.x ? 0 : (B.y != C.y ? 1 : 2);
+    const bool descends = along == 0 ? C.x < B.x : (along == 1 ? C.y < B.y : C.z < B.z);
+    auto bound_of = [&](const sweep_dir* d, bool end) {
+        if (d == nullptr)
+            return sector_bound{sweep_dir{segment_param{end ? C : B, origin, unit((along + 1) % 3), origin, unit((along + 2) % 3)}, false, {}, descends}, false};
+        bool negate = false;
+        if (d->on_edge) {
+            const segment_param at = d->plane;
+            const segment3 e = d->edge;
+            negate = k.sgn([=](auto L) { return at.fraction(L, e).second; }) == sign::negative;
+        }
+        return sector_bound{*d, negate};
+    };
+    // the side of b c that a lies on, seen along the axis
+    const int side_a = k.sgn([=](auto L) {
+                           const auto Bl = arith::lift(L, B);
+                           return cross_along(axis, arith::lift(L, C) - Bl, arith::lift(L, A) - Bl);
+                       }) == sign::positive
+                           ? 1
+                           : -1;
     const sweep_dir* lo = nullptr; // s = 0
     for (std::size_t i = 0; i <= dirs.size(); ++i) {
         const sweep_dir* hi = i < dirs.size() ? &dirs[i] : nullptr; // nullptr: s = 1
@@ -532,18 +628,30 @@ template <class K>
                 found = below_hi(at(b));
                 s = found ? at(b) : at(a);
             }
-            if (!found) return sweep_result::retry; // no s of three doubles in this sector
+            if (!found) s = sweep_s{{-1.0, 0.0, 0.0}}; // no s of three doubles in this sector
         }
         bool done = false;
         sweep_s up = s, down = s;
-        for (int attempt = 0; attempt < 33 && !done; ++attempt) {
+        for (int attempt = 0; attempt < 33 && !done && s.c[0] >= 0.0; ++attempt) {
             const sweep_s c = attempt == 0 ? s : (attempt % 2 == 1 ? (up = next_s(up, true)) : (down = next_s(down, false)));
             if ((attempt > 0 && (!above_lo(c) || !below_hi(c))) || !generic(c)) continue;
-            const sweep_result r = chord(c);
+            const sweep_result r = chord(s_chord{fr, c});
             if (r == sweep_result::outside || gave_up(k)) return sweep_result::outside;
             done = r == sweep_result::inside;
         }
-        if (!done) return sweep_result::retry;
+        if (!done) { // chords w0 V_lo + w1 V_hi between the sector's bounds: each point where two lines
+                     // cross, and each far direction, rules out one ratio w1 / w0
+            const sector_bound blo = bound_of(lo, false), bhi = bound_of(hi, true);
+            const std::size_t tries = lines.size() * lines.size() + far_dirs.size() + 2;
+            for (std::size_t w = 1; w <= tries && !done; ++w) {
+                const pair_chord c{fr, blo, bhi, 1.0, double(w), side_a};
+                if (!generic_pair(c)) continue;
+                const sweep_result r = chord(c);
+                if (r == sweep_result::outside || gave_up(k)) return sweep_result::outside;
+                done = r == sweep_result::inside;
+            }
+            if (!done) return sweep_result::retry; // (an inexact kernel's guesses)
+        }
         lo = hi;
     }
     return sweep_result::inside;

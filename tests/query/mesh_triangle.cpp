@@ -89,6 +89,33 @@ TEST_CASE("mesh_triangle: contains on a self-intersecting mesh", "[mesh_triangle
     CHECK_FALSE(contains(two, triangle3{{0.9, 0.5, 0.9}, {0.95, 0.5, 0.9}, {0.9, 0.55, 0.9}})); // in both: even
     CHECK(contains(two, triangle3{{0.5, 0.5, 0.9}, {0.6, 0.5, 0.9}, {0.5, 0.55, 0.9}}));
 }
+TEST_CASE("mesh_triangle: contains across two cubes glued face to face, one nudged by 2^-600", "[mesh_triangle]") {
+    // [0, 1]^3 and [0, 1] x [1, 2] x [0, 1] as one surface, the second's corner (0, 1, 0) raised to
+    // z = 2^-600: the glued faces (both split along x = z) cover y = 1 twice, and their diagonals
+    // cross the plane x = 1/2 at z = 1/2 and 1/2 + 2^-601. Seen from any vertex of a triangle in
+    // that plane, those two points are closer in direction than a sum of three doubles can resolve:
+    // the sweep needs its pair chords there.
+    std::vector<point3> v(support::cube_vertices.begin(), support::cube_vertices.begin() + 8);
+    for (std::size_t i = 0; i < 8; ++i) v.push_back(support::cube_vertices[i] + vec3{0, 1, 0});
+    v[8].z = 0x1p-600;
+    std::vector<std::array<std::uint32_t, 3>> t(support::cube_triangles.begin(), support::cube_triangles.end());
+    for (const auto& f : support::cube_triangles) t.push_back({f[0] + 8, f[1] + 8, f[2] + 8});
+    const mesh3 two{v, t};
+    const triangle3 across{{0.5, 0.25, 0.25}, {0.5, 1.75, 0.25}, {0.5, 1.75, 0.875}};
+    CHECK(support::triangle_in_mesh_truth(two, across));
+    CHECK(contains(two, across));
+    CHECK(contains(two, triangle3{across.b, across.c, across.a}));
+    CHECK(contains(two, triangle3{across.c, across.a, across.b}));
+    const triangle3 above{{0.5, 0.25, 0.25}, {0.5, 1.75, 0.25}, {0.5, 1.75, 1.125}}; // past the top
+    CHECK_FALSE(support::triangle_in_mesh_truth(two, above));
+    CHECK_FALSE(contains(two, above));
+}
+TEST_CASE("mesh_triangle: contains in blocks glued, overlapping or nested, against the oracle", "[mesh_triangle][oracle]") {
+    (void)support::contains_in_store(
+        "mesh_triangle contains, blocks glued, overlapping or nested", support::cases(4000), 43, approx_bound,
+        [](support::rng& r, support::mesh_store& store) { return support::triangle_in_blocks(r, store); },
+        [](const mesh3& m, const triangle3& t) { return support::triangle_in_mesh_truth(m, t); }, [](const mesh3&, const triangle3&) { return false; });
+}
 TEST_CASE("mesh_triangle: contains against the oracle, random and near-degenerate", "[mesh_triangle][oracle]") {
     support::mesh_store store;
     support::contains_oracle_cases(

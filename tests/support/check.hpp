@@ -107,7 +107,7 @@ void check_contains(tally& t, const A& a, const B& b, bool truth, double bound, 
     auto say = [&](const char* what, long& count) {
         if (++count <= 5) std::printf("  contains: %s: %s\n", what, describe().c_str());
     };
-    if (contains<exact>(a, b) != truth) say("exact disagrees", t.exact_wrong);
+    if (contains<exact>(a, b) != truth) say(truth ? "exact disagrees (truth: contained)" : "exact disagrees (truth: not contained)", t.exact_wrong);
     if (truth && !contains<conservative>(a, b)) say("conservative misses", t.conservative_violations);
     if (!truth && contains<aggressive>(a, b)) say("aggressive false yes", t.aggressive_violations);
     const certainty c = classify_contains(a, b);

@@ -279,6 +279,12 @@ inline incidence::triangle3 triangle_in_mesh_random(rng& r, mesh_store& store) {
     if (r.coin()) return {a, b, c};
     return {a, a + (b - a) * 0.125, a + (c - a) * 0.125}; // a small one: more of them inside
 }
+// The triangles of `more` added to `into` as one surface (its vertices after into's).
+inline void append_mesh(mesh_store& into, const mesh_store& more) {
+    const auto base = static_cast<std::uint32_t>(into.v.size());
+    into.v.insert(into.v.end(), more.v.begin(), more.v.end());
+    for (const auto& f : more.t) into.t.push_back({f[0] + base, f[1] + base, f[2] + base});
+}
 // Two star meshes, the second's centre a few quarters off the first's, kept as one unchecked
 // surface that crosses itself (their common part has even parity), and a triangle on or near
 // either's surface (one of its triangles, possibly with a vertex moved, or surface points of both):
@@ -301,13 +307,162 @@ inline incidence::triangle3 triangle_in_crossed_meshes(rng& r, mesh_store& store
         t = {surface_point(r, a, unused), surface_point(r, b, unused), r.coin() ? centre : surface_point(r, r.coin() ? a : b, unused)};
     }
     store = a;
-    const auto base = static_cast<std::uint32_t>(store.v.size());
-    store.v.insert(store.v.end(), b.v.begin(), b.v.end());
-    for (const auto& f : b.t) store.t.push_back({f[0] + base, f[1] + base, f[2] + base});
+    append_mesh(store, b);
     for (int i = r.integer(0, 2); i > 0; --i) t = {t.b, t.c, t.a};
     transform tr = random_transform(r, false, true);
     realise_mesh(store, tr);
     return realise(t, tr);
+}
+// A box against a star mesh: spanned by the centre and a surface point X; with a corner at X and
+// the other a few eighths away; around a mesh triangle, stretched along an axis in which it is
+// flat to the centre's coordinate (a face on the surface, from inside or outside); around the
+// centre; or from halfway to X to a little short of or past X. Sometimes made flat along an axis
+// (a rectangle, through contains(mesh, triangle)), a corner nudged by ulps; then one
+// exact-or-nudged scale 2^-500..2^500 and translation.
+inline incidence::aabb3 box_in_mesh_near(rng& r, mesh_store& store) {
+    using namespace incidence;
+    const auto [centre, X, along] = star_mesh_near(r, store);
+    auto eighths = [&r] { return vec3{r.integer(-4, 4) * 0.125, r.integer(-4, 4) * 0.125, r.integer(-4, 4) * 0.125}; };
+    aabb3 b{};
+    switch (r.integer(0, 4)) {
+    case 0: b = ordered(aabb3{centre, X}); break;
+    case 1: b = ordered(aabb3{X, X + eighths()}); break;
+    case 2: {
+        const auto& f = store.t[static_cast<std::size_t>(r.integer(0, static_cast<int>(store.t.size()) - 1))];
+        const point3 v[3] = {store.v[f[0]], store.v[f[1]], store.v[f[2]]};
+        b = incidence::pair::meshq::bounds(v, 3);
+        const int axis = r.integer(0, 2);
+        double* lo = axis == 0 ? &b.min.x : (axis == 1 ? &b.min.y : &b.min.z);
+        double* hi = axis == 0 ? &b.max.x : (axis == 1 ? &b.max.y : &b.max.z);
+        const double c = axis == 0 ? centre.x : (axis == 1 ? centre.y : centre.z);
+        if (*lo == *hi) {
+            if (r.integer(0, 3) == 0) *(c < *lo ? hi : lo) = *lo + (*lo - c); // outward
+            else *(c < *lo ? lo : hi) = c;                                     // inward
+        }
+        break;
+    }
+    case 3: {
+        const vec3 h{r.integer(1, 4) * 0.125, r.integer(1, 4) * 0.125, r.integer(1, 4) * 0.125};
+        b = aabb3{centre - h, centre + h};
+        break;
+    }
+    default: b = ordered(aabb3{centre + (X - centre) * 0.5, X + (X - centre) * (r.integer(-2, 2) * 0.125)}); break;
+    }
+    if (r.integer(0, 7) == 0) {
+        switch (r.integer(0, 2)) {
+        case 0: b.max.x = b.min.x; break;
+        case 1: b.max.y = b.min.y; break;
+        default: b.max.z = b.min.z; break;
+        }
+    }
+    if (r.coin()) b.max = {nudge(b.max.x, r.integer(-2, 2)), nudge(b.max.y, r.integer(-2, 2)), nudge(b.max.z, r.integer(-2, 2))};
+    transform tr = random_transform(r, r.integer(0, 3) == 0, true);
+    realise_mesh(store, tr);
+    return realise(ordered(b), tr);
+}
+// A random star mesh and the box of two points of its vertices' box, or an eighth of it.
+inline incidence::aabb3 box_in_mesh_random(rng& r, mesh_store& store) {
+    using namespace incidence;
+    const auto at = random_mesh_and_box_points(r, store);
+    const point3 a = at(), b = at();
+    if (r.coin()) return ordered(aabb3{a, b});
+    return ordered(aabb3{a, a + (b - a) * 0.125}); // a small one: more of them inside
+}
+// The closed surface of the block lo + [0, size] (integer units of `unit`), each face a grid of
+// unit squares split along random diagonals: many coplanar triangles side by side; outward, or
+// inward (`inward`: a nested shell, whose inside has even parity, a cavity).
+inline void block_mesh(rng& r, std::array<int, 3> lo, std::array<int, 3> size, bool inward, mesh_store& m) {
+    std::map<std::array<int, 3>, std::uint32_t> index;
+    auto vertex = [&](std::array<int, 3> g) {
+        const auto [it, added] = index.try_emplace(g, static_cast<std::uint32_t>(m.v.size()));
+        if (added) m.v.push_back({double(lo[0] + g[0]), double(lo[1] + g[1]), double(lo[2] + g[2])});
+        return it->second;
+    };
+    for (int a = 0; a < 3; ++a)
+        for (int side = 0; side < 2; ++side) {
+            const int u = (a + 1) % 3, w = (a + 2) % 3;
+            for (int i = 0; i < size[static_cast<unsigned>(u)]; ++i)
+                for (int j = 0; j < size[static_cast<unsigned>(w)]; ++j) {
+                    auto at = [&](int di, int dj) {
+                        std::array<int, 3> g{};
+                        g[static_cast<unsigned>(a)] = side * size[static_cast<unsigned>(a)], g[static_cast<unsigned>(u)] = i + di,
+                        g[static_cast<unsigned>(w)] = j + dj;
+                        return vertex(g);
+                    };
+                    const std::uint32_t p00 = at(0, 0), p10 = at(1, 0), p11 = at(1, 1), p01 = at(0, 1);
+                    std::array<std::uint32_t, 3> t1{p00, p10, p11}, t2{p00, p11, p01};
+                    if (r.coin()) t1 = {p00, p10, p01}, t2 = {p10, p11, p01};
+                    if ((side == 0) != inward) std::swap(t1[1], t1[2]), std::swap(t2[1], t2[2]);
+                    m.t.push_back(t1);
+                    m.t.push_back(t2);
+                }
+        }
+}
+// Blocks of integer size 1 to 3 kept as one unchecked surface in `store`: a second block beside
+// the first (sharing a whole face or part of a face plane, so coplanar triangles of both cover one
+// area twice, which has even parity: the union is solid across it), overlapping it (their common
+// part has even parity), or nested inside it as an inward shell (a cavity). The first block is
+// [0, s1]; the return value is its extent s1.
+inline std::array<int, 3> glued_blocks(rng& r, mesh_store& store) {
+    store.v.clear();
+    store.t.clear();
+    const int how = r.integer(0, 3); // 0, 1 beside; 2 overlapping; 3 nested
+    const std::array<int, 3> s1 = how == 3 ? std::array<int, 3>{3, 3, 3} : std::array<int, 3>{r.integer(1, 3), r.integer(1, 3), r.integer(1, 3)};
+    block_mesh(r, {0, 0, 0}, s1, false, store);
+    std::array<int, 3> lo2{}, s2{r.integer(1, 3), r.integer(1, 3), r.integer(1, 3)};
+    for (unsigned k = 0; k < 3; ++k) lo2[k] = r.integer(-1, s1[k] - 1);
+    const auto axis = static_cast<unsigned>(r.integer(0, 2));
+    if (how == 0) // continuing the first block along an axis: the union is a block
+        for (unsigned k = 0; k < 3; ++k)
+            if (k != axis) lo2[k] = 0, s2[k] = s1[k];
+    if (how <= 1) lo2[axis] = s1[axis];            // face to face
+    if (how == 3) lo2 = {1, 1, 1}, s2 = {1, 1, 1}; // the middle unit cube
+    block_mesh(r, lo2, s2, how == 3, store);
+    return s1;
+}
+// A point of half-integer coordinates within the box b.
+inline incidence::point3 half_point(rng& r, const incidence::aabb3& b) {
+    auto half = [&r](double lo, double hi) { return lo + r.integer(0, static_cast<int>(2 * (hi - lo))) * 0.5; };
+    return {half(b.min.x, b.max.x), half(b.min.y, b.max.y), half(b.min.z, b.max.z)};
+}
+// glued_blocks and a box of half-integer corners within their bounds, often the first block's own
+// box or the union's; sometimes flat along an axis; then a scale 2^-500..2^500 and translation,
+// exact or nudged.
+inline incidence::aabb3 box_in_blocks(rng& r, mesh_store& store) {
+    using namespace incidence;
+    const std::array<int, 3> s1 = glued_blocks(r, store);
+    aabb3 b{};
+    const aabb3 all = incidence::pair::meshq::bounds(store.view());
+    switch (r.integer(0, 3)) {
+    case 0: b = aabb3{{0, 0, 0}, {double(s1[0]), double(s1[1]), double(s1[2])}}; break;
+    case 1: b = all; break;
+    default: b = ordered(aabb3{half_point(r, all), half_point(r, all)}); break;
+    }
+    if (r.integer(0, 7) == 0) b.max.x = b.min.x;
+    transform tr = random_transform(r, r.integer(0, 3) == 0, true);
+    realise_mesh(store, tr);
+    return realise(b, tr);
+}
+// glued_blocks and a triangle of half-integer vertices within their bounds, often in a coordinate
+// plane (across the glued faces, or on them); then a scale and translation, exact or nudged.
+inline incidence::triangle3 triangle_in_blocks(rng& r, mesh_store& store) {
+    using namespace incidence;
+    (void)glued_blocks(r, store);
+    const aabb3 all = incidence::pair::meshq::bounds(store.view());
+    triangle3 t{half_point(r, all), half_point(r, all), half_point(r, all)};
+    if (r.coin()) { // in a plane x = const, y = const or z = const
+        const int axis = r.integer(0, 2);
+        const double c = axis == 0 ? t.a.x : (axis == 1 ? t.a.y : t.a.z);
+        for (point3* p : {&t.b, &t.c}) (axis == 0 ? p->x : (axis == 1 ? p->y : p->z)) = c;
+    }
+    transform tr = random_transform(r, r.integer(0, 3) == 0, true);
+    realise_mesh(store, tr);
+    return realise(t, tr);
+}
+// The oracle's answer to contains(m, b) (tests/oracle/cgal_mesh_box.cpp; std::runtime_error when it
+// finds no clean parity segment).
+inline bool box_in_mesh_truth(const incidence::mesh3& m, const incidence::aabb3& b) {
+    return oracle::mesh_contains_box(mesh_data_of(m), {b.min.x, b.min.y, b.min.z}, {b.max.x, b.max.y, b.max.z});
 }
 // The oracle's answer to contains(m, t) (tests/oracle/cgal_mesh.cpp; std::runtime_error when it
 // finds no clean parity segment).

@@ -107,4 +107,43 @@ void mesh_symmetries(const std::string& name, long n) {
     CHECK(yes > 0);
 }
 
+// contains(mesh, b) on n cases of gen(rng, store) (the mesh left in store, b returned) against
+// truth_of(m, b) (std::runtime_error: the oracle declined), with every tier contract; both answers
+// must occur, "contained" in at least a twentieth. Returns how many contained cases feature(m, b)
+// holds for.
+template <class Gen, class Truth, class Feature>
+long contains_in_store(const std::string& name, long n, std::uint64_t seed_offset, double approx_bound, Gen gen, Truth truth_of, Feature feature) {
+    using namespace incidence;
+    rng r(seed() + seed_offset);
+    mesh_store store;
+    tally t{name};
+    long yes = 0, skipped = 0, featured = 0;
+    for (long i = 0; i < n; ++i) {
+        const auto b = gen(r, store);
+        bool fin = finite_shape(b);
+        for (const auto& p : store.v) fin = fin && std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+        if (!fin) {
+            ++skipped;
+            continue;
+        }
+        const mesh3 m = store.view();
+        bool truth = false;
+        try {
+            truth = truth_of(m, b);
+        } catch (const std::runtime_error&) {
+            ++skipped;
+            continue;
+        }
+        yes += truth;
+        if (truth) featured += feature(m, b);
+        check_contains(t, m, b, truth, approx_bound, [&] { return shape_str(m) + " " + shape_str(b); });
+    }
+    t.print();
+    std::printf("[cases] %s: %ld contained, %ld skipped (declined or not finite)\n", t.name.c_str(), yes, skipped);
+    require_contracts(t);
+    CHECK(yes > t.n / 20);
+    CHECK(yes < t.n);
+    return featured;
+}
+
 } // namespace support
