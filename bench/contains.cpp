@@ -154,6 +154,20 @@ void register_contains(bool near) {
             }
         },
         [](const mesh3& m, const triangle3& t) { return support::triangle_in_mesh_truth(m, t); });
+    // the mesh around a box: box_in_mesh_{random,near}, the box oracle's cells of each plane as truth
+    view_tiers<support::mesh_store, aabb3, true>(
+        "mesh_aabb", near,
+        [](support::rng& r, support::mesh_store& m, support::mesh_store&, bool nr) {
+            for (;;) {
+                const aabb3 b = nr ? support::box_in_mesh_near(r, m) : support::box_in_mesh_random(r, m);
+                try {
+                    (void)support::box_in_mesh_truth(m.view(), b);
+                    return b;
+                } catch (const std::runtime_error&) {
+                }
+            }
+        },
+        [](const mesh3& m, const aabb3& b) { return support::box_in_mesh_truth(m, b); });
     // the polygon around a segment (2D and 3D) or a triangle (3D): polygon_cases.hpp's
     // segment_in_polygon_{random,near}, polygon3_cases.hpp's points_in_polygon3, the polygon
     // oracles' exact breakpoints and clipped areas as truth

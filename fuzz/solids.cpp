@@ -12,9 +12,9 @@
 // self-intersecting: its set is its triangles plus the points of odd crossing parity, which the
 // oracle's parity along another ray must match) against one of eight kinds (mod 8, up to 12
 // doubles: a point, segment, ray, line, plane, triangle, box or tetrahedron), and
-// contains(mesh, point | segment | triangle) (the segment against the oracle's exact breakpoints
-// and midpoints, the triangle against its chords between the exact directions of the traces'
-// vertices); with bit 0x40 of byte 0 too, against a second such mesh (18 doubles;
+// contains(mesh, point | segment | triangle | box) (the segment against the oracle's exact
+// breakpoints and midpoints, the triangle against its chords between the exact directions of the
+// traces' vertices, the box against the cells of each plane through it); with bit 0x40 of byte 0 too, against a second such mesh (18 doubles;
 // CGAL::Polygon_mesh_processing::do_intersect) or, for byte 0 % 8 == 7, an OBB (the LP per
 // triangle), or for 6, 5, 4 a convex polyhedron of 1 to 4 planes, a frustum or a 14-DOP from 18
 // doubles (the LP per triangle, then crossing parity from the LP's exact point of the set). Any
@@ -166,14 +166,16 @@ void check_mesh(const mesh3& m, const B& b, bool finite) {
     (void)classify(b, m);
     if (!finite) {
         if (intersects<exact>(m, b)) std::abort();
-        if constexpr (std::is_same_v<B, point3> || std::is_same_v<B, segment3> || std::is_same_v<B, triangle3>)
+        if constexpr (std::is_same_v<B, point3> || std::is_same_v<B, segment3> || std::is_same_v<B, triangle3> || std::is_same_v<B, aabb3>)
             if (contains(m, b)) std::abort();
-        if constexpr (std::is_same_v<B, segment3> || std::is_same_v<B, triangle3>) (void)contains<approximate>(m, b), (void)classify_contains(m, b);
+        if constexpr (std::is_same_v<B, segment3> || std::is_same_v<B, triangle3> || std::is_same_v<B, aabb3>)
+            (void)contains<approximate>(m, b), (void)classify_contains(m, b);
         return;
     }
     if constexpr (std::is_same_v<B, aabb3>)
         if (!(b.min.x <= b.max.x && b.min.y <= b.max.y && b.min.z <= b.max.z)) {
-            if (intersects(m, b)) std::abort(); // an inverted box is empty
+            if (intersects(m, b) || contains(m, b)) std::abort(); // an inverted box is empty
+            (void)contains<approximate>(m, b), (void)classify_contains(m, b);
             return;
         }
     if constexpr (std::is_same_v<B, obb3>)
@@ -195,6 +197,15 @@ void check_mesh(const mesh3& m, const B& b, bool finite) {
         bool in = false;
         try {
             in = support::segment_in_mesh_truth(m, b);
+        } catch (const std::runtime_error&) {
+            return;
+        }
+        contains_contracts_with(m, b, in);
+    }
+    if constexpr (std::is_same_v<B, aabb3>) { // contains against the oracle's cells of each plane through the box
+        bool in = false;
+        try {
+            in = support::box_in_mesh_truth(m, b);
         } catch (const std::runtime_error&) {
             return;
         }

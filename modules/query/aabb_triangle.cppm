@@ -36,27 +36,44 @@ namespace box_triangle_detail {
 }
 } // namespace box_triangle_detail
 
-template <class K>
-[[nodiscard]] constexpr bool intersects(K& k, const aabb3& b, const triangle3& t) {
-    using namespace box_triangle_detail;
+// Which points of the box a triangle must reach: any point of the closed box, or one of its
+// interior (touching the boundary alone does not count: contains(mesh3, aabb3) asks this of the
+// mesh's triangles). For the interior the same 13 axes decide, with touching projections counted
+// as separated: the triangle misses the open box iff the origin is outside the interior of the
+// Minkowski difference, whose facet normals are these axes (a full box is needed; a flat one has
+// no interior).
+enum class box_reach : unsigned char { closed, interior };
+
+namespace box_triangle_detail {
+// Does an axis sign s put the triangle beyond the box on the side `side` of that axis?
+template <box_reach Reach>
+[[nodiscard]] constexpr bool beyond(sign s, sign side) {
+    if constexpr (Reach == box_reach::closed) return s == side;
+    else return s == side || s == sign::zero;
+}
+
+template <box_reach Reach, class K>
+[[nodiscard]] constexpr bool box_meets(K& k, const aabb3& b, const triangle3& t) {
     for (int i = 0; i < 3; ++i)
         if (!(at(b.min, i) <= at(b.max, i))) return false; // inverted or NaN box
     // The box is read only through comparisons when the triangle is a point (no normal, no
     // edge axes): an infinite bound must still give no.
     if (!finite(b.min) || !finite(b.max)) return false;
     const point3 v[3] = {t.a, t.b, t.c};
+    constexpr sign up = sign::positive, down = sign::negative;
     // The box's face normals: comparisons of coordinates.
     for (int i = 0; i < 3; ++i) {
         const double lo = at(b.min, i), hi = at(b.max, i);
-        if (arith::compare(k, at(v[0], i), hi) == sign::positive && arith::compare(k, at(v[1], i), hi) == sign::positive &&
-            arith::compare(k, at(v[2], i), hi) == sign::positive)
+        if (beyond<Reach>(arith::compare(k, at(v[0], i), hi), up) && beyond<Reach>(arith::compare(k, at(v[1], i), hi), up) &&
+            beyond<Reach>(arith::compare(k, at(v[2], i), hi), up))
             return false;
-        if (arith::compare(k, at(v[0], i), lo) == sign::negative && arith::compare(k, at(v[1], i), lo) == sign::negative &&
-            arith::compare(k, at(v[2], i), lo) == sign::negative)
+        if (beyond<Reach>(arith::compare(k, at(v[0], i), lo), down) && beyond<Reach>(arith::compare(k, at(v[1], i), lo), down) &&
+            beyond<Reach>(arith::compare(k, at(v[2], i), lo), down))
             return false;
     }
     for (int i = 0; i < 3; ++i)
-        if (at(b.min, i) == at(b.max, i)) { // flat box: its rectangle's two triangles
+        if (at(b.min, i) == at(b.max, i)) { // flat box: its rectangle's two triangles (no interior)
+            if constexpr (Reach == box_reach::interior) return false;
             const int j = (i + 1) % 3, l = (i + 2) % 3;
             auto corner = [&](bool hj, bool hl) {
                 point3 p = b.min;
@@ -69,10 +86,14 @@ template <class K>
     // The triangle's normal n = (b - a) x (c - a): every vertex projects to n . a.
     {
         const point3 a = t.a, bb = t.b, c = t.c;
+        // A triangle in a coordinate plane (its vertices share that coordinate) has its normal's
+        // other two components exactly zero: comparisons say so, where the filter could not.
+        const bool in_plane[3] = {a.x == bb.x && a.x == c.x, a.y == bb.y && a.y == c.y, a.z == bb.z && a.z == c.z};
+        auto known_zero = [&](int i) { return in_plane[(i + 1) % 3] || in_plane[(i + 2) % 3]; };
         sign s[3];
-        s[0] = k.sgn([=](auto L) { return (L(bb.y) - L(a.y)) * (L(c.z) - L(a.z)) - (L(bb.z) - L(a.z)) * (L(c.y) - L(a.y)); });
-        s[1] = k.sgn([=](auto L) { return (L(bb.z) - L(a.z)) * (L(c.x) - L(a.x)) - (L(bb.x) - L(a.x)) * (L(c.z) - L(a.z)); });
-        s[2] = k.sgn([=](auto L) { return (L(bb.x) - L(a.x)) * (L(c.y) - L(a.y)) - (L(bb.y) - L(a.y)) * (L(c.x) - L(a.x)); });
+        s[0] = known_zero(0) ? sign::zero : k.sgn([=](auto L) { return (L(bb.y) - L(a.y)) * (L(c.z) - L(a.z)) - (L(bb.z) - L(a.z)) * (L(c.y) - L(a.y)); });
+        s[1] = known_zero(1) ? sign::zero : k.sgn([=](auto L) { return (L(bb.z) - L(a.z)) * (L(c.x) - L(a.x)) - (L(bb.x) - L(a.x)) * (L(c.z) - L(a.z)); });
+        s[2] = known_zero(2) ? sign::zero : k.sgn([=](auto L) { return (L(bb.x) - L(a.x)) * (L(c.y) - L(a.y)) - (L(bb.y) - L(a.y)) * (L(c.x) - L(a.x)); });
         if (s[0] != sign::zero || s[1] != sign::zero || s[2] != sign::zero) {
             // the corner farthest along n (hi) and along -n (lo)
             point3 hi = b.min, lo = b.max;
@@ -84,7 +105,7 @@ template <class K>
                     return arith::dot(arith::cross(u, w), arith::lift(L, a) - arith::lift(L, q));
                 });
             };
-            if (side(hi) == sign::positive || side(lo) == sign::negative) return false;
+            if (beyond<Reach>(side(hi), up) || beyond<Reach>(side(lo), down)) return false;
         }
     }
     // The nine axes e_i x f, f = q - p an edge, o the third vertex: with (i, j, l) cyclic,
@@ -104,11 +125,23 @@ template <class K>
                 const double xj = at(x, j), xl = at(x, l), cj = at(c, j), cl = at(c, l);
                 return k.sgn([=](auto L) { return (L(qj) - L(pj)) * (L(xl) - L(cl)) - (L(ql) - L(pl)) * (L(xj) - L(cj)); });
             };
-            if (proj(p, hi) == sign::positive && proj(o, hi) == sign::positive) return false;
-            if (proj(p, lo) == sign::negative && proj(o, lo) == sign::negative) return false;
+            if (beyond<Reach>(proj(p, hi), up) && beyond<Reach>(proj(o, hi), up)) return false;
+            if (beyond<Reach>(proj(p, lo), down) && beyond<Reach>(proj(o, lo), down)) return false;
         }
     }
     return true;
+}
+} // namespace box_triangle_detail
+
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const aabb3& b, const triangle3& t) {
+    return box_triangle_detail::box_meets<box_reach::closed>(k, b, t);
+}
+// Does the triangle reach the box's interior (min < max on every axis; a flat or inverted box has
+// none)? A collinear triangle is its hull, so a segment p q asks it as the triangle p q q.
+template <class K>
+[[nodiscard]] constexpr bool meets_interior(K& k, const aabb3& b, const triangle3& t) {
+    return box_triangle_detail::box_meets<box_reach::interior>(k, b, t);
 }
 
 // Akenine-Moeller's triangle-box overlap test in plain double (approximate tier).

@@ -136,7 +136,9 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
         every_tier(me, me, yes);
         every_tier(holey, q, yes);
         yes += contains(me, q) + contains(holey, q);
-        n += 11 * 5 + 2;
+        every_contains(me, b, yes);
+        every_contains(holey, b, yes);
+        n += 13 * 5 + 2;
         // the k-DOP pairs: special bounds (inverted, jointly empty, NaN as they come)
         kdop<14> kd{};
         for (unsigned slab = 0; slab < 7; ++slab) kd.min[slab] = special(r), kd.max[slab] = special(r);
@@ -280,6 +282,8 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
     CHECK_FALSE(intersects(mesh3{cv, support::cube_triangles}, plane3{{0, 0, 1}, 0}));
     CHECK_FALSE(intersects(mesh3{std::span<const point3>(cv.data(), 7), support::cube_triangles}, point3{0.3, 0.3, 0.3}));
     CHECK_FALSE(intersects(support::cube, segment3{{0.3, 0.3, 0.3}, {inf_, 0, 0}}));
+    CHECK_FALSE(contains(mesh3{cv, support::cube_triangles}, aabb3{{0.25, 0.25, 0.25}, {0.5, 0.5, 0.5}}));
+    CHECK_FALSE(contains(support::cube, aabb3{{0.25, 0.25, 0.25}, {0.5, 0.5, inf_}}));
     CHECK(classify(line3{{nan_, 0, 0}, {1, 0, 0}}, line3{{0, 0, 0}, {0, 1, 0}}) == certainty::uncertain);
     std::array<point2, 8> fv;
     for (unsigned i = 0; i < 8; ++i) fv[i] = support::frame.vertices[i];

@@ -180,6 +180,11 @@ static_assert(contains(support::cube, segment3{{0.5, 0.5, 0.5}, {0.5, 0.5, 1}}) 
 // surface: the chords' lines followed from outside), under the dent up to its apex, across the dent
 static_assert(contains(support::cube, triangle3{{0, 0, 1}, {1, 0, 1}, {0, 1, 1}}) && contains(support::dented, triangle3{{0, 0, 0}, {1, 1, 0}, {0.5, 0.5, 0.25}}) &&
               !contains(support::dented, triangle3{{0.1, 0.1, 0.5}, {0.9, 0.1, 0.5}, {0.5, 0.9, 0.5}}));
+// contains(mesh, box): no triangle reaches the box's interior (or those that do cover their plane
+// an even number of times there), and its centre's parity; the cube's own box, under the dent up to
+// its apex and one ulp above, a flat box on the top face (two triangles)
+static_assert(contains(support::cube, aabb3{{0, 0, 0}, {1, 1, 1}}) && contains(support::dented, aabb3{{0, 0, 0}, {1, 1, 0.25}}) &&
+              !contains(support::dented, aabb3{{0, 0, 0}, {1, 1, 0x1.0000000000001p-2}}) && contains(support::cube, aabb3{{0, 0, 1}, {1, 1, 1}}));
 // a half-space set against a mesh: inside it (no triangle meets it: the parity of its vertex), above
 // the dent, a flat one on the dent's apex and one ulp above
 static_assert(intersects(kdop<6>{{0.4, 0.4, 0.4}, {0.6, 0.6, 0.6}}, support::cube) && !intersects(support::dented, kdop<6>{{0.45, 0.45, 0.5}, {0.55, 0.55, 0.9}}));
