@@ -88,7 +88,11 @@ template <box_reach Reach, class K>
         const point3 a = t.a, bb = t.b, c = t.c;
         // A triangle in a coordinate plane (its vertices share that coordinate) has its normal's
         // other two components exactly zero: comparisons say so, where the filter could not.
-        const bool in_plane[3] = {a.x == bb.x && a.x == c.x, a.y == bb.y && a.y == c.y, a.z == bb.z && a.z == c.z};
+        // (Only for a finite triangle: a NaN or infinity is left to the signs, which see it and make
+        // the exact tier say no.)
+        const bool fin = finite(t.a) && finite(t.b) && finite(t.c);
+        auto shared = [fin](double p, double q, double r) { return fin && p == q && p == r; };
+        const bool in_plane[3] = {shared(a.x, bb.x, c.x), shared(a.y, bb.y, c.y), shared(a.z, bb.z, c.z)};
         auto known_zero = [&](int i) { return in_plane[(i + 1) % 3] || in_plane[(i + 2) % 3]; };
         sign s[3];
         s[0] = known_zero(0) ? sign::zero : k.sgn([=](auto L) { return (L(bb.y) - L(a.y)) * (L(c.z) - L(a.z)) - (L(bb.z) - L(a.z)) * (L(c.y) - L(a.y)); });
