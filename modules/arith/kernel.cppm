@@ -19,6 +19,7 @@
 module;
 #include <array>
 #include <cstdint>
+#include <utility>
 export module incidence.arith:kernel;
 import incidence.core;
 import :eft;
@@ -179,6 +180,30 @@ struct lift_range {
     }
 };
 
+// Degree probe at compile time: the least and greatest degree of a predicate's terms, in its type
+// (degree_span<Lo, Hi>), so a kernel can ask whether a predicate is homogeneous without running it.
+template <int Lo, int Hi>
+struct degree_span {
+    static constexpr int lo = Lo, hi = Hi;
+};
+template <int A, int B, int C, int D>
+[[nodiscard]] constexpr degree_span<(A < C ? A : C), (B > D ? B : D)> operator+(degree_span<A, B>, degree_span<C, D>) { return {}; }
+template <int A, int B, int C, int D>
+[[nodiscard]] constexpr degree_span<(A < C ? A : C), (B > D ? B : D)> operator-(degree_span<A, B>, degree_span<C, D>) { return {}; }
+template <int A, int B, int C, int D>
+[[nodiscard]] constexpr degree_span<A + C, B + D> operator*(degree_span<A, B>, degree_span<C, D>) { return {}; }
+template <int A, int B>
+[[nodiscard]] constexpr degree_span<A, B> operator-(degree_span<A, B>) { return {}; }
+template <int A, int B>
+[[nodiscard]] constexpr degree_span<A, B> abs(degree_span<A, B>) { return {}; }
+struct lift_degree {
+    [[nodiscard]] constexpr degree_span<1, 1> operator()(double) const { return {}; }
+};
+// Whether every term of the predicate f has the same degree in its lifted inputs.
+template <class F>
+inline constexpr bool homogeneous = decltype(std::declval<const F&>()(lift_degree{}))::lo ==
+                                    decltype(std::declval<const F&>()(lift_degree{}))::hi;
+
 // Inputs times 2^shift, exact by the caller's choice of shift (no overflow, no result below the
 // normal range), then lifted as Lift lifts them.
 template <class Lift>
@@ -310,6 +335,63 @@ struct filter_kernel {
     // filter cannot prove it, and the query's certainty is untouched.
     template <class F>
     [[nodiscard, gnu::always_inline]] constexpr sign probe(const F& f) { return to_sign(proven_sign(f(lift_filter{}))); }
+};
+
+// The filter on every input times one power of two, for a whole query whose scene lies far from
+// scale 1 (near 2^-500 or 2^500 the filter's permanents leave its trusted range, whatever the
+// configuration). A homogeneous predicate of degree d only changes by the factor 2^(d s), so its
+// sign is kept, provided every scaled input is exact. An input that would fall below the normal
+// range is lifted as NaN, which makes the value and its permanent NaN and the sign unproven (an
+// overflow leaves an infinite or NaN permanent by itself). A predicate that is not homogeneous is
+// filtered on its inputs as they are. Used where the shapes cannot be scaled by value (views of
+// vertices), at run time only (constant evaluation refuses NaN).
+struct lift_scaled_filter {
+    double factor; // 2^s, |s| <= 1022
+    [[nodiscard, gnu::always_inline]] constexpr filtered<0> operator()(double x) const {
+        const double y = x * factor;
+        return lift_filtered(abs(y) < 0x1p-1022 && x != 0.0 ? __builtin_nan("") : y);
+    }
+};
+// Where the scaled filter cannot prove a sign and every scaled input was exact: plain double with
+// every operation exact, then double-double, on the scaled inputs (an exact zero, from coplanar or
+// axis-aligned inputs, is the commonest reason). +1, -1, 0 when settled; 2 when not.
+template <class F>
+[[nodiscard, gnu::noinline]] constexpr int settle_scaled(F f, double factor) {
+    if (const exact_double x = f(lift_scaled<lift_exact_double>{factor}); x.exact) return x.v > 0.0 ? 1 : (x.v < 0.0 ? -1 : 0);
+    if (const int s = proven_sign(f(lift_scaled<lift_filter2>{factor})); s != 0) return s;
+    return 2;
+}
+struct scaled_filter_kernel {
+    double factor;          // 2^s
+    double unproven = -1.0; // as in filter_kernel
+    [[nodiscard]] constexpr bool failed() const { return !(unproven < 0.0); }
+    template <class F>
+    [[nodiscard, gnu::always_inline]] constexpr int proven(const F& f) const { // +1, -1, 0 (settled exactly zero), 2 (unproven)
+        if constexpr (homogeneous<F>) {
+            const auto v = f(lift_scaled_filter{factor});
+            if (const int s = proven_sign(v); s != 0) return s;
+            // not where a NaN permanent says an input was not exact
+            return v.p == v.p ? settle_scaled(f, factor) : 2;
+        } else {
+            const int s = proven_sign(f(lift_filter{}));
+            return s != 0 ? s : 2;
+        }
+    }
+    template <class F>
+    [[nodiscard, gnu::always_inline]] constexpr sign sgn(const F& f) {
+        const int s = proven(f);
+        if (s == 2) {
+            unproven = 0.0;
+            return sign::zero;
+        }
+        return to_sign(s);
+    }
+    // A check whose failure decides nothing: only a proven nonzero sign counts.
+    template <class F>
+    [[nodiscard, gnu::always_inline]] constexpr sign probe(const F& f) {
+        const int s = proven(f);
+        return s == 2 ? sign::zero : to_sign(s);
+    }
 };
 
 // A probe's second chance, out of line: the scaled filter, where the permanent left the filter's

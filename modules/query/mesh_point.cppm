@@ -176,8 +176,11 @@ template <class K, class Q>
         for (std::size_t j = 0; j < 4; ++j)
             if (const int r = crossings(k, m, q, j, true); r >= 0) return r == 1;
     const std::size_t tries = 8 * m.triangles.size() + m.vertices.size() + 8;
-    for (std::size_t j = 0; j < tries; ++j)
+    for (std::size_t j = 0; j < tries; ++j) {
         if (const int r = crossings(k, m, q, j, false); r >= 0) return r == 1;
+        if constexpr (requires { k.failed(); })
+            if (k.failed()) return false; // a filter that failed a sign: its answer is discarded
+    }
     return false; // reached only by inexact arithmetic (the approximate tier, a filter's guess)
 }
 template <class K>

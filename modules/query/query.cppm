@@ -168,10 +168,37 @@ concept approximate_override = requires(const A& a, const B& b) { pair::intersec
 // largest length is 2^60 or more, or below 2^-60, the pair is scaled towards scale 1
 // (pair::scene::normalized) and filtered again before anything is exact: in a scene near 2^-500
 // or 2^500 the filter's range, not the configuration, is what failed. Both filter passes go
-// through one call of the body, so it is compiled (and inlined) once.
+// through one call of the body, so it is compiled (and inlined) once. A pair with a view (a mesh,
+// a polygon), which is not copied, is filtered again with every input scaled as it is lifted
+// (arith::scaled_filter_kernel), through a second instance of the body.
+template <class A, class B>
+inline constexpr bool scaled_by_inputs = !(pair::scene::scalable<A> && pair::scene::scalable<B>) && pair::scene::scannable<A> &&
+                                         pair::scene::scannable<B> && pair::scene::uniform_scale_shape<A> &&
+                                         pair::scene::uniform_scale_shape<B>;
+// In 3D (signs of degree 4 to 6) such a pair that looks far from scale 1 goes to the scaled pass
+// at once; in the plane (degree 2 or 3) the filter's own range reaches much further, so there the
+// scaled pass only follows a first pass that failed out of range.
+template <class A, class B>
+inline constexpr bool scaled_first = scaled_by_inputs<A, B> && !pair::scene::shape_of<A, polygon2> && !pair::scene::shape_of<B, polygon2>;
+// The pass with every input scaled by 2^-top as it is lifted, top = the exponent of the largest
+// input; nullopt when the pair is near scale 1 already (or has a value that is not finite).
+// Run time only (arith::lift_scaled_filter).
+template <class A, class B, class Body>
+[[nodiscard]] constexpr std::optional<certainty> scaled_inputs_pass(const A& a, const B& b, const Body& body) {
+    const int top = pair::scene::far_input_exponent(a, b);
+    if (top == 0) return std::nullopt;
+    arith::scaled_filter_kernel g{arith::power_of_two(-top)};
+    const bool r = body(g, a, b);
+    return g.failed() ? certainty::uncertain : to_certainty(r);
+}
 template <class A, class B, class Body>
 [[nodiscard]] constexpr certainty filter_passes(const A*& a, const B*& b, const Body& body,
                                                 std::optional<pair::scene::scaled_pair<A, B>>& scaled) {
+    // A pair with a view whose first vertex lies far from scale 1: the scaled pass first, and only
+    // (where that glance misleads, the exact tier still decides).
+    if constexpr (scaled_first<A, B>)
+        if (!__builtin_is_constant_evaluated() && pair::scene::looks_far(*a, *b))
+            if (const auto c = scaled_inputs_pass(*a, *b, body)) return *c;
     for (;;) {
         arith::filter_kernel f;
         const bool r = body(f, *a, *b);
@@ -182,6 +209,9 @@ template <class A, class B, class Body>
                     a = &scaled->a, b = &scaled->b;
                     continue;
                 }
+        } else if constexpr (scaled_by_inputs<A, B>) {
+            if (!__builtin_is_constant_evaluated() && !arith::in_trusted_range(f.unproven) && !(scaled_first<A, B> && pair::scene::looks_far(*a, *b)))
+                if (const auto c = scaled_inputs_pass(*a, *b, body)) return *c;
         }
         return certainty::uncertain;
     }

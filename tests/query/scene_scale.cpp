@@ -3,7 +3,10 @@
 // to 2^-480..2^480 exactly as it decides the same scene at scale 1, where the first filter pass
 // alone gives up on many of them (the tests count those, so the retry is seen to work).
 #include <catch2/catch_test_macros.hpp>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <vector>
 import incidence;
 #include "../support/testing.hpp"
 
@@ -188,6 +191,90 @@ TEST_CASE("scene_scale: classify decides a scene far from scale 1 as at scale 1"
         const sphere3 b{rp(r), r.uniform(0, 0.5)};
         check(t, a, b, times(a, k), times(b, k));
     });
+}
+
+namespace {
+// A planar polygon (a star of 5..9 vertices around a grid point, in the plane spanned by two
+// small integer vectors, every coordinate exact) and the same polygon with every coordinate
+// times 2^k: views of two vertex arrays.
+struct star_polygon {
+    std::vector<point3> v, vs;
+    polygon3 g{}, gs{};
+    bool make(support::rng& r, int k) {
+        auto grid = [&] { return std::ldexp(double(r.integer(-1024, 1024)), -10); };
+        auto small_vec = [&] { return vec3{double(r.integer(-2, 2)), double(r.integer(-2, 2)), double(r.integer(-2, 2))}; };
+        const point3 c{grid(), grid(), grid()};
+        const vec3 e1 = small_vec(), e2 = small_vec();
+        const int n = r.integer(5, 9);
+        v.clear();
+        for (int i = 0; i < n; ++i) { // u, v multiples of 1/32: every sum below is exact
+            const double a = 6.283185307179586 * i / n, rad = r.uniform(0.2, 0.7);
+            const double u = std::round(32 * rad * std::cos(a)) / 32, w = std::round(32 * rad * std::sin(a)) / 32;
+            v.push_back(c + e1 * u + e2 * w);
+        }
+        vs.clear();
+        for (const point3& p : v) vs.push_back(times(p, k));
+        const auto a = polygon3::make(v), b = polygon3::make(vs);
+        if (!a.has_value() || !b.has_value()) return false;
+        g = a.value(), gs = b.value();
+        return true;
+    }
+};
+} // namespace
+
+TEST_CASE("scene_scale: a pair with a view is filtered again with every input scaled", "[query][scene_scale]") {
+    // polygon3 and mesh3 are views, not copied: the retry scales every input (directions too) as
+    // the filter lifts it (arith::scaled_filter_kernel). The directions of the rays are scaled
+    // here as well, as a scene's directions (differences of its points) would be.
+    const tally t1 = run("polygon_segment", [](support::rng& r, tally& t, int k) {
+        star_polygon p;
+        if (!p.make(r, k)) return;
+        const point3 c = rp(r);
+        const segment3 s{near(r, c, 0.8), near(r, c, 0.8)};
+        check(t, p.g, s, p.gs, times(s, k));
+    });
+    const tally t2 = run("polygon_triangle", [](support::rng& r, tally& t, int k) {
+        star_polygon p;
+        if (!p.make(r, k)) return;
+        const triangle3 b = rtri(r);
+        check(t, p.g, b, p.gs, times(b, k));
+    });
+    const tally t3 = run("polygon_ray", [](support::rng& r, tally& t, int k) {
+        star_polygon p;
+        if (!p.make(r, k)) return;
+        const ray3 a{rp(r), rv(r)};
+        check(t, p.g, a, p.gs, ray3{times(a.origin, k), vec3{times(a.direction.x, k), times(a.direction.y, k), times(a.direction.z, k)}});
+    });
+    const tally t4 = run("mesh_segment", [](support::rng& r, tally& t, int k) {
+        const tetrahedron3 q{rp(r), rp(r), rp(r), rp(r)};
+        const point3 pts[4] = {q.a, q.b, q.c, q.d};
+        point3 spts[4];
+        for (int i = 0; i < 4; ++i) spts[i] = times(pts[i], k);
+        const std::array<std::uint32_t, 3> tri[4] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}; // closed (inside by parity)
+        const auto m = mesh3::make(pts, tri), ms = mesh3::make(spts, tri);
+        if (!m.has_value() || !ms.has_value()) return;
+        const point3 c = rp(r);
+        const segment3 s{near(r, c, 0.8), near(r, c, 0.8)};
+        check(t, m.value(), s, ms.value(), times(s, k));
+    });
+    for (const tally& t : {t1, t2, t3, t4}) CHECK(t.first_pass_failed > t.cases / 4);
+}
+
+TEST_CASE("scene_scale: the scaled retry never trusts an input that scaling would lose", "[query][scene_scale]") {
+    // A square at 2^600 in the plane z = 0 and a segment above it, at heights 2^-1000 and
+    // 2^-1001: scaled by 2^-600 for the filter, both heights would fall to zero and the segment
+    // would lie in the square. They are lifted as NaN instead, and the exact tier decides.
+    const double far = 0x1p600;
+    const point3 sq[4] = {{-far, -far, 0}, {far, -far, 0}, {far, far, 0}, {-far, far, 0}};
+    const polygon3 g = polygon3::make(sq).value();
+    const segment3 above{{0, 0, 0x1p-1000}, {1, 1, 0x1p-1001}};
+    const segment3 through{{0, 0, 0x1p-1000}, {1, 1, -0x1p-1001}};
+    CHECK(classify(g, above) != certainty::yes);
+    CHECK_FALSE(intersects(g, above));
+    CHECK_FALSE(intersects<aggressive>(g, above));
+    CHECK(intersects(g, through));
+    CHECK(intersects<conservative>(g, through));
+    CHECK(classify(g, through) != certainty::no);
 }
 
 } // namespace test_query_scene_scale
