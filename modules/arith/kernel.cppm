@@ -200,9 +200,8 @@ struct lift_degree {
     [[nodiscard]] constexpr degree_span<1, 1> operator()(double) const { return {}; }
 };
 // Whether every term of the predicate f has the same degree in its lifted inputs.
-template <class F>
-inline constexpr bool homogeneous = decltype(std::declval<const F&>()(lift_degree{}))::lo ==
-                                    decltype(std::declval<const F&>()(lift_degree{}))::hi;
+template <class F, class D = decltype(std::declval<const F&>()(lift_degree{}))>
+inline constexpr bool homogeneous = D::lo == D::hi;
 
 // Inputs times 2^shift, exact by the caller's choice of shift (no overflow, no result below the
 // normal range), then lifted as Lift lifts them.

@@ -172,9 +172,8 @@ concept approximate_override = requires(const A& a, const B& b) { pair::intersec
 // a polygon), which is not copied, is filtered again with every input scaled as it is lifted
 // (arith::scaled_filter_kernel), through a second instance of the body.
 template <class A, class B>
-inline constexpr bool scaled_by_inputs = !(pair::scene::scalable<A> && pair::scene::scalable<B>) && pair::scene::scannable<A> &&
-                                         pair::scene::scannable<B> && pair::scene::uniform_scale_shape<A> &&
-                                         pair::scene::uniform_scale_shape<B>;
+inline constexpr bool scaled_by_inputs =
+    !(pair::scene::scalable<A> && pair::scene::scalable<B>) && pair::scene::scannable<A> && pair::scene::scannable<B>;
 // In 3D (signs of degree 4 to 6) such a pair that looks far from scale 1 goes to the scaled pass
 // at once; in the plane (degree 2 or 3) the filter's own range reaches much further, so there the
 // scaled pass only follows a first pass that failed out of range.
@@ -196,9 +195,12 @@ template <class A, class B, class Body>
                                                 std::optional<pair::scene::scaled_pair<A, B>>& scaled) {
     // A pair with a view whose first vertex lies far from scale 1: the scaled pass first, and only
     // (where that glance misleads, the exact tier still decides).
+    bool scaled_tried = false;
     if constexpr (scaled_first<A, B>)
-        if (!__builtin_is_constant_evaluated() && pair::scene::looks_far(*a, *b))
+        if (!__builtin_is_constant_evaluated() && pair::scene::looks_far(*a, *b)) {
             if (const auto c = scaled_inputs_pass(*a, *b, body)) return *c;
+            scaled_tried = true; // near scale 1 after all: the plain pass, and no second scan
+        }
     for (;;) {
         arith::filter_kernel f;
         const bool r = body(f, *a, *b);
@@ -210,7 +212,7 @@ template <class A, class B, class Body>
                     continue;
                 }
         } else if constexpr (scaled_by_inputs<A, B>) {
-            if (!__builtin_is_constant_evaluated() && !arith::in_trusted_range(f.unproven) && !(scaled_first<A, B> && pair::scene::looks_far(*a, *b)))
+            if (!__builtin_is_constant_evaluated() && !scaled_tried && !arith::in_trusted_range(f.unproven))
                 if (const auto c = scaled_inputs_pass(*a, *b, body)) return *c;
         }
         return certainty::uncertain;

@@ -99,12 +99,16 @@ struct scaling { // x * 2^s, and whether every product was exact (it scales back
 template <class S>
 concept scalable = requires(S& s, scaling& v) { lengths(s, v); };
 
-// inputs(shape, v): v(x) for every double the shape's signs lift (lengths and directions alike),
-// read only; the views included. For the filter pass that scales every input by one power of two
-// (arith::scaled_filter_kernel), which needs no copy of a view's vertices.
+// inputs(shape, v): v(x) for every double the shape's signs lift, read only, for the shapes whose
+// signs take every input to the same power in a scene: the views of vertices (which are not copied
+// to be scaled) and points, segments, triangles, tetrahedra, boxes, rays and lines (whose
+// directions a scene at 2^500 has at 2^500 too). For the filter pass that scales every input by
+// one power of two (arith::scaled_filter_kernel). Shapes with unit normals or axes (planes,
+// oriented boxes, k-DOPs, frustums, convex polyhedra, spheres' radii aside) mix magnitudes that one
+// factor for all cannot bring together: measured slower, so they have no inputs() here.
 template <class S, class V>
     requires shape_of<S, point3> || shape_of<S, point2> || shape_of<S, segment3> || shape_of<S, segment2> ||
-             shape_of<S, triangle3> || shape_of<S, tetrahedron3> || shape_of<S, aabb3> || shape_of<S, sphere3> || kdop_shape<S>
+             shape_of<S, triangle3> || shape_of<S, tetrahedron3> || shape_of<S, aabb3>
 constexpr void inputs(const S& s, V& v) { lengths(s, v); }
 template <class S, class V>
     requires shape_of<S, ray3> || shape_of<S, line3>
@@ -112,27 +116,10 @@ constexpr void inputs(const S& r, V& v) { lengths(r.origin, v), v(r.direction.x)
 template <class S, class V>
     requires shape_of<S, ray2> || shape_of<S, line2>
 constexpr void inputs(const S& r, V& v) { lengths(r.origin, v), v(r.direction.x), v(r.direction.y); }
+template <class S>
+concept view_shape = shape_of<S, polygon2> || shape_of<S, polygon3> || shape_of<S, mesh3>;
 template <class S, class V>
-    requires shape_of<S, plane3>
-constexpr void inputs(const S& p, V& v) { v(p.normal.x), v(p.normal.y), v(p.normal.z), v(p.offset); }
-template <class S, class V>
-    requires shape_of<S, obb3>
-constexpr void inputs(const S& b, V& v) {
-    lengths(b, v);
-    for (const vec3& a : b.axes) v(a.x), v(a.y), v(a.z);
-}
-template <class S, class V>
-    requires shape_of<S, frustum3>
-constexpr void inputs(const S& f, V& v) {
-    for (const plane3& p : f.planes) inputs(p, v);
-}
-template <class S, class V>
-    requires shape_of<S, convex_polyhedron3>
-constexpr void inputs(const S& c, V& v) {
-    for (int i = 0; i < c.count && i < convex_polyhedron3::capacity; ++i) inputs(c.planes[static_cast<unsigned>(i)], v);
-}
-template <class S, class V>
-    requires shape_of<S, polygon2> || shape_of<S, polygon3> || shape_of<S, mesh3>
+    requires view_shape<S>
 constexpr void inputs(const S& s, V& v) {
     for (const auto& p : s.vertices) lengths(p, v);
 }
@@ -141,7 +128,7 @@ concept scannable = requires(const S& s, exponent_scan& v) { inputs(s, v); };
 // A view's first vertex, any other shape's every input: a glance at the scene's scale in O(1).
 template <scannable S, class V>
 constexpr void first_inputs(const S& s, V& v) {
-    if constexpr (shape_of<S, polygon2> || shape_of<S, polygon3> || shape_of<S, mesh3>) {
+    if constexpr (view_shape<S>) {
         if (!s.vertices.empty()) lengths(s.vertices[0], v);
     } else {
         inputs(s, v);
@@ -154,15 +141,6 @@ template <scannable A, scannable B>
     first_inputs(a, e), first_inputs(b, e);
     return e.finite && e.top > -(1 << 20) && (e.top <= -60 || e.top >= 60);
 }
-// The pairs whose signs take every input to the same power: a view of vertices with points,
-// segments, triangles, tetrahedra, boxes, rays and lines (whose directions a scene at 2^500 has at
-// 2^500 too) and other views. Shapes with unit normals or axes (planes, oriented boxes, k-DOPs,
-// frustums, convex polyhedra) mix magnitudes that one factor for all cannot bring together.
-template <class S>
-concept uniform_scale_shape = shape_of<S, point3> || shape_of<S, segment3> || shape_of<S, triangle3> ||
-                              shape_of<S, tetrahedron3> || shape_of<S, aabb3> || shape_of<S, ray3> || shape_of<S, line3> ||
-                              shape_of<S, polygon3> || shape_of<S, mesh3> || shape_of<S, point2> ||
-                              shape_of<S, segment2> || shape_of<S, ray2> || shape_of<S, line2> || shape_of<S, polygon2>;
 
 // The exponent of the pair's largest input (directions included) when it is 2^60 or more, or
 // below 2^-60, every input is finite and 2^-top is a double; 0 otherwise.
