@@ -351,11 +351,12 @@ struct lift_scaled_filter {
         return lift_filtered(abs(y) < 0x1p-1022 && x != 0.0 ? __builtin_nan("") : y);
     }
 };
-// Where the scaled filter cannot prove a sign and every scaled input was exact: plain double with
-// every operation exact, then double-double, on the scaled inputs (an exact zero, from coplanar or
-// axis-aligned inputs, is the commonest reason). +1, -1, 0 when settled; 2 when not.
+// The exact fallback's two cheap stages for a sign the filter could not prove, on the inputs times
+// factor (a power of two that keeps every input exact; 1 for the inputs as they are): plain double
+// with every operation exact (an exact zero, from coplanar or axis-aligned inputs, is the
+// commonest reason), then double-double. +1, -1, 0 when settled; 2 when not.
 template <class F>
-[[nodiscard, gnu::noinline]] constexpr int settle_scaled(F f, double factor) {
+[[nodiscard, gnu::noinline]] constexpr int settle_cheaply(F f, double factor) {
     if (const exact_double x = f(lift_scaled<lift_exact_double>{factor}); x.exact) return x.v > 0.0 ? 1 : (x.v < 0.0 ? -1 : 0);
     if (const int s = proven_sign(f(lift_scaled<lift_filter2>{factor})); s != 0) return s;
     return 2;
@@ -370,7 +371,7 @@ struct scaled_filter_kernel {
             const auto v = f(lift_scaled_filter{factor});
             if (const int s = proven_sign(v); s != 0) return s;
             // not where a NaN permanent says an input was not exact
-            return v.p == v.p ? settle_scaled(f, factor) : 2;
+            return v.p == v.p ? settle_cheaply(f, factor) : 2;
         } else {
             const int s = proven_sign(f(lift_filter{}));
             return s != 0 ? s : 2;

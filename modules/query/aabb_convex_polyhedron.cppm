@@ -42,8 +42,7 @@ template <class K, class F>
     const sign s = arith::probe(k, f);
     if (s != sign::zero) return s;
     if constexpr (std::is_same_v<K, arith::filter_kernel>) {
-        if (const arith::exact_double x = f(arith::lift_exact_double{}); x.exact) return arith::sign_of_double(x.v);
-        if (const int t = arith::proven_sign(f(arith::lift_filter2{})); t != 0) return arith::to_sign(t);
+        if (const int t = arith::settle_cheaply(f, 1.0); t != 2) return arith::to_sign(t);
     }
     return k.sgn(f);
 }
