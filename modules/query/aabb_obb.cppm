@@ -5,13 +5,14 @@
 // cross products of an axis of one with an axis of the other), the aabb3 as the zonotope with
 // centre (min + max) / 2 and the unit axes, so no rounded centre is ever compared. Each axis is one
 // sign of degree 4: |w . (2 c_b - 2 c_a)| against the sum of twice the projected radii
-// (see separating_axes for the flat cases).
+// (see separating_axes for the flat cases). Before them the three coordinate axes, and each sign
+// first against a bound from the inputs' largest magnitudes, as in obb_obb.
 // contains(aabb3, obb3) and contains(obb3, aabb3): the support functions compared on the same axes
 // (sat::zonotope_contains), signs of degree 4.
 // Source: Gottschalk, Lin and Manocha, "OBBTree", SIGGRAPH 1996, section 5.
-// Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
-// magnitudes lie in [2^-500, 2^500], wrong only when some axis sign is within 2^-40 of its
-// permanent (the sets touch or nearly touch); tests/query/aabb_obb.cpp checks it.
+// Approximate tier: the same signs (coordinate axes included) in plain double. Error bound: for
+// inputs whose nonzero magnitudes lie in [2^-500, 2^500], wrong only when some axis sign is within
+// 2^-40 of its permanent (the sets touch or nearly touch); tests/query/aabb_obb.cpp checks it.
 export module incidence.query:aabb_obb;
 import incidence.core;
 import incidence.arith;

@@ -4,12 +4,15 @@
 // Method (exact tiers): the 15 separating axes (the face normals of each parallelepiped, a_j x a_k,
 // which are its axes when they are orthonormal, and the nine cross products a_i x b_j). Each axis
 // is one sign of degree 4: |w . (2 c_b - 2 c_a)| against twice the sum of the projected radii
-// h_i |w . a_i| (see separating_axes for the flat cases).
+// h_i |w . a_i| (see separating_axes for the flat cases). Before them the three coordinate axes,
+// a cheap certificate for boxes whose bounding boxes are apart; and each of the 15 signs is first
+// compared with a bound from the inputs' largest magnitudes (sat::box_box_static_bounds), the
+// filter's own permanents only where that bound is too coarse.
 // contains(obb3, obb3): the support functions compared on the same axes (sat::zonotope_contains).
 // Source: Gottschalk, Lin and Manocha, "OBBTree", SIGGRAPH 1996, section 5 (15 axes).
-// Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
-// magnitudes lie in [2^-500, 2^500], wrong only when some axis sign is within 2^-40 of its
-// permanent (the sets touch or nearly touch); tests/query/obb_obb.cpp checks it.
+// Approximate tier: the same signs (coordinate axes included) in plain double. Error bound: for
+// inputs whose nonzero magnitudes lie in [2^-500, 2^500], wrong only when some axis sign is within
+// 2^-40 of its permanent (the sets touch or nearly touch); tests/query/obb_obb.cpp checks it.
 export module incidence.query:obb_obb;
 import incidence.core;
 import incidence.arith;
@@ -33,7 +36,11 @@ export namespace incidence::pair {
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const obb3& a, const obb3& b) {
     if (!sat::well_formed(a) || !sat::well_formed(b)) return false;
-    return obb_before(a, b) ? sat::zonotopes_intersect(k, sat::of(a), sat::of(b)) : sat::zonotopes_intersect(k, sat::of(b), sat::of(a));
+    const bool before = obb_before(a, b);
+    const obb3& p = before ? a : b;
+    const obb3& q = before ? b : a;
+    if (const int f = sat::box_box_fast(k, p, q); f >= 0) return f == 1; // the boxes read in place
+    return sat::zonotopes_intersect_general(k, sat::of(p), sat::of(q));
 }
 // Is b inside a? Malformed boxes (NaN or negative extents) contain nothing and lie in nothing.
 template <class K>

@@ -14,6 +14,8 @@
 // theorem and its 15 box-box axes); Ericson, Real-Time Collision Detection (2005), sections
 // 4.4.1 and 5.2.1 (the axis sets for box-triangle and box-segment); the flat cases follow from
 // the axes being the facet normals of the Minkowski difference (ibid., section 5.2.1).
+module;
+#include <optional>
 export module incidence.query:separating_axes;
 import incidence.core;
 import incidence.arith;
@@ -162,11 +164,10 @@ template <class K, class Separates, class Offset>
     return false;
 }
 
-// Zonotope a (bounded) against zonotope b (bounded, or with a ray or line direction).
+// Zonotope a (bounded) against zonotope b (bounded, or with a ray or line direction): the general
+// path alone, for a caller that tried box_box_fast already; zonotopes_intersect tries it first.
 template <class K>
-[[nodiscard]] constexpr bool zonotopes_intersect(K& k, const zonotope& a, const zonotope& b) {
-    if (a.n == 3 && b.n == 3 && b.r == reach::none)
-        if (const int f = box_box_fast(k, a, b); f >= 0) return f == 1;
+[[nodiscard]] constexpr bool zonotopes_intersect_general(K& k, const zonotope& a, const zonotope& b) {
     directions ds;
     add_generators(ds, a);
     add_generators(ds, b);
@@ -192,6 +193,12 @@ template <class K>
     };
     auto offset = [=](auto L) { return centre2(L, b) - centre2(L, a); };
     return !some_axis_separates(k, ds, false, ds.n, separates, offset);
+}
+template <class K>
+[[nodiscard]] constexpr bool zonotopes_intersect(K& k, const zonotope& a, const zonotope& b) {
+    if (a.n == 3 && b.n == 3 && b.r == reach::none)
+        if (const int f = box_box_fast(k, a, b); f >= 0) return f == 1;
+    return zonotopes_intersect_general(k, a, b);
 }
 
 // Is the bounded zonotope `in` inside the bounded zonotope `out`? Support functions: in lies in out
@@ -223,31 +230,71 @@ template <class K>
 // rewritten over shared determinants so each is a few operations (Gottschalk's R = A^T B idea,
 // with the parallelepipeds' face normals). With the face normals n_m = a_j x a_k (m, j, k cyclic):
 //   face axis n_m of a:   |n_m . d| - h_m |det a| - sum_j g_j |n_m . b_j|
-//   edge axis a_i x b_j:  |det(a_i, b_j, d)| - sum_{k != i} h_k |n_{m(i,k)} . b_j|
+//   edge axis a_i x b_j:  |a_i . (b_j x d)| - sum_{k != i} h_k |n_{m(i,k)} . b_j|
 //                                             - sum_{k != j} g_k |a_i . n'_{m(j,k)}|
 // (d = 2 c_b - 2 c_a, h and g twice the extents, m(i, k) the third index), the same polynomials
 // as the general path's up to terms that vanish identically, so the same signs. The filter
 // answers when every sign is proven; then one separating axis is a certificate, and when none
 // separates and one box is solid (nonzero extents, nonzero determinant) the 15 axes were
-// complete. Anything else (a sign it cannot prove, flat boxes) returns nullopt: the general
-// path decides. The approximate kernel evaluates the same in double.
-// sign_of(v): +1 proven positive, -1 proven negative or zero-or-less, 0 unknown.
-template <class L, class Sign>
-[[nodiscard]] constexpr int box_box_pass(L l, const zonotope& a, const zonotope& b, Sign sign_of) { // 1 yes, 0 no, -1 undecided
+// complete. Anything else (a sign it cannot prove, flat boxes) returns -1: the general path
+// decides. The approximate kernel evaluates the same in double.
+// A box is a zonotope with three generators or an obb3 read in place (no zonotope is built:
+// obb_obb's own call); box_generator, box_centre2, box_extent2 and box_solid read either.
+// sign_of(v, kind): +1 proven positive, -1 proven negative or zero-or-less, 0 unknown; kind says
+// which of the five families v belongs to, for a bound per family (box_box_bounds).
+template <class L>
+[[nodiscard]] constexpr auto box_generator(L l, const zonotope& z, unsigned i) { return lift(l, z.g[i]); }
+template <class L>
+[[nodiscard]] constexpr auto box_generator(L l, const obb3& b, unsigned i) { return arith::lift(l, b.axes[i]); }
+template <class L>
+[[nodiscard]] constexpr auto box_centre2(L l, const zonotope& z) { return centre2(l, z); }
+template <class L>
+[[nodiscard]] constexpr auto box_centre2(L l, const obb3& b) { return arith::lift(l, b.center) + arith::lift(l, b.center); }
+template <class L>
+[[nodiscard]] constexpr auto box_extent2(L l, const zonotope& z, unsigned i) { return l(z.hp[i]) + l(z.hq[i]); }
+template <class L>
+[[nodiscard]] constexpr auto box_extent2(L l, const obb3& b, unsigned i) { return l(b.half_extents[i]) + l(b.half_extents[i]); }
+[[nodiscard]] constexpr bool box_solid(const zonotope& z) { return z.hp[0] != -z.hq[0] && z.hp[1] != -z.hq[1] && z.hp[2] != -z.hq[2]; }
+[[nodiscard]] constexpr bool box_solid(const obb3& b) { return b.half_extents[0] != 0 && b.half_extents[1] != 0 && b.half_extents[2] != 0; }
+
+// The coordinate axes first (box_box_fast): not among the 15, but they separate most pairs that
+// lie far apart (their bounding boxes are apart) for a few products. A separating one is a
+// certificate like any other; one that does not separate, or is not proven, decides nothing.
+// sign_of(v): +1 proven positive, anything else otherwise.
+template <class L, class BoxA, class BoxB, class Sign>
+[[nodiscard]] constexpr bool coordinate_axis_separates(L l, const BoxA& a, const BoxB& b, Sign sign_of) {
+    const auto d = box_centre2(l, b) - box_centre2(l, a);
+    const auto one = l(1.0);
+    const auto A0 = box_generator(l, a, 0), A1 = box_generator(l, a, 1), A2 = box_generator(l, a, 2);
+    const auto B0 = box_generator(l, b, 0), B1 = box_generator(l, b, 1), B2 = box_generator(l, b, 2);
+    const auto a0 = box_extent2(l, a, 0), a1 = box_extent2(l, a, 1), a2 = box_extent2(l, a, 2);
+    const auto b0 = box_extent2(l, b, 0), b1 = box_extent2(l, b, 1), b2 = box_extent2(l, b, 2);
+    for (unsigned c = 0; c < 3; ++c) {
+        auto at = [c](const auto& v) { return c == 0 ? v.x : c == 1 ? v.y : v.z; };
+        if (sign_of(one * magnitude(at(d)) - (a0 * magnitude(at(A0)) + a1 * magnitude(at(A1)) + a2 * magnitude(at(A2))) -
+                    (b0 * magnitude(at(B0)) + b1 * magnitude(at(B1)) + b2 * magnitude(at(B2)))) > 0)
+            return true;
+    }
+    return false;
+}
+
+enum box_axis_kind : unsigned { face_of_a, face_of_b, edge_pair, det_of_a, det_of_b };
+template <class L, class BoxA, class BoxB, class Sign>
+[[nodiscard]] constexpr int box_box_pass(L l, const BoxA& a, const BoxB& b, Sign sign_of) { // 1 yes, 0 no, -1 undecided
     using arith::cross;
     using arith::dot;
-    const auto A0 = lift(l, a.g[0]), A1 = lift(l, a.g[1]), A2 = lift(l, a.g[2]);
-    const auto B0 = lift(l, b.g[0]), B1 = lift(l, b.g[1]), B2 = lift(l, b.g[2]);
+    const auto A0 = box_generator(l, a, 0), A1 = box_generator(l, a, 1), A2 = box_generator(l, a, 2);
+    const auto B0 = box_generator(l, b, 0), B1 = box_generator(l, b, 1), B2 = box_generator(l, b, 2);
     const decltype(A0) A[3] = {A0, A1, A2};
     const decltype(B0) B[3] = {B0, B1, B2};
-    const auto d = centre2(l, b) - centre2(l, a);
+    const auto d = box_centre2(l, b) - box_centre2(l, a);
     const auto one = l(1.0);
     using H = decltype(l(0.0) + l(0.0));
-    H hA[3], hB[3];
-    for (unsigned i = 0; i < 3; ++i) hA[i] = l(a.hp[i]) + l(a.hq[i]), hB[i] = l(b.hp[i]) + l(b.hq[i]);
+    const H hA[3] = {box_extent2(l, a, 0), box_extent2(l, a, 1), box_extent2(l, a, 2)};
+    const H hB[3] = {box_extent2(l, b, 0), box_extent2(l, b, 1), box_extent2(l, b, 2)};
     bool all = true; // every axis proven not to separate so far
-    auto axis = [&](const auto& v) {
-        const int s = sign_of(v);
+    auto axis = [&](const auto& v, box_axis_kind kind) {
+        const int s = sign_of(v, kind);
         all = all && s < 0;
         return s > 0;
     };
@@ -255,45 +302,114 @@ template <class L, class Sign>
     const auto n0 = cross(A1, A2), n1 = cross(A2, A0), n2 = cross(A0, A1);
     const decltype(n0) nA[3] = {n0, n1, n2};
     const auto detA = dot(n0, A0);
-    using N = decltype(magnitude(dot(n0, B0)));
-    N NA[3][3], NB[3][3]; // |n_m . b_j|, |a_i . n'_m|
+    decltype(magnitude(dot(n0, B0))) NA[3][3]; // |n_m . b_j|
     for (unsigned m = 0; m < 3; ++m) {
         for (unsigned j = 0; j < 3; ++j) NA[m][j] = magnitude(dot(nA[m], B[j]));
-        if (axis(one * magnitude(dot(nA[m], d)) - hA[m] * magnitude(detA) - (hB[0] * NA[m][0] + hB[1] * NA[m][1] + hB[2] * NA[m][2])))
+        if (axis(one * magnitude(dot(nA[m], d)) - hA[m] * magnitude(detA) - (hB[0] * NA[m][0] + hB[1] * NA[m][1] + hB[2] * NA[m][2]),
+                 face_of_a))
             return 0;
     }
     // b's faces
     const auto m0 = cross(B1, B2), m1 = cross(B2, B0), m2 = cross(B0, B1);
     const decltype(m0) nB[3] = {m0, m1, m2};
     const auto detB = dot(m0, B0);
+    decltype(magnitude(dot(A0, m0))) NB[3][3]; // |a_i . n'_m|
     for (unsigned m = 0; m < 3; ++m) {
         for (unsigned i = 0; i < 3; ++i) NB[i][m] = magnitude(dot(A[i], nB[m]));
-        if (axis(one * magnitude(dot(nB[m], d)) - hB[m] * magnitude(detB) - (hA[0] * NB[0][m] + hA[1] * NB[1][m] + hA[2] * NB[2][m])))
+        if (axis(one * magnitude(dot(nB[m], d)) - hB[m] * magnitude(detB) - (hA[0] * NB[0][m] + hA[1] * NB[1][m] + hA[2] * NB[2][m]),
+                 face_of_b))
             return 0;
     }
-    // the nine edge axes a_i x b_j (k = i + 1 leaves m = i + 2, and so on)
+    // the nine edge axes a_i x b_j (k = i + 1 leaves m = i + 2, and so on); (a_i x b_j) . d is
+    // a_i . (b_j x d), three cross products shared by the nine
+    const auto e0 = cross(B0, d), e1 = cross(B1, d), e2 = cross(B2, d);
+    const decltype(e0) E[3] = {e0, e1, e2};
     for (unsigned i = 0; i < 3; ++i)
         for (unsigned j = 0; j < 3; ++j) {
             const unsigned i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-            if (axis(one * magnitude(dot(cross(A[i], B[j]), d)) - (hA[i1] * NA[i2][j] + hA[i2] * NA[i1][j]) -
-                     (hB[j1] * NB[i][j2] + hB[j2] * NB[i][j1])))
+            if (axis(one * magnitude(dot(A[i], E[j])) - (hA[i1] * NA[i2][j] + hA[i2] * NA[i1][j]) - (hB[j1] * NB[i][j2] + hB[j2] * NB[i][j1]),
+                     edge_pair))
                 return 0;
         }
-    auto solid = [](const zonotope& z) { return z.hp[0] != -z.hq[0] && z.hp[1] != -z.hq[1] && z.hp[2] != -z.hq[2]; };
-    auto nonzero = [&](const auto& v) { return sign_of(v) > 0 || sign_of(-v) > 0; };
-    if (all && ((solid(a) && nonzero(detA)) || (solid(b) && nonzero(detB)))) return 1;
+    auto nonzero = [&](const auto& v, box_axis_kind kind) { return sign_of(v, kind) > 0 || sign_of(-v, kind) > 0; };
+    if (all && ((box_solid(a) && nonzero(detA, det_of_a)) || (box_solid(b) && nonzero(detB, det_of_b)))) return 1;
     return -1;
 }
 
-template <class K>
-[[nodiscard]] constexpr int box_box_fast(K&, const zonotope& a, const zonotope& b) { // 1 yes, 0 no, -1 undecided
+// A bound, per axis family, on the permanent of box_box_pass's signs (the permanent arith::filtered
+// carries: the polynomial with every input by its magnitude and every - by +), from five
+// magnitudes: alpha and beta the largest |component| of a's and b's generators, delta the largest
+// component of |2 c_a| + |2 c_b|, eta_a and eta_b twice the largest extents. With n_m = a_j x a_k
+// (each component 2 alpha^2 at most) and b_j x d (2 beta delta), term by term:
+//   face of a: 6 alpha^2 (delta + alpha eta_a + 3 beta eta_b), face of b likewise,
+//   edge pair: 6 alpha beta (delta + 2 alpha eta_a + 2 beta eta_b), det a: 6 alpha^3.
+// Each of the five is then an upper bound of the filter's permanent for every sign of its family,
+// so gamma_K times it bounds the double value's error (arith::filtered's invariant I1). The
+// permanent's own 2^-1020 per product (arith::filtered, for underflow) sums to less than 2^-700
+// when every magnitude is at most 2^150 (fewer than 200 products, cofactors below 2^310), so
+// 2^-600 is added to every bound; larger or non-finite magnitudes give no bounds (nullopt).
+// Source: the semi-static filters of Meyer and Pion, "FPG: A code generator for fast and
+// certified geometric predicates", Real Numbers and Computers 2008 (one bound from the inputs'
+// maxima per predicate, instead of one carried through every operation).
+struct box_magnitudes {
+    double generator; // the largest |component| of a generator (|to| + |from| for a difference)
+    double extent;    // the largest twice-extent (|hp| + |hq|)
+    double centre[3]; // |cp| + |cq| per coordinate
+};
+// In trees, so the maxima do not wait on each other. A NaN operand may be passed over: the signs
+// it enters are NaN, hence unproven, and the bounds stay valid for the others.
+[[nodiscard]] constexpr double largest(double x, double y) { return x > y ? x : y; }
+[[nodiscard]] constexpr double largest(double x, double y, double z) { return largest(largest(x, y), z); }
+[[nodiscard]] constexpr box_magnitudes magnitudes_of(const zonotope& z) {
+    using arith::abs;
+    auto g = [&](unsigned i) {
+        const vec3 t = z.g[i].to, f = z.g[i].from;
+        return largest(abs(t.x) + abs(f.x), abs(t.y) + abs(f.y), abs(t.z) + abs(f.z));
+    };
+    auto h = [&](unsigned i) { return abs(z.hp[i]) + abs(z.hq[i]); };
+    return {largest(g(0), g(1), g(2)), largest(h(0), h(1), h(2)), {abs(z.cp.x) + abs(z.cq.x), abs(z.cp.y) + abs(z.cq.y), abs(z.cp.z) + abs(z.cq.z)}};
+}
+[[nodiscard]] constexpr box_magnitudes magnitudes_of(const obb3& b) {
+    using arith::abs;
+    auto g = [&](unsigned i) { return largest(abs(b.axes[i].x), abs(b.axes[i].y), abs(b.axes[i].z)); };
+    const auto& h = b.half_extents;
+    return {largest(g(0), g(1), g(2)), 2.0 * largest(abs(h[0]), abs(h[1]), abs(h[2])),
+            {2.0 * abs(b.center.x), 2.0 * abs(b.center.y), 2.0 * abs(b.center.z)}};
+}
+struct box_box_bounds {
+    double permanent[5]; // by box_axis_kind
+};
+template <class BoxA, class BoxB>
+[[nodiscard]] constexpr std::optional<box_box_bounds> box_box_static_bounds(const BoxA& a, const BoxB& b) {
+    const box_magnitudes ma = magnitudes_of(a), mb = magnitudes_of(b);
+    const double al = ma.generator, be = mb.generator, ea = ma.extent, eb = mb.extent;
+    const double de = largest(ma.centre[0] + mb.centre[0], ma.centre[1] + mb.centre[1], ma.centre[2] + mb.centre[2]);
+    constexpr double top = 0x1p150;
+    if (!((al <= top) & (be <= top) & (ea <= top) & (eb <= top) & (de <= top))) return std::nullopt;
+    // (1 + 2^-30) covers the rounding of these few operations (each loses a factor 1 - 2^-53 at most)
+    constexpr double six = 6.0 * (1.0 + 0x1p-30);
+    return box_box_bounds{{six * al * al * (de + al * ea + 3.0 * be * eb), six * be * be * (de + be * eb + 3.0 * al * ea),
+                           six * al * be * (de + 2.0 * al * ea + 2.0 * be * eb), six * al * al * al, six * be * be * be}};
+}
+
+template <class K, class BoxA, class BoxB>
+[[nodiscard]] constexpr int box_box_fast(K&, const BoxA& a, const BoxB& b) { // 1 yes, 0 no, -1 undecided
     if constexpr (__is_same(K, arith::filter_kernel) || __is_same(K, arith::exact_kernel)) {
-        return box_box_pass(arith::lift_filter{}, a, b, [](const auto& v) {
-            const int s = arith::proven_sign(v);
-            return s;
-        });
+        // First the double values against the bounds from the inputs' maxima (no permanent is
+        // computed: the filtered type's permanents are dead code here, only its K is read), then,
+        // if some sign was too close to call, the filter with every permanent.
+        if (coordinate_axis_separates(arith::lift_filter{}, a, b, [](const auto& v) { return arith::proven_sign(v); })) return 0;
+        if (const auto s = box_box_static_bounds(a, b)) {
+            const int r = box_box_pass(arith::lift_filter{}, a, b, [&]<int N>(const arith::filtered<N>& v, box_axis_kind kind) {
+                const double bound = arith::error_bound(arith::filtered<N>{0.0, s->permanent[kind]}) + 0x1p-600;
+                return v.v > bound ? 1 : v.v < -bound ? -1 : 0;
+            });
+            if (r >= 0) return r;
+        }
+        return box_box_pass(arith::lift_filter{}, a, b, [](const auto& v, box_axis_kind) { return arith::proven_sign(v); });
     } else if constexpr (__is_same(K, arith::approx_kernel)) {
-        return box_box_pass(arith::lift_double{}, a, b, [](double v) { return v > 0 ? 1 : -1; });
+        if (coordinate_axis_separates(arith::lift_double{}, a, b, [](double v) { return v > 0 ? 1 : -1; })) return 0;
+        return box_box_pass(arith::lift_double{}, a, b, [](double v, box_axis_kind) { return v > 0 ? 1 : -1; });
     } else {
         return -1; // other kernels (the tests' margin kernel) take the general path
     }

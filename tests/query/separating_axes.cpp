@@ -27,13 +27,54 @@ TEST_CASE("separating_axes: the box-box fast pass agrees with the general path",
             ++decided;
             if ((fast == 1) != general) ++bad;
         }
-        arith::approx_kernel k;
-        const int approx = sat::box_box_fast(k, za, zb);
+        arith::approx_kernel k; // in the order the approximate tier takes (its rounding depends on it)
+        const int approx = pair::obb_before(a, b) ? sat::box_box_fast(k, za, zb) : sat::box_box_fast(k, zb, za);
         if (approx >= 0 && (approx == 1) != intersects<approximate>(a, b)) ++bad;
     }
     std::printf("[cases] separating_axes fast pass: %ld cases, %ld decided by the filter pass, %ld differ\n", n, decided, bad);
     CHECK(decided > n / 4);
     CHECK(bad == 0);
+}
+
+// The box pass with the bounds from the inputs' maxima alone (sat::box_box_static_bounds): every
+// answer it gives is the exact one, at scale 1, at scales up to 2^150 and down to 2^-400 (where
+// the values underflow and only the absolute term of the bound stands between them and a wrong
+// sign). Without the bound (every sign taken as computed) the same pass is wrong on some cases:
+// the comparison has something to catch.
+TEST_CASE("separating_axes: the bounds from the inputs' maxima decide only what is true", "[separating_axes]") {
+    support::rng r(support::seed() + 11);
+    long n = 0, decided = 0, bad = 0, unbounded_wrong = 0, tiny_decided = 0;
+    auto scaled = [](obb3 b, int k) {
+        b.center = point3{std::ldexp(b.center.x, k), std::ldexp(b.center.y, k), std::ldexp(b.center.z, k)};
+        for (double& h : b.half_extents) h = std::ldexp(h, k);
+        return b;
+    };
+    for (long i = 0; i < support::cases(20000); ++i) {
+        auto [a, b] = (i % 2) ? support::obb_case<obb3, obb3>::near(r, false) : support::obb_case<obb3, obb3>::random(r, false);
+        const int k = i % 5 == 0 ? r.integer(-400, -300) : i % 5 == 1 ? r.integer(100, 150) : 0;
+        a = scaled(a, k), b = scaled(b, k);
+        const bool truth = oracle::lp_intersect(support::lp(a), support::lp(b));
+        ++n;
+        if (const auto s = sat::box_box_static_bounds(a, b)) {
+            const int r1 = sat::box_box_pass(arith::lift_filter{}, a, b, [&]<int N>(const arith::filtered<N>& v, sat::box_axis_kind kind) {
+                const double bound = arith::error_bound(arith::filtered<N>{0.0, s->permanent[kind]}) + 0x1p-600;
+                return v.v > bound ? 1 : v.v < -bound ? -1 : 0;
+            });
+            if (r1 >= 0) {
+                ++decided;
+                if ((r1 == 1) != truth) ++bad;
+                if (k < -299) ++tiny_decided;
+            }
+        }
+        const int r0 = sat::box_box_pass(arith::lift_filter{}, a, b, [](const auto& v, sat::box_axis_kind) { return v.v > 0 ? 1 : v.v < 0 ? -1 : 0; });
+        if (r0 >= 0 && (r0 == 1) != truth) ++unbounded_wrong;
+    }
+    std::printf("[cases] separating_axes maxima bounds: %ld cases, %ld decided (%ld at 2^-400..2^-300), %ld wrong; "
+                "without the bound %ld wrong\n",
+                n, decided, tiny_decided, bad, unbounded_wrong);
+    CHECK(bad == 0);
+    CHECK(decided > n / 3);
+    CHECK(unbounded_wrong > 0);
 }
 
 TEST_CASE("separating_axes: configurations that need the extra axes", "[separating_axes]") {
