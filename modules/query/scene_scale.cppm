@@ -125,6 +125,9 @@ constexpr void inputs(const S& s, V& v) {
 }
 template <class S>
 concept scannable = requires(const S& s, exponent_scan& v) { inputs(s, v); };
+// Whether a largest exponent lies 2^60 or more, or below 2^-60, from scale 1: nearer, the filter's
+// range is not what failed, and scaling cannot help.
+[[nodiscard]] constexpr bool far_from_one(int top) { return top <= -60 || top >= 60; }
 // A view's first vertex, any other shape's every input: a glance at the scene's scale in O(1).
 template <scannable S, class V>
 constexpr void first_inputs(const S& s, V& v) {
@@ -139,7 +142,7 @@ template <scannable A, scannable B>
 [[nodiscard]] constexpr bool looks_far(const A& a, const B& b) {
     exponent_scan e;
     first_inputs(a, e), first_inputs(b, e);
-    return e.finite && e.top > -(1 << 20) && (e.top <= -60 || e.top >= 60);
+    return e.finite && e.top > -(1 << 20) && far_from_one(e.top);
 }
 
 // The exponent of the pair's largest input (directions included) when it is 2^60 or more, or
@@ -148,7 +151,7 @@ template <scannable A, scannable B>
 [[nodiscard]] constexpr int far_input_exponent(const A& a, const B& b) {
     exponent_scan e;
     inputs(a, e), inputs(b, e);
-    if (!e.finite || e.top < -1022 || e.top > 1022 || (e.top > -60 && e.top < 60)) return 0;
+    if (!e.finite || e.top < -1022 || e.top > 1022 || !far_from_one(e.top)) return 0;
     return e.top;
 }
 
@@ -164,7 +167,7 @@ template <scalable A, scalable B>
 [[nodiscard]] constexpr int far_exponent(const A& a, const B& b) {
     exponent_scan e;
     lengths(a, e), lengths(b, e);
-    if (!e.finite || e.top < -1074 || (e.top > -60 && e.top < 60)) return 0;
+    if (!e.finite || e.top < -1074 || !far_from_one(e.top)) return 0;
     return e.top;
 }
 // The pair scaled by 2^-top (top = far_exponent(a, b), nonzero), so that its largest length lies

@@ -392,6 +392,18 @@ template <class BoxA, class BoxB>
                            six * al * be * (de + 2.0 * al * ea + 2.0 * be * eb), six * al * al * al, six * be * be * be}};
 }
 
+// box_box_pass with every sign against those bounds alone: 1 yes, 0 no, -1 undecided (no bounds,
+// a sign too close to call, flat boxes).
+template <class BoxA, class BoxB>
+[[nodiscard]] constexpr int box_box_bounded_pass(const BoxA& a, const BoxB& b) {
+    const auto s = box_box_static_bounds(a, b);
+    if (!s) return -1;
+    return box_box_pass(arith::lift_filter{}, a, b, [&]<int N>(const arith::filtered<N>& v, box_axis_kind kind) {
+        const double bound = arith::error_bound(arith::filtered<N>{0.0, s->permanent[kind]}) + 0x1p-600;
+        return v.v > bound ? 1 : v.v < -bound ? -1 : 0;
+    });
+}
+
 template <class K, class BoxA, class BoxB>
 [[nodiscard]] constexpr int box_box_fast(K&, const BoxA& a, const BoxB& b) { // 1 yes, 0 no, -1 undecided
     if constexpr (__is_same(K, arith::filter_kernel) || __is_same(K, arith::exact_kernel)) {
@@ -399,13 +411,7 @@ template <class K, class BoxA, class BoxB>
         // computed: the filtered type's permanents are dead code here, only its K is read), then,
         // if some sign was too close to call, the filter with every permanent.
         if (coordinate_axis_separates(arith::lift_filter{}, a, b, [](const auto& v) { return arith::proven_sign(v); })) return 0;
-        if (const auto s = box_box_static_bounds(a, b)) {
-            const int r = box_box_pass(arith::lift_filter{}, a, b, [&]<int N>(const arith::filtered<N>& v, box_axis_kind kind) {
-                const double bound = arith::error_bound(arith::filtered<N>{0.0, s->permanent[kind]}) + 0x1p-600;
-                return v.v > bound ? 1 : v.v < -bound ? -1 : 0;
-            });
-            if (r >= 0) return r;
-        }
+        if (const int r = box_box_bounded_pass(a, b); r >= 0) return r;
         return box_box_pass(arith::lift_filter{}, a, b, [](const auto& v, box_axis_kind) { return arith::proven_sign(v); });
     } else if constexpr (__is_same(K, arith::approx_kernel)) {
         if (coordinate_axis_separates(arith::lift_double{}, a, b, [](double v) { return v > 0 ? 1 : -1; })) return 0;

@@ -36,7 +36,7 @@ TEST_CASE("separating_axes: the box-box fast pass agrees with the general path",
     CHECK(bad == 0);
 }
 
-// The box pass with the bounds from the inputs' maxima alone (sat::box_box_static_bounds): every
+// The box pass with the bounds from the inputs' maxima alone (sat::box_box_bounded_pass): every
 // answer it gives is the exact one, at scale 1, at scales up to 2^150 and down to 2^-400 (where
 // the values underflow and only the absolute term of the bound stands between them and a wrong
 // sign).
@@ -54,16 +54,10 @@ TEST_CASE("separating_axes: the bounds from the inputs' maxima decide only what 
         a = scaled(a, k), b = scaled(b, k);
         const bool truth = oracle::lp_intersect(support::lp(a), support::lp(b));
         ++n;
-        if (const auto s = sat::box_box_static_bounds(a, b)) {
-            const int r1 = sat::box_box_pass(arith::lift_filter{}, a, b, [&]<int N>(const arith::filtered<N>& v, sat::box_axis_kind kind) {
-                const double bound = arith::error_bound(arith::filtered<N>{0.0, s->permanent[kind]}) + 0x1p-600;
-                return v.v > bound ? 1 : v.v < -bound ? -1 : 0;
-            });
-            if (r1 >= 0) {
-                ++decided;
-                if ((r1 == 1) != truth) ++bad;
-                if (k < -299) ++tiny_decided;
-            }
+        if (const int r1 = sat::box_box_bounded_pass(a, b); r1 >= 0) {
+            ++decided;
+            if ((r1 == 1) != truth) ++bad;
+            if (k < -299) ++tiny_decided;
         }
     }
     std::printf("[cases] separating_axes maxima bounds: %ld cases, %ld decided (%ld at 2^-400..2^-300), %ld wrong\n", n, decided,
@@ -86,13 +80,8 @@ TEST_CASE("separating_axes: the bounds from the inputs' maxima decide only what 
         const bool truth = oracle::lp_intersect(support::lp(a), support::lp(b));
         if ((r0 == 1) == truth) continue;
         found = true;
-        if (const auto s = sat::box_box_static_bounds(a, b)) {
-            const int r1 = sat::box_box_pass(arith::lift_filter{}, a, b, [&]<int N>(const arith::filtered<N>& v, sat::box_axis_kind kind) {
-                const double bound = arith::error_bound(arith::filtered<N>{0.0, s->permanent[kind]}) + 0x1p-600;
-                return v.v > bound ? 1 : v.v < -bound ? -1 : 0;
-            });
-            CHECK((r1 < 0 || (r1 == 1) == truth));
-        }
+        const int r1 = sat::box_box_bounded_pass(a, b);
+        CHECK((r1 < 0 || (r1 == 1) == truth));
     }
     std::printf("[cases] separating_axes: the pass without a bound is wrong on near-degenerate case %ld of a fixed sequence\n", tries);
     CHECK(found);
