@@ -54,6 +54,14 @@ inline point3 np(double x, double y, double z) { return {nudge(x), nudge(y), nud
 inline void arr(point3 p, double* o) { o[0] = p.x; o[1] = p.y; o[2] = p.z; }
 inline void arr(vec3 p, double* o) { o[0] = p.x; o[1] = p.y; o[2] = p.z; }
 
+// The seeded source of one case set. Every set is at scale 1 near the origin (the tests cover
+// 2^-500..2^500 and far translations), so that sets of different families measure the same thing.
+inline support::rng set_rng(bool near) {
+    support::rng r(20261122 + (near ? 1 : 0));
+    r.at_scale_one = true;
+    return r;
+}
+
 enum class check { exact, conservative, aggressive, classify, approximate };
 
 // Registers one benchmark over a case set: f(case) -> bool (or certainty for classify).
@@ -207,7 +215,7 @@ template <class Case, class Truth, class Tiered>
 template <class A, class B>
 [[gnu::noinline]] std::vector<std::pair<A, B>> obb_tiers(const std::string& pair, bool near) {
     const std::string dist = near ? "near_degenerate" : "random";
-    support::rng r(20261122 + (near ? 1 : 0));
+    support::rng r = set_rng(near);
     std::vector<std::pair<A, B>> cs;
     // at scale 1, like the other sets (the tests add scales 2^-500 .. 2^500)
     while (cs.size() < set_size) cs.push_back(near ? support::obb_case<A, B>::near(r, false) : support::obb_case<A, B>::random(r, false));
@@ -217,12 +225,12 @@ template <class A, class B>
 }
 // A flat pair (points, lines, rays, segments, planes, triangles) on the tests' generators
 // (tests/support/flat_cases.hpp) at scale 1, CGAL Epeck as truth, and CGAL Epick's do_intersect.
+// Three sets: random (coordinates in [-1, 1]^3, general position), in_plane (every shape in one
+// plane z = c: exactly coplanar, the tests' other half of random cases) and near_degenerate.
 template <class A, class B>
-[[gnu::noinline]] void flat_tiers(const std::string& pair, bool near) {
-    const std::string dist = near ? "near_degenerate" : "random";
-    support::rng r(20261122 + (near ? 1 : 0));
+[[gnu::noinline]] void flat_set(const std::string& pair, const std::string& dist, support::rng& r, bool near, bool in_plane) {
     std::vector<std::pair<A, B>> cs;
-    while (cs.size() < set_size) cs.push_back(near ? support::flat_near<A, B>(r, false) : support::flat_random<A, B>(r, false));
+    while (cs.size() < set_size) cs.push_back(near ? support::flat_near<A, B>(r, false) : support::flat_random<A, B>(r, false, in_plane));
     auto truth = [](const std::pair<A, B>& c) { return support::flat_truth(c.first, c.second); };
     tiers(pair, dist, cs, truth, [](auto tier, const std::pair<A, B>& c) { return intersects<decltype(tier)>(c.first, c.second); });
     std::vector<bool> t;
@@ -230,6 +238,13 @@ template <class A, class B>
     reg("cgal_epick/intersects/" + pair + "/" + dist, cs, t, check::approximate, [](const std::pair<A, B>& c) {
         return oracle::flat_intersect_epick(support::to_flat(c.first), support::to_flat(c.second));
     });
+}
+template <class A, class B>
+void flat_tiers(const std::string& pair, bool near) {
+    support::rng r = set_rng(near);
+    if (near) return flat_set<A, B>(pair, "near_degenerate", r, true, false);
+    flat_set<A, B>(pair, "random", r, false, false);
+    if constexpr (!support::flat2_shape<A>) flat_set<A, B>(pair, "in_plane", r, false, true);
 }
 // A pair of a mesh or a polygon (a view of arrays a store owns) on the tests' generators, its
 // oracle as truth: make_case(rng, store, other, near) returns the partner (for a view, other's view).
@@ -245,7 +260,7 @@ template <class Store, class B, bool Contains = false, class Gen, class Truth>
         }
     };
     const std::string dist = near ? "near_degenerate" : "random";
-    support::rng r(20261122 + (near ? 1 : 0));
+    support::rng r = set_rng(near);
     std::vector<view_case> cs;
     while (cs.size() < set_size) {
         view_case c;
@@ -306,7 +321,7 @@ void polygon3_tiers(const std::string& pair, bool near) {
         support::polygon3_store g, unused;
         support::mesh_store m;
     };
-    support::rng r(20261122 + (near ? 1 : 0));
+    support::rng r = set_rng(near);
     std::vector<stores> cs;
     while (cs.size() < set_size) {
         stores c;
@@ -322,7 +337,7 @@ void polygon3_tiers(const std::string& pair, bool near) {
 template <int K, class B>
 [[gnu::noinline]] void kdop_tiers(const std::string& pair, bool near) {
     const std::string dist = near ? "near_degenerate" : "random";
-    support::rng r(20261122 + (near ? 1 : 0));
+    support::rng r = set_rng(near);
     std::vector<std::pair<kdop<K>, B>> cs;
     while (cs.size() < set_size)
         if (const auto c = near ? support::kdop_near<K, B>(r) : support::kdop_random<K, B>(r)) cs.push_back(*c);
@@ -334,7 +349,7 @@ template <int K, class B>
 template <class P, class B>
 [[gnu::noinline]] std::vector<std::pair<P, B>> halfspace_tiers(const std::string& pair, bool near) {
     const std::string dist = near ? "near_degenerate" : "random";
-    support::rng r(20261122 + (near ? 1 : 0));
+    support::rng r = set_rng(near);
     std::vector<std::pair<P, B>> cs;
     while (cs.size() < set_size)
         if (const auto c = near ? support::halfspace_near<P, B>(r) : support::halfspace_random<P, B>(r)) cs.push_back(*c);

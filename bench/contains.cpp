@@ -15,7 +15,7 @@ namespace {
 // gen(rng, near) returns a pair or std::nullopt (a case the generator declined).
 template <class A, class B, class Gen, class Truth>
 [[gnu::noinline]] void contains_tiers(const std::string& pair, bool near, Gen gen, Truth truth) {
-    support::rng r(20261122 + (near ? 1 : 0));
+    support::rng r = set_rng(near);
     std::vector<std::pair<A, B>> cs;
     while (cs.size() < set_size)
         if (const std::optional<std::pair<A, B>> c = gen(r, near)) cs.push_back(*c);

@@ -312,15 +312,17 @@ typename proto_of<S>::type random_shape(rng& r, bool in_plane, double c) {
                      {std::max(a.x, b.x), std::max(a.y, b.y), in_plane ? a.z + r.uniform(0, 1) : std::max(a.z, b.z)}};
     } else return triangle3{p(), p(), p()};
 }
+// in_plane: every case in one plane z = c (true), none (false), or half of them (unset).
 template <class A, class B>
-std::pair<A, B> flat_random(rng& r, bool any_scale = true) {
+std::pair<A, B> flat_random(rng& r, bool any_scale = true, std::optional<bool> in_plane_cases = std::nullopt) {
     if constexpr (flat2_shape<A>) {
         const A a = random_shape2<A>(r);
         const B b = random_shape2<B>(r);
         transform tr = random_transform(r, false, any_scale);
         return {realise(a, tr), realise(b, tr)};
     } else {
-        const bool in_plane = r.coin();
+        const bool coin = r.coin();
+        const bool in_plane = in_plane_cases.value_or(coin);
         const double c = r.uniform(-1, 1);
         const auto a = random_shape<A>(r, in_plane, c);
         const auto b = random_shape<B>(r, in_plane, c);

@@ -63,6 +63,7 @@ inline transform random_transform(rng& r, bool nudged, bool any_scale = true) {
     transform tr;
     tr.r = &r;
     tr.nudged = nudged;
+    if (r.at_scale_one) any_scale = false;
     const int pick = r.integer(0, 9);
     tr.k = pick < 4 || !any_scale ? 0 : r.integer(-500, 500);
     if (r.integer(0, 3) == 0 && any_scale) {
