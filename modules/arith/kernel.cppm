@@ -336,6 +336,33 @@ struct filter_kernel {
     [[nodiscard, gnu::always_inline]] constexpr sign probe(const F& f) { return to_sign(proven_sign(f(lift_filter{}))); }
 };
 
+// The exact fallback's two cheap stages for a sign the filter could not prove, on the inputs times
+// factor (a power of two that keeps every input exact; 1 for the inputs as they are): plain double
+// with every operation exact (an exact zero, from coplanar or axis-aligned inputs, is the
+// commonest reason), then double-double. +1, -1, 0 when settled; 2 when not.
+template <class F>
+[[nodiscard, gnu::noinline]] constexpr int settle_cheaply(F f, double factor) {
+    if (const exact_double x = f(lift_scaled<lift_exact_double>{factor}); x.exact) return x.v > 0.0 ? 1 : (x.v < 0.0 ? -1 : 0);
+    if (const int s = proven_sign(f(lift_scaled<lift_filter2>{factor})); s != 0) return s;
+    return 2;
+}
+// The filter kernel of a pair with a mesh or a 3D polygon (incidence.query's filter_passes): a
+// sign the filter cannot prove goes to the two cheap exact stages (settle_cheaply) before the
+// query is called uncertain. Their signs repeat shared vertices, and a partner often lies in the
+// polygon's plane, so exact zeros are common there, and settling each where it arises costs less
+// than a second run of the whole (long) query in the exact kernel. For the other pairs it
+// measured slower: their filter pass is short, and the extra call changes how their bodies inline.
+struct settling_filter_kernel : filter_kernel {
+    template <class F>
+    [[nodiscard, gnu::always_inline]] constexpr sign sgn(const F& f) {
+        const auto v = f(lift_filter{});
+        if (const int s = proven_sign(v); s != 0) return to_sign(s);
+        if (const int s = settle_cheaply(f, 1.0); s != 2) return to_sign(s);
+        unproven = v.p;
+        return sign::zero;
+    }
+};
+
 // The filter on every input times one power of two, for a whole query whose scene lies far from
 // scale 1 (near 2^-500 or 2^500 the filter's permanents leave its trusted range, whatever the
 // configuration). A homogeneous predicate of degree d only changes by the factor 2^(d s), so its
@@ -351,16 +378,6 @@ struct lift_scaled_filter {
         return lift_filtered(abs(y) < 0x1p-1022 && x != 0.0 ? __builtin_nan("") : y);
     }
 };
-// The exact fallback's two cheap stages for a sign the filter could not prove, on the inputs times
-// factor (a power of two that keeps every input exact; 1 for the inputs as they are): plain double
-// with every operation exact (an exact zero, from coplanar or axis-aligned inputs, is the
-// commonest reason), then double-double. +1, -1, 0 when settled; 2 when not.
-template <class F>
-[[nodiscard, gnu::noinline]] constexpr int settle_cheaply(F f, double factor) {
-    if (const exact_double x = f(lift_scaled<lift_exact_double>{factor}); x.exact) return x.v > 0.0 ? 1 : (x.v < 0.0 ? -1 : 0);
-    if (const int s = proven_sign(f(lift_scaled<lift_filter2>{factor})); s != 0) return s;
-    return 2;
-}
 struct scaled_filter_kernel {
     double factor;          // 2^s
     double unproven = -1.0; // as in filter_kernel

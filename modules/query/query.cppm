@@ -16,6 +16,7 @@
 // adds its own lines.
 module;
 #include <optional>
+#include <type_traits>
 export module incidence.query;
 export import :point_sphere;
 export import :sphere_sphere;
@@ -190,6 +191,13 @@ template <class A, class B, class Body>
     const bool r = body(g, a, b);
     return g.failed() ? certainty::uncertain : to_certainty(r);
 }
+// The filter pass's kernel: for a pair with a mesh3 or a polygon3, the one that settles exact zeros
+// as they arise (arith::settling_filter_kernel). Not for polygon2: its signs (degree 2 and 3) are
+// cheap to rerun exactly, and settling measured 4% slower there (geometric mean of 12 benchmarks).
+template <class S>
+inline constexpr bool settles_zeros = pair::scene::shape_of<S, mesh3> || pair::scene::shape_of<S, polygon3>;
+template <class A, class B>
+using filter_kernel_of = std::conditional_t<settles_zeros<A> || settles_zeros<B>, arith::settling_filter_kernel, arith::filter_kernel>;
 template <class A, class B, class Body>
 [[nodiscard]] constexpr certainty filter_passes(const A*& a, const B*& b, const Body& body,
                                                 std::optional<pair::scene::scaled_pair<A, B>>& scaled) {
@@ -202,7 +210,7 @@ template <class A, class B, class Body>
             scaled_tried = true; // near scale 1 after all: the plain pass, and no second scan
         }
     for (;;) {
-        arith::filter_kernel f;
+        filter_kernel_of<A, B> f;
         const bool r = body(f, *a, *b);
         if (!f.failed()) return to_certainty(r);
         if constexpr (pair::scene::scalable<A> && pair::scene::scalable<B>) {

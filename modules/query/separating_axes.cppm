@@ -406,7 +406,7 @@ template <class BoxA, class BoxB>
 
 template <class K, class BoxA, class BoxB>
 [[nodiscard]] constexpr int box_box_fast(K&, const BoxA& a, const BoxB& b) { // 1 yes, 0 no, -1 undecided
-    if constexpr (__is_same(K, arith::filter_kernel) || __is_same(K, arith::exact_kernel)) {
+    if constexpr (__is_base_of(arith::filter_kernel, K) || __is_same(K, arith::exact_kernel)) {
         // First the double values against the bounds from the inputs' maxima (no permanent is
         // computed: the filtered type's permanents are dead code here, only its K is read), then,
         // if some sign was too close to call, the filter with every permanent.

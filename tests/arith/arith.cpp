@@ -108,6 +108,48 @@ TEST_CASE("arith: the filter never claims a wrong sign", "[arith]") {
     CHECK(wrong == 0);
 }
 
+// The kernel of mesh and polygon3 pairs: a sign the filter cannot prove is settled by plain double
+// with every operation exact, then double-double. orient3d of four exactly coplanar points of
+// small dyadic coordinates (an exact zero the filter cannot prove), the last one nudged by up to
+// two ulps in half the cases (a sign a few ulps from zero): every sign it calls certain is right,
+// and it settles signs on which the plain filter kernel fails.
+TEST_CASE("arith: the settling filter kernel settles exact zeros, never wrongly", "[arith]") {
+    support::rng r(support::seed() + 5);
+    long certain = 0, settled = 0, wrong = 0;
+    for (long i = 0; i < support::cases(20000); ++i) {
+        const double a = support::small(r), b = support::small(r), c = support::small(r);
+        point3 p[4];
+        for (auto& q : p) {
+            const double x = support::small(r), y = support::small(r);
+            q = {x, y, a * x + b * y + c}; // exact: products of small dyadics
+        }
+        if (r.coin()) p[3].z = support::nudge(p[3].z, r.integer(-2, 2));
+        const auto f = [&p](auto L) {
+            const auto o = arith::lift(L, p[3]);
+            return arith::det3(arith::lift(L, p[0]) - o, arith::lift(L, p[1]) - o, arith::lift(L, p[2]) - o);
+        };
+        auto diff = [&](int k, int axis) { return Q(axis == 0 ? p[k].x : (axis == 1 ? p[k].y : p[k].z)) - Q(axis == 0 ? p[3].x : (axis == 1 ? p[3].y : p[3].z)); };
+        rational m[3][3];
+        for (int k = 0; k < 3; ++k)
+            for (int j = 0; j < 3; ++j) m[k][j] = diff(k, j);
+        const rational v = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+        const sign want = v > 0 ? sign::positive : (v < 0 ? sign::negative : sign::zero);
+        arith::settling_filter_kernel k;
+        arith::filter_kernel plain;
+        const sign s = k.sgn(f);
+        (void)plain.sgn(f);
+        if (k.failed()) continue;
+        ++certain;
+        if (s != want) ++wrong;
+        if (plain.failed()) ++settled;
+    }
+    std::printf("[cases] settling filter kernel: %ld certain, %ld of them settled after the filter failed, wrong %ld\n", certain, settled,
+                wrong);
+    CHECK(wrong == 0);
+    CHECK(settled > support::cases(20000) / 4);
+}
+
 // Every degree up to dyadic_max_degree, with inputs anywhere in the finite range (subnormal to
 // 2^1023): the terms then span up to 2098 d bits, which the dyadic fallback must hold whole. The
 // first case of each degree is the widest: huge^d - tiny^d, positive.
