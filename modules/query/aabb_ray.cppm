@@ -7,7 +7,9 @@
 // (L, U the near and far plane minus o_i); with d_i == 0 the origin must lie in the slab.
 // The ray hits iff every U_j/d_j >= 0 and every L_i/d_i <= U_j/d_j, i.e.
 //   sign(U_j d_i - L_i d_j) * sign(d_i d_j) >= 0,
-// a homogeneous degree-2 sign per ordered pair of axes. t_enter/t_exit of the exact tier are
+// a homogeneous degree-2 sign per ordered pair of axes. Before any sign, the classic slab
+// parameters rounded, each widened by a rigorous error bound, decide every case where they are
+// clear (slab_parameters_decide). t_enter/t_exit of the exact tier are
 // the max/min of correctly rounded quotients (rounding is monotone, so max of rounded = rounded
 // max): correctly rounded.
 // Approximate tier: the classic slab method with reciprocal directions (Kay and Kajiya,
@@ -48,15 +50,55 @@ struct slab_axis {
     return d < 0.0 ? slab_axis{o, d, mx, mn} : slab_axis{o, d, mn, mx};
 }
 
-// The slab test shared by the box's linear pairs (aabb_ray, aabb_segment, aabb_line). The
+// The slab test as signs, shared by the box's linear pairs (aabb_ray, aabb_segment, aabb_line). The
 // parameter runs over t >= 0 (ray), [0, 1] (segment, direction e - o taken exactly from its end
 // points) or all reals (line). Per axis with d_i != 0 the object is inside the slab for t between
 // L_i/d_i and U_i/d_i; the sets meet iff every near bound is <= every far bound, the far bounds
 // are >= 0 (ray, segment) and the near bounds are <= 1 (segment): as signs, degree 2 for the
 // pairs of axes, comparisons of coordinates for the rest. Non-finite input: no.
 enum class slab_extent { ray, segment, line };
+
+// The slab test on rounded slab parameters where its answer is clear, before any sign: 1 the sets
+// meet, 0 they do not, -1 too close to call (or a direction component outside [2^-1000, 2^1000]).
+// Per axis t = (P - o) * (1 / d) is Kay and Kajiya's slab parameter (SIGGRAPH 1986); rounded it is
+// within 4u|t| + 2^-1074 of the exact value (d = e - o rounded for a segment, its reciprocal, P - o
+// and the product: four roundings, the last one possibly subnormal), and the interval
+// t -+ (2^-50 |t| + 2^-1060) also covers the rounding of its own end points. The sets meet iff
+// max(near t) <= min(far t), with 0 <= min(far t) for a ray or segment and max(near t) <= 1 for a
+// segment; a miss is known as soon as the slabs of the axes so far are disjoint in t (as in the
+// classic method's early exit). A non-finite input gives an infinite or NaN t: an infinite t has one NaN end point, a
+// NaN coordinate makes its axis's interval empty, and NaN compares false, so such an input is
+// never called a hit (a miss is its right answer). An inverted box is never called a hit.
+template <slab_extent X>
+[[nodiscard]] constexpr int slab_parameters_decide(const aabb3& b, point3 o, vec3 dv, point3 e) {
+    const double oc[3] = {o.x, o.y, o.z}, dc[3] = {dv.x, dv.y, dv.z}, ec[3] = {e.x, e.y, e.z};
+    const double mn[3] = {b.min.x, b.min.y, b.min.z}, mx[3] = {b.max.x, b.max.y, b.max.z};
+    double near_lo = X == slab_extent::line ? -__builtin_huge_val() : 0.0, near_hi = near_lo;
+    double far_lo = X == slab_extent::segment ? 1.0 : __builtin_huge_val(), far_hi = far_lo;
+    bool ordered = true;
+    for (int i = 0; i < 3; ++i) {
+        const double d = X == slab_extent::segment ? ec[i] - oc[i] : dc[i];
+        const double ad = arith::abs(d);
+        if (!(ad >= 0x1p-1000 && ad <= 0x1p1000)) return -1;
+        const double inv = 1.0 / d;
+        const double t1 = (mn[i] - oc[i]) * inv, t2 = (mx[i] - oc[i]) * inv;
+        const double tn = d > 0.0 ? t1 : t2, tf = d > 0.0 ? t2 : t1;
+        const double en = 0x1p-50 * arith::abs(tn) + 0x1p-1060, ef = 0x1p-50 * arith::abs(tf) + 0x1p-1060;
+        const double nl = tn - en, nh = tn + en, fl = tf - ef, fh = tf + ef;
+        // a NaN lower end of near t or upper end of far t is left out (the bound stays valid without
+        // it); a NaN upper end of near t or lower end of far t is kept, so no hit is claimed
+        near_lo = nl > near_lo ? nl : near_lo;
+        near_hi = nh > near_hi || nh != nh ? nh : near_hi;
+        far_lo = fl < far_lo || fl != fl ? fl : far_lo;
+        far_hi = fh < far_hi ? fh : far_hi;
+        ordered = ordered && mn[i] <= mx[i];
+        if (near_lo > far_hi) return 0; // the slabs so far have no common t: most misses end here
+    }
+    return ordered && near_hi <= far_lo ? 1 : -1;
+}
+
 template <slab_extent X, class K>
-[[nodiscard]] constexpr bool slabs(K& k, const aabb3& b, point3 o, vec3 dv, point3 e) {
+[[nodiscard]] constexpr bool slab_signs(K& k, const aabb3& b, point3 o, vec3 dv, point3 e) {
     if (!is_finite(b.min) || !is_finite(b.max) || !is_finite(o) || !is_finite(dv) || !is_finite(e)) return false;
     const double oc[3] = {o.x, o.y, o.z}, dc[3] = {dv.x, dv.y, dv.z}, ec[3] = {e.x, e.y, e.z};
     const double mn[3] = {b.min.x, b.min.y, b.min.z}, mx[3] = {b.max.x, b.max.y, b.max.z};
@@ -94,6 +136,16 @@ template <slab_extent X, class K>
         }
     }
     return true;
+}
+
+// The slab test: the rounded slab parameters first, in the filtering and exact kernels (not in
+// plain double, whose own answer is the tier's, nor in a kernel that observes the signs), inline;
+// the signs only where they were too close to call.
+template <slab_extent X, class K>
+[[nodiscard, gnu::always_inline]] constexpr bool slabs(K& k, const aabb3& b, point3 o, vec3 dv, point3 e) {
+    if constexpr (__is_base_of(arith::filter_kernel, K) || __is_same(K, arith::exact_kernel))
+        if (const int r = slab_parameters_decide<X>(b, o, dv, e); r >= 0) return r == 1;
+    return slab_signs<X>(k, b, o, dv, e);
 }
 
 template <class K>

@@ -133,4 +133,56 @@ TEST_CASE("aabb_ray: Woo's method against the oracle (independent second algorit
     CHECK(outside == 0);
 }
 
+
+namespace {
+// A direction component far from scale 1 (2^+-900, subnormal, zero), or a coordinate that is not
+// finite, in some of the cases.
+vec3 stretched(support::rng& r, vec3 d) {
+    double c[3] = {d.x, d.y, d.z};
+    for (double& x : c) {
+        const int w = r.integer(0, 15);
+        if (w == 0) x = std::ldexp(x, 900);
+        else if (w == 1) x = std::ldexp(x, -900);
+        else if (w == 2) x = x * 0x1p-1070;
+        else if (w == 3) x = 0.0;
+    }
+    return {c[0], c[1], c[2]};
+}
+} // namespace
+
+// The rounded slab parameters (pair::slab_parameters_decide) decide a case only as the exact signs
+// do, for rays, segments and lines, on the oracle tests' random and near-degenerate cases with
+// directions stretched to 2^+-900 or the subnormal range and a few non-finite coordinates; and they
+// decide most random cases (else the signs would run everywhere).
+TEST_CASE("aabb_ray: the rounded slab parameters never decide against the signs", "[aabb_ray]") {
+    support::rng r(support::seed() + 9);
+    long n = 0, decided = 0, random_decided = 0, random_n = 0, wrong = 0;
+    for (long i = 0; i < support::cases(100000); ++i) {
+        const bool near = (i % 2) != 0;
+        auto [b, ray] = near ? near_case(r) : random_case(r);
+        const vec3 d = r.integer(0, 3) == 0 ? stretched(r, ray.direction) : ray.direction;
+        point3 o = ray.origin;
+        if (r.integer(0, 99) == 0) o.y = r.coin() ? std::nan("") : (r.coin() ? 1.0 : -1.0) * INFINITY;
+        const point3 e{o.x + d.x, o.y + d.y, o.z + d.z};
+        auto check = [&]<pair::slab_extent X>(std::integral_constant<pair::slab_extent, X>) {
+            const int fast = pair::slab_parameters_decide<X>(b, o, d, e);
+            arith::exact_kernel k;
+            const bool want = pair::slab_signs<X>(k, b, o, d, e) && k.valid;
+            ++n;
+            if (!near) ++random_n;
+            if (fast < 0) return;
+            ++decided;
+            if (!near) ++random_decided;
+            if ((fast == 1) != want) ++wrong;
+        };
+        check(std::integral_constant<pair::slab_extent, pair::slab_extent::ray>{});
+        check(std::integral_constant<pair::slab_extent, pair::slab_extent::segment>{});
+        check(std::integral_constant<pair::slab_extent, pair::slab_extent::line>{});
+    }
+    std::printf("[cases] aabb slab parameters: %ld checks, %ld decided (%ld of %ld random), wrong %ld\n", n, decided, random_decided,
+                random_n, wrong);
+    CHECK(wrong == 0);
+    CHECK(random_decided > random_n / 2);
+}
+
 } // namespace test_query_aabb_ray
