@@ -66,9 +66,10 @@ enum class slab_extent { ray, segment, line };
 // t -+ (2^-50 |t| + 2^-1060) also covers the rounding of its own end points. The sets meet iff
 // max(near t) <= min(far t), with 0 <= min(far t) for a ray or segment and max(near t) <= 1 for a
 // segment; a miss is known as soon as the slabs of the axes so far are disjoint in t (as in the
-// classic method's early exit). A non-finite input gives an infinite or NaN t: an infinite t has one NaN end point, a
-// NaN coordinate makes its axis's interval empty, and NaN compares false, so such an input is
-// never called a hit (a miss is its right answer). An inverted box is never called a hit.
+// classic method's early exit). A non-finite input gives an infinite or NaN t: an infinite t has
+// one NaN end point, a NaN coordinate makes its axis's interval empty, and NaN compares false, so
+// such an input is never called a hit (a miss is its right answer). An inverted box is never
+// called a hit. Run time only: constant evaluation refuses the NaN an overflow can make.
 template <slab_extent X>
 [[nodiscard]] constexpr int slab_parameters_decide(const aabb3& b, point3 o, vec3 dv, point3 e) {
     const double oc[3] = {o.x, o.y, o.z}, dc[3] = {dv.x, dv.y, dv.z}, ec[3] = {e.x, e.y, e.z};
@@ -138,13 +139,14 @@ template <slab_extent X, class K>
     return true;
 }
 
-// The slab test: the rounded slab parameters first, in the filtering and exact kernels (not in
-// plain double, whose own answer is the tier's, nor in a kernel that observes the signs), inline;
-// the signs only where they were too close to call.
+// The slab test: the rounded slab parameters first, at run time in the filtering and exact
+// kernels (not in plain double, whose own answer is the tier's, nor in a kernel that observes the
+// signs), inline; the signs only where they were too close to call.
 template <slab_extent X, class K>
 [[nodiscard, gnu::always_inline]] constexpr bool slabs(K& k, const aabb3& b, point3 o, vec3 dv, point3 e) {
     if constexpr (__is_base_of(arith::filter_kernel, K) || __is_same(K, arith::exact_kernel))
-        if (const int r = slab_parameters_decide<X>(b, o, dv, e); r >= 0) return r == 1;
+        if (!__builtin_is_constant_evaluated())
+            if (const int r = slab_parameters_decide<X>(b, o, dv, e); r >= 0) return r == 1;
     return slab_signs<X>(k, b, o, dv, e);
 }
 

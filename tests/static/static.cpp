@@ -39,6 +39,9 @@ static_assert(!intersects(segment3{{0.25, 0.25, 1}, {0.25, 0.25, 0.5}}, T));
 static_assert(intersects(B, ray3{{-1, 1, 1}, {1, 0, 0}}));                // along an edge
 static_assert(intersects(B, ray3{{2, 1, 0}, {-1, -1, 0}}));               // touching an edge only
 static_assert(!intersects(B, ray3{{2.0000000000000004, 1, 0}, {-1, -1, 0}}));
+// near 2^1024, where a slab parameter overflows (no rounded-parameter stage in constant evaluation)
+static_assert(intersects(aabb3{{-0x1p1023, -1, -1}, {-0x1p1022, 1, 1}}, ray3{{0x1p1023, 0, 0}, {-1, 0, 0}}) &&
+              !intersects(aabb3{{-0x1p1023, -1, -1}, {-0x1p1022, 1, 1}}, ray3{{0x1p1023, 2, 0}, {-1, 0, 0}}));
 // box-triangle: touching a corner, one ulp off it, plane through the far corner, edge axis, flat box
 static_assert(intersects(B, triangle3{{1, 1, 1}, {2, 1, 1}, {1, 2, 2}}));
 static_assert(!intersects(B, triangle3{{1, 1, 1.0000000000000002}, {2, 1, 2}, {1, 2, 2}}));
