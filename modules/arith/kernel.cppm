@@ -316,6 +316,16 @@ struct approx_kernel {
     [[nodiscard, gnu::always_inline]] constexpr sign sgn(const F& f) { return sign_of_double(f(lift_double{})); }
 };
 
+// The exact fallback's two cheap stages for a sign the filter could not prove, on the inputs times
+// factor (a power of two that keeps every input exact; 1 for the inputs as they are): plain double
+// with every operation exact (an exact zero, from coplanar or axis-aligned inputs, is the
+// commonest reason), then double-double. +1, -1, 0 when settled; 2 when not.
+template <class F>
+[[nodiscard, gnu::noinline]] constexpr int settle_cheaply(F f, double factor) {
+    if (const exact_double x = f(lift_scaled<lift_exact_double>{factor}); x.exact) return x.v > 0.0 ? 1 : (x.v < 0.0 ? -1 : 0);
+    if (const int s = proven_sign(f(lift_scaled<lift_filter2>{factor})); s != 0) return s;
+    return 2;
+}
 struct filter_kernel {
     // The permanent of the last sign the filter could not prove (0 or more, or NaN), -1 while
     // every sign is proven. One store where a flag took one, so the certain path is unchanged;
@@ -330,22 +340,23 @@ struct filter_kernel {
         if (s == 0) unproven = v.p;
         return to_sign(s);
     }
+    // The filter, then the two cheap exact stages (settle_cheaply) before the sign counts as
+    // unproven: for signs that are often exactly zero (settling_filter_kernel, and single signs
+    // such as aabb_convex_polyhedron's dependent normals).
+    template <class F>
+    [[nodiscard, gnu::always_inline]] constexpr sign settled_sgn(const F& f) {
+        const auto v = f(lift_filter{});
+        if (const int s = proven_sign(v); s != 0) return to_sign(s);
+        if (const int s = settle_cheaply(f, 1.0); s != 2) return to_sign(s);
+        unproven = v.p;
+        return sign::zero;
+    }
     // A sign for a check whose failure decides nothing (a candidate witness point): zero when the
     // filter cannot prove it, and the query's certainty is untouched.
     template <class F>
     [[nodiscard, gnu::always_inline]] constexpr sign probe(const F& f) { return to_sign(proven_sign(f(lift_filter{}))); }
 };
 
-// The exact fallback's two cheap stages for a sign the filter could not prove, on the inputs times
-// factor (a power of two that keeps every input exact; 1 for the inputs as they are): plain double
-// with every operation exact (an exact zero, from coplanar or axis-aligned inputs, is the
-// commonest reason), then double-double. +1, -1, 0 when settled; 2 when not.
-template <class F>
-[[nodiscard, gnu::noinline]] constexpr int settle_cheaply(F f, double factor) {
-    if (const exact_double x = f(lift_scaled<lift_exact_double>{factor}); x.exact) return x.v > 0.0 ? 1 : (x.v < 0.0 ? -1 : 0);
-    if (const int s = proven_sign(f(lift_scaled<lift_filter2>{factor})); s != 0) return s;
-    return 2;
-}
 // The filter kernel of a pair with a mesh or a 3D polygon (incidence.query's filter_passes): a
 // sign the filter cannot prove goes to the two cheap exact stages (settle_cheaply) before the
 // query is called uncertain. Their signs repeat shared vertices, and a partner often lies in the
@@ -354,13 +365,7 @@ template <class F>
 // measured slower: their filter pass is short, and the extra call changes how their bodies inline.
 struct settling_filter_kernel : filter_kernel {
     template <class F>
-    [[nodiscard, gnu::always_inline]] constexpr sign sgn(const F& f) {
-        const auto v = f(lift_filter{});
-        if (const int s = proven_sign(v); s != 0) return to_sign(s);
-        if (const int s = settle_cheaply(f, 1.0); s != 2) return to_sign(s);
-        unproven = v.p;
-        return sign::zero;
-    }
+    [[nodiscard, gnu::always_inline]] constexpr sign sgn(const F& f) { return settled_sgn(f); }
 };
 
 // The filter on every input times one power of two, for a whole query whose scene lies far from

@@ -36,15 +36,16 @@ namespace polyq {
 // frustum's two side planes and its near plane are dependent; k-DOP directions and axis-aligned
 // normals give exact zeros): a sign the filter cannot prove would end its run, so the filter
 // kernel then tries the exact fallback's two cheap stages, plain double with every operation
-// exact, then double-double, and only then gives up.
+// exact, then double-double, and only then gives up (arith::filter_kernel::settled_sgn).
 template <class K, class F>
 [[nodiscard]] constexpr sign settled(K& k, const F& f) {
-    const sign s = arith::probe(k, f);
-    if (s != sign::zero) return s;
-    if constexpr (std::is_same_v<K, arith::filter_kernel>) {
-        if (const int t = arith::settle_cheaply(f, 1.0); t != 2) return arith::to_sign(t);
+    if constexpr (std::is_base_of_v<arith::filter_kernel, K>) {
+        return k.settled_sgn(f);
+    } else {
+        const sign s = arith::probe(k, f);
+        if (s != sign::zero) return s;
+        return k.sgn(f);
     }
-    return k.sgn(f);
 }
 
 // A zero normal; two normals equal or opposite (the box's faces across one axis, a frustum's near
