@@ -1,26 +1,19 @@
 // point2 against point2.
 // Semantics: Two points meet iff both coordinates are equal (NaN is never equal).
-// Method (exact tiers): the linear pairs' shared body in the plane, linear_linear(linear2) in
-// segment_segment.cppm: with c = cross(D, E) != 0 the crossing's parameters t and u are checked
-// against each object's bounds as signs of products (t c = cross(w, E), u c = cross(w, D)); with
-// c == 0, cross(D, w) == 0 (on one line) and the 1D overlap along D. Every sign of degree <= 2.
-// Source: O'Rourke, Computational Geometry in C, 2nd ed. (1998), section 1.5 (segment
-// intersection from orientations), extended to rays and lines by their parameter bounds.
-// Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
-// magnitudes lie in [2^-500, 2^500], wrong only when a deciding sign is within 2^-48 of its
-// permanent (tests/query/point2_point2.cpp).
+// Method: two coordinate comparisons. A binary64 comparison is exact (the sign of p.x - q.x
+// without rounding), so every tier, the approximate one included, gives the exact answer and the
+// filter is never uncertain; like aabb_point, no kernel sign is needed.
+// Source: IEEE 754-2019, section 5.11 (comparisons are exact; -0 == +0; NaN is unordered).
 export module incidence.query:point2_point2;
 import incidence.core;
 import incidence.arith;
 import incidence.shapes;
-import :segment_segment;
 
 export namespace incidence::pair {
 
 template <class K>
-[[nodiscard]] constexpr bool intersects(K& k, const point2& p, const point2& q) {
-    if (before(q, p)) return linear_linear(k, as_linear(q), as_linear(p));
-    return linear_linear(k, as_linear(p), as_linear(q));
+[[nodiscard]] constexpr bool intersects(K&, const point2& p, const point2& q) {
+    return p.x == q.x && p.y == q.y;
 }
 
 } // namespace incidence::pair

@@ -1,24 +1,19 @@
 // point3 against point3.
 // Semantics: Two points meet iff all three coordinates are equal (compared exactly; NaN is never equal).
-// Method (exact tiers): the linear pairs' shared body, linear_linear in segment_segment.cppm
-// (skew test det(D, E, w), then the coplanar crossing's parameter bounds as signs of products,
-// or the collinear overlap along D); every sign of degree <= 4.
-// Source: Schneider and Eberly, Geometric Tools for Computer Graphics (2003), section 11.1.
-// Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
-// magnitudes lie in [2^-500, 2^500], wrong only when a deciding sign is within 2^-40 of its
-// permanent (tests/query/point_point.cpp).
+// Method: three coordinate comparisons. A binary64 comparison is exact (the sign of p.x - q.x
+// without rounding), so every tier, the approximate one included, gives the exact answer and the
+// filter is never uncertain; like aabb_point, no kernel sign is needed.
+// Source: IEEE 754-2019, section 5.11 (comparisons are exact; -0 == +0; NaN is unordered).
 export module incidence.query:point_point;
 import incidence.core;
 import incidence.arith;
 import incidence.shapes;
-import :segment_segment;
 
 export namespace incidence::pair {
 
 template <class K>
-[[nodiscard]] constexpr bool intersects(K& k, const point3& p, const point3& q) {
-    if (before(q, p)) return linear_linear(k, as_linear(q), as_linear(p));
-    return linear_linear(k, as_linear(p), as_linear(q));
+[[nodiscard]] constexpr bool intersects(K&, const point3& p, const point3& q) {
+    return p.x == q.x && p.y == q.y && p.z == q.z;
 }
 
 } // namespace incidence::pair

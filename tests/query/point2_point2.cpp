@@ -13,7 +13,7 @@ namespace test_query_point2_point2 { // this file's names, apart from the files 
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-48; // stated in modules/query/point2_point2.cppm
+constexpr double approx_bound = 0; // exact in every tier (modules/query/point2_point2.cppm): no approximate miss is allowed
 } // namespace
 
 TEST_CASE("point2_point2: fixtures", "[point2_point2]") {

@@ -14,7 +14,7 @@ namespace test_query_point_point { // this file's names, apart from the files co
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/point_point.cppm
+constexpr double approx_bound = 0; // exact in every tier (modules/query/point_point.cppm): no approximate miss is allowed
 } // namespace
 
 TEST_CASE("point_point: fixtures", "[point_point]") {
