@@ -1,13 +1,18 @@
 // triangle3 against triangle3 (closed triangles; a collinear triangle is its hull).
 // Semantics: touching at a vertex, along an edge, or coplanar overlap counts.
-// Method (exact tiers): two closed convex sets in R^3 whose intersection is nonempty meet at a
-// point of one's boundary that lies in the other (the intersection of two triangles is a convex
-// set whose extreme points lie on an edge of one of them), so T1 and T2 meet iff one of the six
-// edges meets the other triangle. Each edge test is the segment_triangle sign algorithm; a
-// strict one-side rejection by the three orient3d signs of each triangle's vertices against the
-// other's plane comes first (Guigue and Devillers, "Fast and robust triangle-triangle overlap
-// test using orientation predicates", JGT 8(1), 2003, section 2 uses the same first step).
-// Every sign is of a polynomial of degree <= 3 in the inputs.
+// Method (exact tiers): first the orient3d signs of each triangle's vertices against the other's
+// plane; all three strictly on one side rejects. When all six signs are nonzero, each triangle
+// strictly straddles the other's plane (so neither is degenerate and the planes cross in a line
+// L): after a circular permutation puts the vertex alone on its side first, and a swap of the
+// other triangle's last two vertices makes that vertex's sign positive, the triangles meet iff
+// orient3d(p1, q1, p2, q2) <= 0 and orient3d(p1, r1, r2, p2) <= 0 (the two intervals on L
+// overlap). Source: Guigue and Devillers, "Fast and robust triangle-triangle overlap test using
+// orientation predicates", JGT 8(1), 2003, sections 2-3. Otherwise (a vertex in the other's
+// plane, coplanar or degenerate triangles) two closed convex sets in R^3 whose intersection is
+// nonempty meet at a point of one's boundary that lies in the other (the intersection of two
+// triangles is a convex set whose extreme points lie on an edge of one of them), so T1 and T2
+// meet iff one of the six edges meets the other triangle, each by the segment_triangle sign
+// algorithm. Every sign is of a polynomial of degree <= 3 in the inputs.
 // Approximate tier: the same sign algorithm in plain double. Error bound, for inputs whose
 // nonzero magnitudes lie in [2^-500, 2^500]: wrong only when some sign's value is within 2^-36 of
 // its permanent (checked by tests/query/triangle_triangle.cpp). method::triangle_triangle_sat is
@@ -19,28 +24,56 @@ import incidence.core;
 import incidence.arith;
 import incidence.predicates;
 import incidence.shapes;
+import :segment_segment;
 import :ray_triangle;
 
 export namespace incidence::pair {
 
+// Canonical order for the one-type pair (segment_segment.cppm's before): the lexicographically
+// smaller triangle first, so that every tier, plain double included, gives (p, q) and (q, p) the
+// same answer (the last two orient3d signs are not symmetric in p and q).
+[[nodiscard]] constexpr bool before(const triangle3& p, const triangle3& q) {
+    const double x[9] = {p.a.x, p.a.y, p.a.z, p.b.x, p.b.y, p.b.z, p.c.x, p.c.y, p.c.z};
+    const double y[9] = {q.a.x, q.a.y, q.a.z, q.b.x, q.b.y, q.b.z, q.c.x, q.c.y, q.c.z};
+    return lex_compare(x, y, 9) < 0;
+}
+
 template <class K>
-[[nodiscard]] constexpr bool intersects(K& k, const triangle3& p, const triangle3& q) {
-    // All three vertices of `t` strictly on one side of the plane of `u`.
-    auto one_side = [&](const triangle3& t, const triangle3& u) {
-        const point3 a = u.a, b = u.b, c = u.c;
-        const sign s0 = k.sgn([=](auto L) { return poly::orient3d(L, a, b, c, t.a); });
-        if (s0 == sign::zero) return false;
-        const sign s1 = k.sgn([=](auto L) { return poly::orient3d(L, a, b, c, t.b); });
-        if (s1 != s0) return false;
-        const sign s2 = k.sgn([=](auto L) { return poly::orient3d(L, a, b, c, t.c); });
-        return s2 == s0;
+[[nodiscard]] constexpr bool triangles_meet(K& k, const triangle3& p, const triangle3& q) {
+    auto orient = [&](point3 a, point3 b, point3 c, point3 d) {
+        return k.sgn([=](auto L) { return poly::orient3d(L, a, b, c, d); });
     };
-    if (one_side(p, q) || one_side(q, p)) return false;
+    const point3 P[3] = {p.a, p.b, p.c}, Q[3] = {q.a, q.b, q.c};
+    // The signs of t's vertices against u's plane, into s: 0 when all three lie strictly on one
+    // side, 1 when none is zero (t straddles), 2 at the first zero (the remaining signs unset).
+    auto sides = [&](const point3* t, const point3* u, sign* s) {
+        for (int i = 0; i < 3; ++i)
+            if ((s[i] = orient(u[0], u[1], u[2], t[i])) == sign::zero) return 2;
+        return s[0] == s[1] && s[1] == s[2] ? 0 : 1;
+    };
+    sign sp[3] = {}, sq[3] = {};
+    const int from_p = sides(P, Q, sp);
+    if (from_p == 0) return false;
+    const int from_q = sides(Q, P, sq);
+    if (from_q == 0) return false;
+    if (from_p == 1 && from_q == 1) {
+        // Guigue and Devillers: the lone vertex first, on the positive side of the other plane.
+        auto lone = [](const sign* s) { return s[0] == s[1] ? 2 : s[0] == s[2] ? 1 : 0; };
+        const int i = lone(sp), j = lone(sq);
+        const int fa = sq[j] == sign::negative, fb = sp[i] == sign::negative; // swap the last two
+        const point3 a0 = P[i], a1 = P[(i + 1 + fa) % 3], a2 = P[(i + 2 - fa) % 3];
+        const point3 b0 = Q[j], b1 = Q[(j + 1 + fb) % 3], b2 = Q[(j + 2 - fb) % 3];
+        return orient(a0, a1, b0, b1) != sign::positive && orient(a0, a2, b2, b0) != sign::positive;
+    }
     auto edge = [&](point3 x, point3 y, const triangle3& t) {
         return linear_triangle(k, linear3{x, vec3{0, 0, 0}, y, extent::segment}, t);
     };
     return edge(p.a, p.b, q) || edge(p.b, p.c, q) || edge(p.c, p.a, q) || edge(q.a, q.b, p) || edge(q.b, q.c, p) ||
            edge(q.c, q.a, p);
+}
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const triangle3& p, const triangle3& q) {
+    return before(q, p) ? triangles_meet(k, q, p) : triangles_meet(k, p, q);
 }
 
 // Separating-axis test in plain double (see the top comment); closed triangles, touching counts.

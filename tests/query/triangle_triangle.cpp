@@ -1,6 +1,7 @@
 // triangle3 x triangle3: fixtures and the CGAL Epeck oracle on 100,000 random and 100,000
 // near-degenerate cases (shared vertices and edges, a vertex on the other's edge or face,
-// coplanar overlaps and near-misses, then a random exact-or-nudged similarity transform).
+// coplanar overlaps and near-misses, then a random exact-or-nudged similarity transform) and
+// 100,000 cases on the integer grid {-2..2}^3 (exact touching across both planes).
 #include <catch2/catch_test_macros.hpp>
 #include "../oracle/cgal_oracle.hpp"
 import incidence;
@@ -79,6 +80,12 @@ TEST_CASE("triangle_triangle: fixtures", "[triangle_triangle]") {
     CHECK_FALSE(intersects(T, triangle3{{0, 0, 1}, {1, 0, 1}, {0, 1, 1}}));        // parallel planes
     CHECK(intersects(T, triangle3{{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}));              // a point triangle on a vertex
     CHECK(intersects(triangle3{{2, 0.5, 0}, {-2, 0.5, 0}, {0, 0.5, 0}}, T));       // a collinear triangle across it
+    // Each strictly across the other's plane, touching at one point of T's hypotenuse (the last
+    // Guigue-Devillers sign is zero), then moved 2^-40 along x, off it.
+    CHECK(intersects(T, triangle3{{0, 0, -1}, {1, 1, 1}, {3, 0, 1}}));
+    CHECK(intersects(triangle3{{0, 0, -1}, {1, 1, 1}, {3, 0, 1}}, T));
+    CHECK_FALSE(intersects(T, triangle3{{0x1p-40, 0, -1}, {1 + 0x1p-40, 1, 1}, {3 + 0x1p-40, 0, 1}}));
+    CHECK_FALSE(intersects<approximate>(T, triangle3{{0x1p-40, 0, -1}, {1 + 0x1p-40, 1, 1}, {3 + 0x1p-40, 0, 1}}));
     CHECK_FALSE(method::triangle_triangle_sat(T, triangle3{{1, 1, 0}, {2, 1, 0}, {1, 2, 0}}));
     CHECK(method::triangle_triangle_sat(T, triangle3{{1, 0, 0}, {0, 1, 0}, {1, 1, 1}}));
 }
@@ -88,6 +95,31 @@ TEST_CASE("triangle_triangle: oracle, random", "[triangle_triangle][oracle]") {
 TEST_CASE("triangle_triangle: oracle, near-degenerate", "[triangle_triangle][oracle]") {
     support::run_oracle("triangle_triangle near-degenerate", support::cases(100000), approx_bound, near_case, truth, skip,
                         describe);
+}
+// Coordinates in {-2, ..., 2}: many pairs straddle each other's planes strictly (the
+// Guigue-Devillers path) and touch there exactly, at a vertex, an edge point or along a segment.
+TEST_CASE("triangle_triangle: oracle, small integer grid", "[triangle_triangle][oracle]") {
+    auto grid_case = [](support::rng& r) {
+        auto p = [&] { return point3{double(r.integer(-2, 2)), double(r.integer(-2, 2)), double(r.integer(-2, 2))}; };
+        const triangle3 t{p(), p(), p()};
+        return std::pair{t, triangle3{p(), p(), p()}};
+    };
+    const auto t = support::run_oracle("triangle_triangle grid", support::cases(100000), approx_bound, grid_case, truth, skip, describe);
+    // How many took the straddling path: all six vertex signs nonzero.
+    support::rng r(support::seed());
+    long straddling = 0, meeting = 0;
+    for (long i = 0; i < support::cases(100000); ++i) {
+        const auto [p, q] = grid_case(r);
+        auto straddles = [](const triangle3& t, const triangle3& u) { // t's vertices on both sides of u's plane, none in it
+            const sign s[3] = {orient3d(u.a, u.b, u.c, t.a), orient3d(u.a, u.b, u.c, t.b), orient3d(u.a, u.b, u.c, t.c)};
+            return s[0] != sign::zero && s[1] != sign::zero && s[2] != sign::zero && !(s[0] == s[1] && s[1] == s[2]);
+        };
+        if (!straddles(p, q) || !straddles(q, p)) continue;
+        ++straddling;
+        meeting += intersects(p, q);
+    }
+    std::printf("[cases] triangle_triangle grid: %ld straddling pairs (%ld meet) of %ld\n", straddling, meeting, t.n);
+    CHECK(straddling > t.n / 20);
 }
 TEST_CASE("triangle_triangle: vertex rotation and reversed winding give the same answer", "[triangle_triangle]") {
     support::rng r(support::seed() + 31);
