@@ -6,6 +6,7 @@
 // and 10,000 cases inside, on the boundary from inside or just beyond it.
 #include <catch2/catch_test_macros.hpp>
 #include <array>
+#include <cmath>
 #include "../oracle/cgal_oracle.hpp"
 import incidence;
 #include "../support/testing.hpp"
@@ -156,6 +157,57 @@ TEST_CASE("aabb_triangle: vertex order, axis permutations and mirror images give
     CHECK(bad == 0);
 }
 
+// A collinear triangle is the segment between its two extreme vertices along an axis on which they
+// differ (coordinate comparisons, exact), or a point: the oracle's segment test.
+bool collinear_truth(const aabb3& b, const triangle3& t) {
+    const point3 v[3] = {t.a, t.b, t.c};
+    int lo = 0, hi = 0;
+    for (int k = 0; k < 3 && lo == hi; ++k) {
+        auto c = [&](int i) { return k == 0 ? v[i].x : (k == 1 ? v[i].y : v[i].z); };
+        for (int i = 1; i < 3; ++i) {
+            if (c(i) < c(lo)) lo = i;
+            if (c(i) > c(hi)) hi = i;
+        }
+    }
+    double mn[3], mx[3], p[3], q[3];
+    arr(b.min, mn); arr(b.max, mx); arr(v[lo], p); arr(v[hi], q);
+    return oracle::box_segment(mn, mx, p, q);
+}
+TEST_CASE("aabb_triangle: the rounded axes never decide against the oracle", "[aabb_triangle][oracle]") {
+    // Random cases at every scale and at scale 1, near-degenerate cases (flat boxes included, which
+    // the stage must leave alone), the integer grid {-2..2}^3 (exact touching on every kind of
+    // axis) and a few non-finite coordinates.
+    support::rng r(support::seed() + 11), one(support::seed() + 12);
+    one.at_scale_one = true;
+    long n = 0, decided = 0, one_n = 0, one_decided = 0, wrong = 0;
+    for (long i = 0; i < support::cases(100000); ++i) {
+        const int kind = int(i % 4);
+        auto [b, t] = kind == 0 ? random_case(r) : kind == 1 ? random_case(one) : kind == 2 ? near_case(r) : [&] {
+            auto g = [&] { return double(r.integer(-2, 2)); };
+            auto p = [&] { return point3{g(), g(), g()}; };
+            return std::pair{support::ordered(aabb3{p(), p()}), triangle3{p(), p(), p()}};
+        }();
+        if (r.integer(0, 199) == 0) t.b.z = r.coin() ? std::nan("") : (r.coin() ? 1.0 : -1.0) * INFINITY;
+        const point3 v[3] = {t.a, t.b, t.c};
+        const int fast = pair::box_triangle_detail::rounded_axes_decide(b, v);
+        ++n;
+        one_n += kind == 1;
+        if (fast < 0) continue;
+        ++decided;
+        one_decided += kind == 1;
+        if (!(std::isfinite(t.b.z))) { // no shape: never a yes (the exact tier says no)
+            wrong += fast == 1;
+            continue;
+        }
+        if ((fast == 1) != (skip(b, t) ? collinear_truth(b, t) : truth(b, t))) {
+            if (++wrong <= 5) std::printf("  rounded axes wrong: %s\n", describe(b, t).c_str());
+        }
+    }
+    std::printf("[cases] aabb_triangle rounded axes: %ld cases, %ld decided (%ld of %ld random at scale 1), wrong %ld\n", n, decided,
+                one_decided, one_n, wrong);
+    CHECK(wrong == 0);
+    CHECK(one_decided > one_n * 9 / 10);
+}
 TEST_CASE("aabb_triangle: contains(aabb, triangle)", "[aabb_triangle][oracle]") {
     support::contains_oracle<aabb3, triangle3>("aabb_triangle (aabb around triangle)", support::cases(10000), approx_bound,
                                      [](support::rng& r) { const auto tr = support::random_transform(r, false); return std::pair{support::random_aabb(r, tr), triangle3{support::random_point(r, tr), support::random_point(r, tr), support::random_point(r, tr)}}; },
