@@ -8,8 +8,12 @@
 // one of its four faces (the 13-axis aabb_triangle test), since it cannot then lie inside.
 // contains: every vertex of the inner shape inside the outer one (coordinate comparisons for the
 // box, orient3d signs for the tetrahedron).
+// At run time the filter pass first tries the 25 separating axes (3 box normals, 4 face normals,
+// 6 edges x 3 box axes) rounded, each widened by a proven error bound
+// (box_triangle_detail::rounded_hull_axes_decide); the signs above decide what that leaves.
 // Source: the boundary-plus-inside decomposition of point_tetrahedron.cppm; Akenine-Moeller,
-// "Fast 3D triangle-box overlap testing", JGT 6(1), 2001 for the face tests.
+// "Fast 3D triangle-box overlap testing", JGT 6(1), 2001 for the face tests; Gottschalk, Lin and
+// Manocha, "OBBTree", SIGGRAPH 1996, section 5 (the separating axis theorem).
 // Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
 // magnitudes lie in [2^-500, 2^500], wrong only when a deciding sign is within 2^-40 of its
 // permanent (tests/query/aabb_tetrahedron.cpp).
@@ -42,8 +46,17 @@ struct box_corners {
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const aabb3& b, const tetrahedron3& t) {
     if (!well_formed_finite(b) || !finite(t)) return false;
-    // The box's face normals first: coordinate comparisons, exact in every tier.
     const point3 v[4] = {t.a, t.b, t.c, t.d};
+    // At run time, in the filtering kernels, the 25 separating axes rounded with proven error
+    // bounds first (box_triangle_detail::rounded_hull_axes_decide); the signs where they are not
+    // clear (see aabb_triangle.cppm for why not in the other kernels).
+    if constexpr (__is_base_of(arith::filter_kernel, K))
+        if (!__builtin_is_constant_evaluated()) {
+            constexpr int edges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+            constexpr int faces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+            if (const int r = box_triangle_detail::rounded_hull_axes_decide(b, v, edges, faces); r >= 0) return r == 1;
+        }
+    // The box's face normals first: coordinate comparisons, exact in every tier.
     auto at = [](const point3& p, int i) { return i == 0 ? p.x : (i == 1 ? p.y : p.z); };
     for (int i = 0; i < 3; ++i) {
         const double lo = at(b.min, i), hi = at(b.max, i);

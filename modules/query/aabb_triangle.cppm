@@ -52,81 +52,99 @@ template <box_reach Reach>
     else return s == side || s == sign::zero;
 }
 
-// The 13 axes with the normal's and the nine edge axes' projections rounded, each widened by a
-// rigorous bound on its rounding error, before any sign: 0 when some axis certainly separates,
-// 1 when none can (every projection overlaps by more than its bound), -1 when that is not clear.
-// The three box axes are coordinate comparisons (exact). It decides the same axis tests as the
-// signs below, so where it decides it agrees with them.
+// The separating axes of the box and the hull of NV points (a triangle: 13, a tetrahedron: 25)
+// with the projections rounded, each widened by a rigorous bound on its rounding error, before any
+// sign: 0 when some axis certainly separates, 1 when none can (every projection overlaps by more
+// than its bound), -1 when that is not clear. The axes: the box's three face normals (coordinate
+// comparisons, exact), the normals of the given faces, and each given edge crossed with each box
+// axis; for a solid box and a triangle or a tetrahedron (every edge and face listed) no axis
+// separating means the sets meet, and a zero normal is never called clear. It decides the same
+// axis tests as the signs, so where it decides it agrees with them.
 // Frame: every point relative to the box's min corner m, so the box is [0, w] with w = max - m,
 // and an axis a projects it onto [sum min(a_k, 0) w_k, sum max(a_k, 0) w_k] (no rounded centre).
 // Error bounds (u = 2^-53): an edge axis value f_j x_l - f_l x_j (f = q - p, x = v - m, every
 // difference rounded once) is off by at most about 4u (|f_j x_l| + |f_l x_j|) <= 8u F X, the box's
-// end by 4u (|f_j| w_l + |f_l| w_j) <= 8u F W, their difference by u more (F, X, W: the largest
-// |f|, |x| and w, or sums that bound them): 2^-48 F (X + W) covers every edge axis. The normal n = (v1 - v0) x (v2 - v0) is
-// off by 4u N_k per component (N_k its permanent); n . x_0 and the box's end with the rounded n
-// by about 12u sum N_k (|x_0k| + w_k): 2^-48 times that. Every difference is finite with magnitude
-// at most 2^300, so nothing overflows; an underflowed product or difference is off by at most 2^-1074,
-// and carried through degree 3 below 2^300 that stays under 2^-700, which is added to every
-// bound. A NaN cannot decide. Source: Akenine-Moeller, "Fast 3D triangle-box overlap testing",
-// JGT 6(1), 2001 (the axes); Higham, Accuracy and Stability of Numerical Algorithms, 2nd ed.
-// (2002), section 3.1 (the bounds). Run time only (the caller checks).
-[[nodiscard]] constexpr int rounded_axes_decide(const aabb3& b, const point3 (&v)[3]) {
+// end by 4u (|f_j| w_l + |f_l| w_j) <= 8u F W, their difference by u more (F, X, W: sums of every
+// |f|, |x| and w, at least the largest of each): 2^-48 F (X + W) covers every edge axis. A face
+// normal n = (b - a) x (c - a) is off by 4u N_k per component (N_k its permanent); n . x and the
+// box's end with the rounded n by about 12u sum N_k (X_k + w_k) (X_k: the sum of |x_k| over the
+// points): 2^-48 times that. Every difference is finite with magnitude at most 2^300, so nothing
+// overflows; an underflowed product or difference is off by at most 2^-1074, and carried through
+// degree 3 below 2^300 that stays under 2^-700, which is added to every bound. A NaN cannot
+// decide. Source: Akenine-Moeller, "Fast 3D triangle-box overlap testing", JGT 6(1), 2001 (the
+// axes); Higham, Accuracy and Stability of Numerical Algorithms, 2nd ed. (2002), section 3.1
+// (the bounds). Run time only (the callers check).
+template <int NV, int NE, int NF>
+[[nodiscard]] constexpr int rounded_hull_axes_decide(const aabb3& b, const point3 (&v)[NV], const int (&edges)[NE][2],
+                                                     const int (&faces)[NF][3]) {
     for (int i = 0; i < 3; ++i) { // the box's face normals: comparisons, exact
-        const double lo = at(b.min, i), hi = at(b.max, i), a = at(v[0], i), c = at(v[1], i), d = at(v[2], i);
-        if ((a > hi && c > hi && d > hi) || (a < lo && c < lo && d < lo)) return 0;
+        const double lo = at(b.min, i), hi = at(b.max, i);
+        bool above = true, below = true;
+        for (int p = 0; p < NV; ++p) above = above && at(v[p], i) > hi, below = below && at(v[p], i) < lo;
+        if (above || below) return 0;
     }
     const double m[3] = {b.min.x, b.min.y, b.min.z};
     const double w[3] = {b.max.x - b.min.x, b.max.y - b.min.y, b.max.z - b.min.z};
-    if (!(w[0] > 0.0 && w[1] > 0.0 && w[2] > 0.0)) return -1; // flat or inverted: the 13 axes do not suffice
-    double x[3][3], f[3][3]; // vertex minus the box's min corner; edge e: v[e + 1] - v[e]
-    double X = 0.0, F = 0.0; // sums of |x| and |f|: at least their largest, and NaN or infinite with any of them
-    for (int e = 0; e < 3; ++e)
-        for (int i = 0; i < 3; ++i) {
-            x[e][i] = at(v[e], i) - m[i];
-            f[e][i] = at(v[(e + 1) % 3], i) - at(v[e], i);
-            X += arith::abs(x[e][i]);
-            F += arith::abs(f[e][i]);
-        }
-    const double W = w[0] + w[1] + w[2];
+    if (!(w[0] > 0.0 && w[1] > 0.0 && w[2] > 0.0)) return -1; // flat or inverted: these axes do not suffice
+    double x[NV][3], f[NE][3]; // point minus the box's min corner; edge e: v[q] - v[p]
+    double Xk[3] = {0.0, 0.0, 0.0}, F = 0.0; // sums of |x| per axis and of |f|: NaN or infinite with any of them
+    for (int p = 0; p < NV; ++p)
+        for (int i = 0; i < 3; ++i) x[p][i] = at(v[p], i) - m[i], Xk[i] += arith::abs(x[p][i]);
+    for (int e = 0; e < NE; ++e)
+        for (int i = 0; i < 3; ++i) f[e][i] = at(v[edges[e][1]], i) - at(v[edges[e][0]], i), F += arith::abs(f[e][i]);
+    const double X = Xk[0] + Xk[1] + Xk[2], W = w[0] + w[1] + w[2];
     if (!(X <= 0x1p300 && F <= 0x1p300 && W <= 0x1p300)) return -1; // also NaN
     constexpr double tiny = 0x1p-700;
     bool clear = true;
     const double err = 0x1p-48 * F * (X + W) + tiny;
-    for (int e = 0; e < 3; ++e) {
-        const int o = (e + 2) % 3; // the third vertex
+    for (int e = 0; e < NE; ++e)
         for (int i = 0; i < 3; ++i) {
             const int j = (i + 1) % 3, l = (i + 2) % 3;
             const double fj = f[e][j], fl = f[e][l];
             // axis components: l is f_j, j is -f_l; none when both are zero (a rounded difference
-            // is zero only when exact), as in the signs below
+            // is zero only when exact), as in the signs
             if (fj == 0.0 && fl == 0.0) continue;
             const double hi = (fj > 0.0 ? fj : 0.0) * w[l] - (fl < 0.0 ? fl : 0.0) * w[j];
             const double lo = (fj < 0.0 ? fj : 0.0) * w[l] - (fl > 0.0 ? fl : 0.0) * w[j];
-            const double P = fj * x[e][l] - fl * x[e][j], O = fj * x[o][l] - fl * x[o][j];
-            const double mn = P < O ? P : O, mx = P < O ? O : P;
+            double mn = __builtin_huge_val(), mx = -__builtin_huge_val();
+            for (int p = 0; p < NV; ++p) {
+                if (p == edges[e][1]) continue; // projects where the edge's first point does
+                const double P = fj * x[p][l] - fl * x[p][j];
+                mn = P < mn ? P : mn, mx = P > mx ? P : mx;
+            }
             if (mn - hi > err || mx - lo < -err) return 0;
             clear = clear && mn - hi < -err && mx - lo > err;
         }
-    }
-    {
-        // n = f_0 x (-f_2) = (v1 - v0) x (v2 - v0)
-        double n[3], perm = 0.0, q = 0.0, hi = 0.0, lo = 0.0;
+    for (int g = 0; g < NF; ++g) {
+        const int a = faces[g][0], fb = faces[g][1], fc = faces[g][2];
+        double n[3], perm = 0.0, hi = 0.0, lo = 0.0;
         for (int i = 0; i < 3; ++i) {
             const int j = (i + 1) % 3, l = (i + 2) % 3;
-            const double s = f[2][j] * f[0][l], r = f[2][l] * f[0][j];
+            const double s = (at(v[fb], j) - at(v[a], j)) * (at(v[fc], l) - at(v[a], l));
+            const double r = (at(v[fb], l) - at(v[a], l)) * (at(v[fc], j) - at(v[a], j));
             n[i] = s - r;
-            perm += (arith::abs(s) + arith::abs(r)) * (arith::abs(x[0][i]) + w[i]);
+            perm += (arith::abs(s) + arith::abs(r)) * (Xk[i] + w[i]);
         }
         for (int i = 0; i < 3; ++i) {
-            q += n[i] * x[0][i];
             hi += n[i] > 0.0 ? n[i] * w[i] : 0.0;
             lo += n[i] < 0.0 ? n[i] * w[i] : 0.0;
         }
+        double mn = __builtin_huge_val(), mx = -__builtin_huge_val();
+        for (int p = 0; p < NV; ++p) {
+            if (p == fb || p == fc) continue; // project where the face's first point does
+            const double q = n[0] * x[p][0] + n[1] * x[p][1] + n[2] * x[p][2];
+            mn = q < mn ? q : mn, mx = q > mx ? q : mx;
+        }
         const double en = 0x1p-48 * perm + tiny;
-        if (q - hi > en || q - lo < -en) return 0;
-        clear = clear && q - hi < -en && q - lo > en;
+        if (mn - hi > en || mx - lo < -en) return 0;
+        clear = clear && mn - hi < -en && mx - lo > en;
     }
     return clear ? 1 : -1;
+}
+// The triangle's 13 axes (every tier's box-triangle test, and the box-tetrahedron test's faces).
+[[nodiscard]] constexpr int rounded_axes_decide(const aabb3& b, const point3 (&v)[3]) {
+    constexpr int edges[3][2] = {{0, 1}, {1, 2}, {2, 0}}, faces[1][3] = {{0, 1, 2}};
+    return rounded_hull_axes_decide(b, v, edges, faces);
 }
 
 template <box_reach Reach, class K>
