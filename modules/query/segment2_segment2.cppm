@@ -1,11 +1,13 @@
 // segment2 against segment2.
 // Semantics: Two closed segments in the plane; touching at an end point and collinear overlaps (even in one point) count.
-// Method (exact tiers): the linear pairs' shared body in the plane, linear_linear(linear2) in
-// segment_segment.cppm: with c = cross(D, E) != 0 the crossing's parameters t and u are checked
-// against each object's bounds as signs of products (t c = cross(w, E), u c = cross(w, D)); with
-// c == 0, cross(D, w) == 0 (on one line) and the 1D overlap along D. Every sign of degree <= 2.
-// Source: O'Rourke, Computational Geometry in C, 2nd ed. (1998), section 1.5 (segment
-// intersection from orientations), extended to rays and lines by their parameter bounds.
+// Method (exact tiers): the four orient2d signs of each segment's end points against the other's
+// line: both end points strictly on one side rejects; all four nonzero (so each straddles the
+// other) is a proper crossing; otherwise the segments meet iff an end point on the other's line
+// lies in that segment's bounding box (for a point on the line, on the segment: coordinate
+// comparisons, exact). The four signs are the same for (s, t) and (t, s), so every tier answers
+// both orders alike. Every sign of degree 2.
+// Source: Cormen, Leiserson, Rivest and Stein, Introduction to Algorithms, 3rd ed. (2009),
+// section 33.1 (SEGMENTS-INTERSECT); O'Rourke, Computational Geometry in C, 2nd ed. (1998), 1.5.
 // Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
 // magnitudes lie in [2^-500, 2^500], wrong only when a deciding sign is within 2^-48 of its
 // permanent (tests/query/segment2_segment2.cpp).
@@ -13,14 +15,34 @@ export module incidence.query:segment2_segment2;
 import incidence.core;
 import incidence.arith;
 import incidence.shapes;
+import incidence.predicates;
 import :segment_segment;
 
 export namespace incidence::pair {
 
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const segment2& s, const segment2& t) {
-    if (before(t, s)) return linear_linear(k, as_linear(t), as_linear(s));
-    return linear_linear(k, as_linear(s), as_linear(t));
+    if (!finite(s.a) || !finite(s.b) || !finite(t.a) || !finite(t.b)) return false; // no shape
+    // In the filter pass an unproven sign (an end point on the other's line, often exactly) is
+    // settled where it arises (arith::filter_kernel::settled_sgn) rather than by rerunning the pair.
+    auto orient = [&](point2 p, point2 q, point2 r) {
+        const auto f = [=](auto L) { return poly::orient2d(L, p, q, r); };
+        if constexpr (__is_base_of(arith::filter_kernel, K)) return k.settled_sgn(f);
+        else return k.sgn(f);
+    };
+    // r, on the line p q, lies on the closed segment p q iff it lies in its bounding box
+    auto within = [](point2 p, point2 q, point2 r) {
+        return (p.x <= q.x ? p.x <= r.x && r.x <= q.x : q.x <= r.x && r.x <= p.x) &&
+               (p.y <= q.y ? p.y <= r.y && r.y <= q.y : q.y <= r.y && r.y <= p.y);
+    };
+    const point2 a = s.a, b = s.b, c = t.a, d = t.b;
+    const sign o1 = orient(a, b, c), o2 = orient(a, b, d);
+    if (o1 == o2 && o1 != sign::zero) return false;
+    const sign o3 = orient(c, d, a), o4 = orient(c, d, b);
+    if (o3 == o4 && o3 != sign::zero) return false;
+    if (o1 != sign::zero && o2 != sign::zero && o3 != sign::zero && o4 != sign::zero) return true;
+    return (o1 == sign::zero && within(a, b, c)) || (o2 == sign::zero && within(a, b, d)) || (o3 == sign::zero && within(c, d, a)) ||
+           (o4 == sign::zero && within(c, d, b));
 }
 
 } // namespace incidence::pair
