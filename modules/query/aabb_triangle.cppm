@@ -8,7 +8,9 @@
 // coordinates, edge axes are signs of degree 2 (e_i x f . (v - corner)), the normal axis a sign
 // of degree 3 (orient3d-like). A box that is flat along some axis (a rectangle, a segment or a
 // point) is not a solid, and the 13 axes no longer suffice for it; such a box is its rectangle's
-// two triangles, decided by the exact triangle_triangle test.
+// two triangles, decided by the exact triangle_triangle test. At run time the filter pass first
+// tries the same 13 axes rounded, each widened by a proven error bound (rounded_axes_decide); the
+// signs decide what that leaves.
 // Source: Akenine-Moeller, "Fast 3D triangle-box overlap testing", JGT 6(1), 2001 (the 13 axes);
 // Gottschalk, Lin and Manocha, "OBBTree", SIGGRAPH 1996, section 5 (the separating axis theorem).
 // Approximate tier: Akenine-Moeller's test in plain double (box centre and half sizes, the nine
