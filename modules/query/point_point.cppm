@@ -1,19 +1,21 @@
 // point3 against point3.
-// Semantics: Two points meet iff all three coordinates are equal (compared exactly; NaN is never equal).
-// Method: three coordinate comparisons. A binary64 comparison is exact (the sign of p.x - q.x
-// without rounding), so every tier, the approximate one included, gives the exact answer and the
+// Semantics: Two points meet iff all three coordinates are equal (compared exactly; NaN is never
+// equal, and an infinite coordinate is no point).
+// Method: a finiteness check and three coordinate comparisons. A binary64 comparison is exact
+// (the sign of p.x - q.x without rounding), so every tier, the approximate one included, gives the exact answer and the
 // filter is never uncertain; like aabb_point, no kernel sign is needed.
 // Source: IEEE 754-2019, section 5.11 (comparisons are exact; -0 == +0; NaN is unordered).
 export module incidence.query:point_point;
 import incidence.core;
 import incidence.arith;
 import incidence.shapes;
+import :segment_segment;
 
 export namespace incidence::pair {
 
 template <class K>
 [[nodiscard]] constexpr bool intersects(K&, const point3& p, const point3& q) {
-    return p.x == q.x && p.y == q.y && p.z == q.z;
+    return finite(p) && p.x == q.x && p.y == q.y && p.z == q.z; // an infinite point is no shape
 }
 
 } // namespace incidence::pair
