@@ -2,8 +2,8 @@
 // Semantics: Two points meet iff all three coordinates are equal (compared exactly; NaN is never
 // equal, and an infinite coordinate is no point).
 // Method: a finiteness check and three coordinate comparisons. A binary64 comparison is exact
-// (the sign of p.x - q.x without rounding), so every tier, the approximate one included, gives the exact answer and the
-// filter is never uncertain; like aabb_point, no kernel sign is needed.
+// (the sign of p.x - q.x without rounding), so every tier, the approximate one included, gives
+// the exact answer and the filter is never uncertain; like aabb_point, no kernel sign is needed.
 // Source: IEEE 754-2019, section 5.11 (comparisons are exact; -0 == +0; NaN is unordered).
 export module incidence.query:point_point;
 import incidence.core;
