@@ -357,6 +357,18 @@ struct filter_kernel {
     [[nodiscard, gnu::always_inline]] constexpr sign probe(const F& f) { return to_sign(proven_sign(f(lift_filter{}))); }
 };
 
+// Whether a query body is in a filter pass at run time (a kernel derived from filter_kernel,
+// outside constant evaluation): where a rounded stage with proven error bounds may decide before
+// the signs (aabb_ray's slab parameters, aabb_triangle's and aabb_tetrahedron's separating axes).
+// Not in plain double, whose own answer is its tier's; not in a kernel that observes the signs;
+// not in the exact kernel, which runs only after a filter pass failed, where the stage, on the
+// same input, had decided nothing; not in constant evaluation, which refuses the NaN and
+// infinities such a stage can make.
+template <class K>
+[[nodiscard, gnu::always_inline]] constexpr bool rounded_stage_applies() {
+    return __is_base_of(filter_kernel, K) && !__builtin_is_constant_evaluated();
+}
+
 // The filter kernel of a pair with a mesh or a 3D polygon (incidence.query's filter_passes): a
 // sign the filter cannot prove goes to the two cheap exact stages (settle_cheaply) before the
 // query is called uncertain. Their signs repeat shared vertices, and a partner often lies in the

@@ -139,14 +139,12 @@ template <slab_extent X, class K>
     return true;
 }
 
-// The slab test: the rounded slab parameters first, at run time in the filtering and exact
-// kernels (not in plain double, whose own answer is the tier's, nor in a kernel that observes the
-// signs), inline; the signs only where they were too close to call.
+// The slab test: the rounded slab parameters first in a filter pass (arith::rounded_stage_applies),
+// inline; the signs only where they were too close to call.
 template <slab_extent X, class K>
 [[nodiscard, gnu::always_inline]] constexpr bool slabs(K& k, const aabb3& b, point3 o, vec3 dv, point3 e) {
-    if constexpr (__is_base_of(arith::filter_kernel, K) || __is_same(K, arith::exact_kernel))
-        if (!__builtin_is_constant_evaluated())
-            if (const int r = slab_parameters_decide<X>(b, o, dv, e); r >= 0) return r == 1;
+    if (arith::rounded_stage_applies<K>())
+        if (const int r = slab_parameters_decide<X>(b, o, dv, e); r >= 0) return r == 1;
     return slab_signs<X>(k, b, o, dv, e);
 }
 
@@ -212,8 +210,14 @@ template <class K>
 }
 
 [[nodiscard]] constexpr std::optional<aabb_ray_hit> aabb_ray_exact(const aabb3& b, const ray3& r) {
-    arith::exact_kernel k;
-    if (!intersects(k, b, r) || !k.valid) return std::nullopt;
+    // Called without a filter pass before it: the rounded slab parameters first here too.
+    int fast = -1;
+    if (!__builtin_is_constant_evaluated()) fast = slab_parameters_decide<slab_extent::ray>(b, r.origin, r.direction, r.origin);
+    if (fast == 0) return std::nullopt;
+    if (fast < 0) {
+        arith::exact_kernel k;
+        if (!intersects(k, b, r) || !k.valid) return std::nullopt;
+    }
     double t0 = 0.0, t1 = __builtin_huge_val();
     for (int i = 0; i < 3; ++i) {
         const slab_axis a = slab_of(b, r, i);

@@ -47,15 +47,14 @@ template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const aabb3& b, const tetrahedron3& t) {
     if (!well_formed_finite(b) || !finite(t)) return false;
     const point3 v[4] = {t.a, t.b, t.c, t.d};
-    // At run time, in the filtering kernels, the 25 separating axes rounded with proven error
-    // bounds first (box_triangle_detail::rounded_hull_axes_decide); the signs where they are not
-    // clear (see aabb_triangle.cppm for why not in the other kernels).
-    if constexpr (__is_base_of(arith::filter_kernel, K))
-        if (!__builtin_is_constant_evaluated()) {
-            constexpr int edges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
-            constexpr int faces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
-            if (const int r = box_triangle_detail::rounded_hull_axes_decide(b, v, edges, faces); r >= 0) return r == 1;
-        }
+    // In a filter pass (arith::rounded_stage_applies) the 25 separating axes rounded with proven
+    // error bounds first (box_triangle_detail::rounded_hull_axes_decide); the signs where they are
+    // not clear.
+    if (arith::rounded_stage_applies<K>()) {
+        constexpr int edges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+        constexpr int faces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+        if (const int r = box_triangle_detail::rounded_hull_axes_decide(b, v, edges, faces); r >= 0) return r == 1;
+    }
     // The box's face normals first: coordinate comparisons, exact in every tier.
     auto at = [](const point3& p, int i) { return i == 0 ? p.x : (i == 1 ? p.y : p.z); };
     for (int i = 0; i < 3; ++i) {

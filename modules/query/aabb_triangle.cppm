@@ -157,12 +157,10 @@ template <box_reach Reach, class K>
     // edge axes): an infinite bound must still give no.
     if (!finite(b.min) || !finite(b.max)) return false;
     const point3 v[3] = {t.a, t.b, t.c};
-    // At run time, in the filtering kernels, the rounded axes first (the box's axes included); the
-    // signs where they are not clear. Not in plain double, whose own answer is its tier's, nor in a
-    // kernel that observes the signs, nor in the exact kernel: it runs only where the filter
-    // failed, and the stage, which ran in the filter pass on the same input, decides nothing there.
-    if constexpr (Reach == box_reach::closed && __is_base_of(arith::filter_kernel, K))
-        if (!__builtin_is_constant_evaluated())
+    // In a filter pass (arith::rounded_stage_applies) the rounded axes first (the box's axes
+    // included); the signs where they are not clear.
+    if constexpr (Reach == box_reach::closed)
+        if (arith::rounded_stage_applies<K>())
             if (const int r = rounded_axes_decide(b, v); r >= 0) return r == 1;
     constexpr sign up = sign::positive, down = sign::negative;
     // The box's face normals: comparisons of coordinates.
