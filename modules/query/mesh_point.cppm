@@ -45,32 +45,11 @@ namespace meshq {
     return true;
 }
 // The vertices' bounding box (a well-formed mesh).
-[[nodiscard]] constexpr aabb3 bounds(const mesh3& m) {
-    aabb3 b{m.vertices[0], m.vertices[0]};
-    for (std::size_t i = 1; i < m.vertices.size(); ++i) {
-        const point3 v = m.vertices[i];
-        b.min = point3{v.x < b.min.x ? v.x : b.min.x, v.y < b.min.y ? v.y : b.min.y, v.z < b.min.z ? v.z : b.min.z};
-        b.max = point3{v.x > b.max.x ? v.x : b.max.x, v.y > b.max.y ? v.y : b.max.y, v.z > b.max.z ? v.z : b.max.z};
-    }
-    return b;
-}
-[[nodiscard]] constexpr bool in_box(const aabb3& b, const point3& p) {
-    return b.min.x <= p.x && p.x <= b.max.x && b.min.y <= p.y && p.y <= b.max.y && b.min.z <= p.z && p.z <= b.max.z;
-}
-[[nodiscard]] constexpr bool boxes_meet(const aabb3& a, const aabb3& b) {
-    return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y && a.min.z <= b.max.z &&
-           b.min.z <= a.max.z;
-}
-// The bounding box of points.
-[[nodiscard]] constexpr aabb3 bounds(const point3* pts, std::size_t n) {
-    aabb3 b{pts[0], pts[0]};
-    for (std::size_t i = 1; i < n; ++i) {
-        const point3 v = pts[i];
-        b.min = point3{v.x < b.min.x ? v.x : b.min.x, v.y < b.min.y ? v.y : b.min.y, v.z < b.min.z ? v.z : b.min.z};
-        b.max = point3{v.x > b.max.x ? v.x : b.max.x, v.y > b.max.y ? v.y : b.max.y, v.z > b.max.z ? v.z : b.max.z};
-    }
-    return b;
-}
+// The bounds of points and shapes, and their overlap (segment_segment.cppm), also under this name.
+using pair::bounds;
+using pair::boxes_meet;
+[[nodiscard]] constexpr aabb3 bounds(const mesh3& m) { return bounds(m.vertices.data(), m.vertices.size()); }
+[[nodiscard]] constexpr bool in_box(const aabb3& b, const point3& p) { return boxes_meet(b, bounds(p)); }
 
 // The point whose parity is sought: a double point p (at_point) or a rational one, V / W with
 // W > 0 (the homogeneous point of a caller). pl(L, x, y) has the sign of u . ((x - p) x (y - p)),

@@ -28,9 +28,6 @@ export namespace incidence::pair {
 
 namespace polyq {
 
-struct box2 {
-    point2 min, max;
-};
 // Ring ends valid and every vertex finite (comparisons only).
 [[nodiscard]] constexpr bool well_formed(const polygon2& g) {
     if (!g.indices_valid()) return false;
@@ -38,19 +35,11 @@ struct box2 {
         if (!finite(g.vertices[i])) return false;
     return true;
 }
-[[nodiscard]] constexpr box2 bounds(const point2* pts, std::size_t n) {
-    box2 b{pts[0], pts[0]};
-    for (std::size_t i = 1; i < n; ++i) {
-        const point2 v = pts[i];
-        b.min = point2{v.x < b.min.x ? v.x : b.min.x, v.y < b.min.y ? v.y : b.min.y};
-        b.max = point2{v.x > b.max.x ? v.x : b.max.x, v.y > b.max.y ? v.y : b.max.y};
-    }
-    return b;
-}
+// The bounds of points and shapes, and their overlap (segment_segment.cppm), also under this name.
+using pair::bounds;
+using pair::box2;
+using pair::boxes_meet;
 [[nodiscard]] constexpr box2 bounds(const polygon2& g) { return bounds(g.vertices.data(), g.vertices.size()); }
-[[nodiscard]] constexpr bool boxes_meet(const box2& a, const box2& b) {
-    return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y;
-}
 [[nodiscard]] constexpr bool in_box(const box2& b, point2 p) { return boxes_meet(b, box2{p, p}); }
 
 // Calls f(a, b) for every edge a -> b of every ring (a well-formed polygon) until it returns true.

@@ -19,7 +19,7 @@ export namespace incidence::pair {
 
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const point2& p, const ray2& r) {
-    return linear_linear(k, as_linear(p), as_linear(r));
+    return linear_pair(k, p, r);
 }
 
 } // namespace incidence::pair

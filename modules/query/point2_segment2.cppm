@@ -19,7 +19,7 @@ export namespace incidence::pair {
 
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const point2& p, const segment2& s) {
-    return linear_linear(k, as_linear(p), as_linear(s));
+    return linear_pair(k, p, s);
 }
 
 } // namespace incidence::pair

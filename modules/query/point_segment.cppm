@@ -17,7 +17,7 @@ export namespace incidence::pair {
 
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const point3& p, const segment3& s) {
-    return linear_linear(k, as_linear(p), as_linear(s));
+    return linear_pair(k, p, s);
 }
 
 } // namespace incidence::pair

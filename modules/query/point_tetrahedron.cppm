@@ -2,9 +2,11 @@
 // contains(tetrahedron, point | segment | triangle | tetrahedron), and the engine every
 // tetrahedron pair shares.
 // Semantics: a point on a face, an edge or a vertex counts.
-// Method (exact tiers): with o = orient3d(a, b, c, d) != 0, p lies in the closed solid iff each of
-// the four orient3d values with p in place of one vertex (p's barycentric coordinates times o)
-// has the sign of o or is zero; degree 3 each. With o = 0 the hull of the four coplanar points is
+// Method (exact tiers): p beyond the tetrahedron's bounding box rejects (comparisons, exact;
+// Ericson, Real-Time Collision Detection (2005), section 4.2.1). Then, with
+// o = orient3d(a, b, c, d) != 0, p lies in the closed solid iff each of the four orient3d values
+// with p in place of one vertex (p's barycentric coordinates times o) has the sign of o or is
+// zero; degree 3 each. With o = 0 the hull of the four coplanar points is
 // the union of the four faces (Caratheodory's theorem in the plane), so p is tested against each
 // face with point_triangle.
 // The other pairs (tetrahedron_meets below): a convex set X meets the closed solid T iff X meets
@@ -29,11 +31,6 @@ import :ray_triangle;
 
 export namespace incidence::pair {
 
-[[nodiscard]] constexpr bool finite(const tetrahedron3& t) { return finite(t.a) && finite(t.b) && finite(t.c) && finite(t.d); }
-[[nodiscard]] constexpr bool finite(const triangle3& t) { return finite(t.a) && finite(t.b) && finite(t.c); }
-[[nodiscard]] constexpr bool finite(const segment3& s) { return finite(s.a) && finite(s.b); }
-[[nodiscard]] constexpr bool finite(const ray3& r) { return finite(r.origin) && finite(r.direction); }
-[[nodiscard]] constexpr bool finite(const line3& l) { return finite(l.origin) && finite(l.direction); }
 
 namespace tetra {
 
@@ -116,7 +113,7 @@ template <class K>
 [[nodiscard]] constexpr bool contains_all(K& k, const tetrahedron3& t, const point3* pts, int n) {
     if (!finite(t)) return false;
     for (int j = 0; j < n; ++j)
-        if (!finite(pts[j])) return false;
+        if (!finite(pts[j]) || boxes_apart(k, pts[j], t)) return false; // a point beyond t's box
     const sign o = orientation(k, t);
     for (int j = 0; j < n; ++j)
         if (!in_closed(k, t, o, pts[j])) return false;

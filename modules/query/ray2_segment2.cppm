@@ -19,7 +19,7 @@ export namespace incidence::pair {
 
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const ray2& r, const segment2& s) {
-    return linear_linear(k, as_linear(r), as_linear(s));
+    return linear_pair(k, r, s);
 }
 
 } // namespace incidence::pair

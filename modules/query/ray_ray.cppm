@@ -17,8 +17,8 @@ export namespace incidence::pair {
 
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const ray3& r, const ray3& q) {
-    if (before(q, r)) return linear_linear(k, as_linear(q), as_linear(r));
-    return linear_linear(k, as_linear(r), as_linear(q));
+    if (before(q, r)) return linear_pair(k, q, r);
+    return linear_pair(k, r, q);
 }
 
 } // namespace incidence::pair

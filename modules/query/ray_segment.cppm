@@ -17,7 +17,7 @@ export namespace incidence::pair {
 
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const ray3& r, const segment3& s) {
-    return linear_linear(k, as_linear(r), as_linear(s));
+    return linear_pair(k, r, s);
 }
 
 } // namespace incidence::pair

@@ -1,9 +1,10 @@
 // ray3 against tetrahedron3 (a ray from its origin, a point when the direction is zero; closed
 // solid tetrahedron, coplanar vertices give their hull).
 // Semantics: touching a face, an edge or a vertex counts; an origin inside counts.
-// Method (exact tiers): the origin inside the solid (four orient3d signs, degree 3) says yes;
-// otherwise the ray meets the tetrahedron iff it meets one of its four faces (the ray_triangle
-// sign algorithm).
+// Method (exact tiers): bounding boxes apart reject (comparisons, exact; Ericson, Real-Time
+// Collision Detection (2005), section 4.2.1). Then: the origin inside the solid (four orient3d
+// signs, degree 3) says yes; otherwise the ray meets the tetrahedron iff it meets one of its four
+// faces (the ray_triangle sign algorithm).
 // Source: the boundary-plus-inside decomposition of point_tetrahedron.cppm; Ericson, Real-Time
 // Collision Detection (2005), section 5.4.2.
 // Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
@@ -22,6 +23,7 @@ export namespace incidence::pair {
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const ray3& r, const tetrahedron3& t) {
     if (!finite(r) || !finite(t)) return false;
+    if (boxes_apart(k, r, t)) return false; // exact, and cheap on the commonest no
     const point3 pts[1] = {r.origin};
     return tetra::tetrahedron_meets(k, t, [&](const triangle3& face) { return intersects(k, r, face); }, pts, 1, false);
 }

@@ -2,7 +2,9 @@
 // Semantics: closed triangle, so hits on edges and vertices count; a ray lying in the
 // triangle's plane hits when it meets the triangle (2D test); a collinear (degenerate)
 // triangle is its convex hull, a segment or a point; a zero direction is the point `origin`.
-// Method (exact tiers): signs only, as in CGAL's Ray_3/Triangle_3 do_intersect. With
+// Method (exact tiers): bounding boxes apart reject (comparisons, exact; Ericson, Real-Time
+// Collision Detection (2005), section 4.2.1; a ray's box is unbounded where it moves). Then
+// signs only, as in CGAL's Ray_3/Triangle_3 do_intersect. With
 // n.d = det(b-a, c-a, d), the Pluecker edge values w_a = det(d, b-o, c-o), w_b = det(d, c-o, a-o),
 // w_c = det(d, a-o, b-o) (summing to n.d) and num = det(b-a, c-a, a-o):
 //   n.d != 0: hit iff w_a, w_b, w_c all have the sign of n.d or are zero, and num * n.d >= 0
@@ -120,6 +122,7 @@ template <class K>
 
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const ray3& r, const triangle3& t) {
+    if (boxes_apart(k, r, t)) return false; // exact, and cheap on the commonest no
     return linear_triangle(k, linear3{r.origin, r.direction, r.origin, extent::ray}, t);
 }
 

@@ -1,13 +1,14 @@
 // segment2 against segment2.
 // Semantics: Two closed segments in the plane; touching at an end point and collinear overlaps (even in one point) count.
-// Method (exact tiers): the four orient2d signs of each segment's end points against the other's
-// line: both end points strictly on one side rejects; all four nonzero (so each straddles the
-// other) is a proper crossing; otherwise the segments meet iff an end point on the other's line
-// lies in that segment's bounding box (for a point on the line, on the segment: coordinate
-// comparisons, exact). The four signs are the same for (s, t) and (t, s), so every tier answers
-// both orders alike. Every sign of degree 2.
+// Method (exact tiers): bounding boxes apart reject (comparisons, exact). Then the four orient2d
+// signs of each segment's end points against the other's line: both end points strictly on one
+// side rejects; all four nonzero (so each straddles the other) is a proper crossing; otherwise the
+// segments meet iff an end point on the other's line lies in that segment's bounding box (for a
+// point on the line, on the segment: coordinate comparisons, exact). The four signs are the same
+// for (s, t) and (t, s), so every tier answers both orders alike. Every sign of degree 2.
 // Source: Cormen, Leiserson, Rivest and Stein, Introduction to Algorithms, 3rd ed. (2009),
-// section 33.1 (SEGMENTS-INTERSECT); O'Rourke, Computational Geometry in C, 2nd ed. (1998), 1.5.
+// section 33.1 (SEGMENTS-INTERSECT); O'Rourke, Computational Geometry in C, 2nd ed. (1998), 1.5;
+// Ericson, Real-Time Collision Detection (2005), section 4.2.1 (the bounding boxes).
 // Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
 // magnitudes lie in [2^-500, 2^500], wrong only when a deciding sign is within 2^-48 of its
 // permanent (tests/query/segment2_segment2.cpp).
@@ -23,6 +24,7 @@ export namespace incidence::pair {
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const segment2& s, const segment2& t) {
     if (!finite(s.a) || !finite(s.b) || !finite(t.a) || !finite(t.b)) return false; // no shape
+    if (boxes_apart(k, s, t)) return false; // exact, and cheap on the commonest no
     // In the filter pass an unproven sign (an end point on the other's line, often exactly) is
     // settled where it arises (arith::filter_kernel::settled_sgn) rather than by rerunning the pair.
     auto orient = [&](point2 p, point2 q, point2 r) {

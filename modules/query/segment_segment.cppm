@@ -6,8 +6,10 @@
 // Semantics: closed sets. A segment includes its end points, a ray its origin; a segment with
 // equal end points, a ray or a line with a zero direction, is its one point. Touching at an end
 // point counts; collinear overlaps (even in one point) count.
-// Method (exact tiers): signs only, as CGAL's Segment_3/Segment_3 do_intersect. For s = O + t D
-// and r = P + u E (D = q - o taken exactly inside each predicate for a segment), w = P - O:
+// Method (exact tiers): for points, segments and rays, bounding boxes apart reject first
+// (comparisons, exact; a ray's box is unbounded where its direction moves). Then signs only, as
+// CGAL's Segment_3/Segment_3 do_intersect. For s = O + t D and r = P + u E (D = q - o taken
+// exactly inside each predicate for a segment), w = P - O:
 //   a point against a point: the three coordinate differences are zero;
 //   det(D, E, w) != 0: skew, no;
 //   D x E != 0 (coplanar, not parallel): drop an axis where (D x E)_i != 0 (injective on the
@@ -21,10 +23,13 @@
 // Source: the coplanar reduction of Schneider and Eberly, Geometric Tools for Computer Graphics
 // (2003), section 11.1 (linear components), with the parameter comparisons written as signs of
 // products instead of quotients; the 2D crossing as in O'Rourke, Computational Geometry in C,
-// 2nd ed. (1998), section 1.5.
+// 2nd ed. (1998), section 1.5; Ericson, Real-Time Collision Detection (2005), section 4.2.1 (the
+// bounding boxes).
 // Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
 // magnitudes lie in [2^-500, 2^500], wrong only when a deciding sign is within 2^-40 of its
 // permanent (tests/query/segment_segment.cpp and the other linear pairs' tests).
+module;
+#include <cstddef>
 export module incidence.query:segment_segment;
 import incidence.core;
 import incidence.arith;
@@ -67,6 +72,13 @@ using linear2 = basic_linear<point2, vec2>;
 [[nodiscard]] constexpr bool finite(point3 p) { return finite(p.x) && finite(p.y) && finite(p.z); }
 [[nodiscard]] constexpr bool finite(vec2 v) { return finite(v.x) && finite(v.y); }
 [[nodiscard]] constexpr bool finite(point2 p) { return finite(p.x) && finite(p.y); }
+[[nodiscard]] constexpr bool finite(const tetrahedron3& t) { return finite(t.a) && finite(t.b) && finite(t.c) && finite(t.d); }
+[[nodiscard]] constexpr bool finite(const triangle3& t) { return finite(t.a) && finite(t.b) && finite(t.c); }
+[[nodiscard]] constexpr bool finite(const segment3& s) { return finite(s.a) && finite(s.b); }
+[[nodiscard]] constexpr bool finite(const ray3& r) { return finite(r.origin) && finite(r.direction); }
+[[nodiscard]] constexpr bool finite(const line3& l) { return finite(l.origin) && finite(l.direction); }
+[[nodiscard]] constexpr bool finite(const segment2& s) { return finite(s.a) && finite(s.b); }
+[[nodiscard]] constexpr bool finite(const ray2& r) { return finite(r.origin) && finite(r.direction); }
 
 [[nodiscard]] constexpr linear3 as_linear(const segment3& s) { return {s.a, vec3{0, 0, 0}, s.b, extent::segment}; }
 [[nodiscard]] constexpr linear3 as_linear(const ray3& r) { return {r.origin, r.direction, r.origin, extent::ray}; }
@@ -76,6 +88,87 @@ using linear2 = basic_linear<point2, vec2>;
 [[nodiscard]] constexpr linear2 as_linear(const ray2& r) { return {r.origin, r.direction, r.origin, extent::ray}; }
 [[nodiscard]] constexpr linear2 as_linear(const line2& l) { return {l.origin, l.direction, l.origin, extent::line}; }
 [[nodiscard]] constexpr linear2 as_linear(const point2& p) { return {p, vec2{0, 0}, p, extent::segment}; }
+
+// Axis-aligned bounds, for the rejection every tier shares: two closed sets whose bounds lie apart
+// along some axis do not meet. Comparisons only, so exact in every kernel and in constant
+// evaluation. The pair bodies read the bounds from the shapes as given (see linear_pair), not from
+// a linear3 written just before. (A line's bounds are unbounded but where its direction is zero:
+// the line pairs do without.)
+// Source: Ericson, Real-Time Collision Detection (2005), section 4.2.1 (AABB overlap test).
+struct box2 {
+    point2 min, max;
+};
+[[nodiscard]] constexpr double min2(double a, double b) { return b < a ? b : a; }
+[[nodiscard]] constexpr double max2(double a, double b) { return a < b ? b : a; }
+[[nodiscard]] constexpr aabb3 bounds(const point3* pts, std::size_t n) {
+    aabb3 b{pts[0], pts[0]};
+    for (std::size_t i = 1; i < n; ++i) {
+        const point3 v = pts[i];
+        b.min = point3{min2(b.min.x, v.x), min2(b.min.y, v.y), min2(b.min.z, v.z)};
+        b.max = point3{max2(b.max.x, v.x), max2(b.max.y, v.y), max2(b.max.z, v.z)};
+    }
+    return b;
+}
+[[nodiscard]] constexpr box2 bounds(const point2* pts, std::size_t n) {
+    box2 b{pts[0], pts[0]};
+    for (std::size_t i = 1; i < n; ++i) {
+        const point2 v = pts[i];
+        b.min = point2{min2(b.min.x, v.x), min2(b.min.y, v.y)};
+        b.max = point2{max2(b.max.x, v.x), max2(b.max.y, v.y)};
+    }
+    return b;
+}
+[[nodiscard]] constexpr bool boxes_meet(const aabb3& a, const aabb3& b) {
+    return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y && a.min.z <= b.max.z &&
+           b.min.z <= a.max.z;
+}
+[[nodiscard]] constexpr bool boxes_meet(const box2& a, const box2& b) {
+    return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y;
+}
+[[nodiscard]] constexpr aabb3 bounds(point3 p) { return {p, p}; }
+[[nodiscard]] constexpr box2 bounds(point2 p) { return {p, p}; }
+[[nodiscard]] constexpr aabb3 bounds(const segment3& s) {
+    const point3 v[2] = {s.a, s.b};
+    return bounds(v, 2);
+}
+[[nodiscard]] constexpr box2 bounds(const segment2& s) {
+    const point2 v[2] = {s.a, s.b};
+    return bounds(v, 2);
+}
+[[nodiscard]] constexpr aabb3 bounds(const triangle3& t) {
+    const point3 v[3] = {t.a, t.b, t.c};
+    return bounds(v, 3);
+}
+[[nodiscard]] constexpr aabb3 bounds(const tetrahedron3& t) {
+    const point3 v[4] = {t.a, t.b, t.c, t.d};
+    return bounds(v, 4);
+}
+// A ray's bounds: unbounded along each axis its direction moves on, towards the direction's sign.
+template <class Point, class Box>
+[[nodiscard]] constexpr Box ray_box(const Point& o, const auto& d) {
+    constexpr double inf = __builtin_huge_val();
+    Box b{o, o};
+    if (d.x < 0.0) b.min.x = -inf;
+    if (d.x > 0.0) b.max.x = inf;
+    if (d.y < 0.0) b.min.y = -inf;
+    if (d.y > 0.0) b.max.y = inf;
+    if constexpr (requires { o.z; }) {
+        if (d.z < 0.0) b.min.z = -inf;
+        if (d.z > 0.0) b.max.z = inf;
+    }
+    return b;
+}
+[[nodiscard]] constexpr aabb3 bounds(const ray3& r) { return ray_box<point3, aabb3>(r.origin, r.direction); }
+[[nodiscard]] constexpr box2 bounds(const ray2& r) { return ray_box<point2, box2>(r.origin, r.direction); }
+// The rejection itself: finite shapes whose bounds are apart. Not for a NaN or an infinite
+// coordinate, which goes on to the signs (so classify still calls such input uncertain), and not in
+// a kernel that observes the signs (the tests' margin kernel measures how close the signs of the
+// case come to zero, whichever way a tier decides it).
+template <class K, class A, class B>
+[[nodiscard, gnu::always_inline]] constexpr bool boxes_apart(K& k, const A& a, const B& b) {
+    if constexpr (requires { k.observe_compare(0.0, 0.0); }) return false;
+    else return !boxes_meet(bounds(a), bounds(b)) && finite(a) && finite(b);
+}
 
 template <class T>
 [[nodiscard]] constexpr auto pick(const arith::v3<T>& v, int axis) {
@@ -231,10 +324,18 @@ template <class K>
     return collinear_overlap(k, s, r);
 }
 
+// A pair of points, segments or rays as given: their bounds first (boxes_apart), read from the
+// shapes (from a linear3 written just before, they would wait on its stores), then linear_linear.
+// The line pairs call linear_linear directly.
+template <class K, class A, class B>
+[[nodiscard, gnu::always_inline]] constexpr bool linear_pair(K& k, const A& a, const B& b) {
+    return !boxes_apart(k, a, b) && linear_linear(k, as_linear(a), as_linear(b));
+}
+
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const segment3& s, const segment3& t) {
-    if (before(t, s)) return linear_linear(k, as_linear(t), as_linear(s));
-    return linear_linear(k, as_linear(s), as_linear(t));
+    if (before(t, s)) return linear_pair(k, t, s);
+    return linear_pair(k, s, t);
 }
 
 } // namespace incidence::pair

@@ -1,9 +1,11 @@
 // segment3 against tetrahedron3 (closed segment, a point when a == b; closed solid tetrahedron,
 // coplanar vertices give their hull).
 // Semantics: touching a face, an edge or a vertex counts.
-// Method (exact tiers): an end point inside the solid says yes, both end points strictly beyond
-// one face plane say no (orient3d signs, degree 3); otherwise the segment meets the tetrahedron
-// iff it meets one of its four faces (segment_triangle), since it cannot then lie inside.
+// Method (exact tiers): bounding boxes apart reject (comparisons, exact; Ericson, Real-Time
+// Collision Detection (2005), section 4.2.1). Then: an end point inside the solid says yes, both
+// end points strictly beyond one face plane say no (orient3d signs, degree 3); otherwise the
+// segment meets the tetrahedron iff it meets one of its four faces (segment_triangle), since it
+// cannot then lie inside.
 // Source: the boundary-plus-inside decomposition of point_tetrahedron.cppm; Ericson, Real-Time
 // Collision Detection (2005), section 5.4.2.
 // Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
@@ -22,6 +24,7 @@ export namespace incidence::pair {
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const segment3& s, const tetrahedron3& t) {
     if (!finite(s) || !finite(t)) return false;
+    if (boxes_apart(k, s, t)) return false; // exact, and cheap on the commonest no
     const point3 pts[2] = {s.a, s.b};
     return tetra::tetrahedron_meets(k, t, [&](const triangle3& face) { return intersects(k, s, face); }, pts, 2, true);
 }

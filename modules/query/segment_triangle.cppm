@@ -3,7 +3,8 @@
 // Semantics: closed segment, closed triangle: touching at an end point, an edge or a vertex
 // counts; a segment in the triangle's plane is tested in 2D; degenerate segment = a point;
 // degenerate triangle = its convex hull.
-// Method: the ray_triangle sign algorithm with d = b - a formed exactly inside each predicate
+// Method: bounding boxes apart reject (comparisons, exact; Ericson, Real-Time Collision
+// Detection (2005), section 4.2.1); then the ray_triangle sign algorithm with d = b - a formed exactly inside each predicate
 // and the extra sign n.(b - tri.a) for t <= 1 (CGAL Segment_3/Triangle_3 uses the same
 // orientation-only structure); see ray_triangle.cppm for the case table. Approximate tier:
 // the same algorithm in plain double.
@@ -19,6 +20,7 @@ export namespace incidence::pair {
 
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const segment3& s, const triangle3& t) {
+    if (boxes_apart(k, s, t)) return false; // exact, and cheap on the commonest no
     return linear_triangle(k, linear3{s.a, vec3{0, 0, 0}, s.b, extent::segment}, t);
 }
 

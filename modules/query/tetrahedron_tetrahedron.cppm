@@ -1,9 +1,10 @@
 // tetrahedron3 against tetrahedron3 (closed solids; coplanar vertices give their hull).
 // Semantics: touching at a vertex, along an edge or on a face counts.
-// Method (exact tiers): each one's vertices against the other's face planes (orient3d signs,
-// degree 3): a vertex inside the other solid says yes, all four strictly beyond one face plane
-// say no. Otherwise neither lies inside the other, so they meet iff a face of one meets a face
-// of the other (the 16 triangle_triangle tests).
+// Method (exact tiers): bounding boxes apart reject (comparisons, exact; Ericson, Real-Time
+// Collision Detection (2005), section 4.2.1). Then: each one's vertices against the other's face
+// planes (orient3d signs, degree 3): a vertex inside the other solid says yes, all four strictly
+// beyond one face plane say no. Otherwise neither lies inside the other, so they meet iff a face of
+// one meets a face of the other (the 16 triangle_triangle tests).
 // Source: the boundary-plus-inside decomposition of point_tetrahedron.cppm; Ganovelli, Ponchio
 // and Rocchini, "Fast tetrahedron-tetrahedron overlap algorithm", JGT 7(2), 2002 use the same
 // face-plane rejections first.
@@ -30,6 +31,7 @@ export namespace incidence::pair {
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const tetrahedron3& s0, const tetrahedron3& t0) {
     if (!finite(s0) || !finite(t0)) return false;
+    if (boxes_apart(k, s0, t0)) return false; // exact, and cheap on the commonest no
     const bool keep = before(s0, t0);
     const tetrahedron3 s = keep ? s0 : t0, t = keep ? t0 : s0;
     const point3 vs[4] = {s.a, s.b, s.c, s.d}, vt[4] = {t.a, t.b, t.c, t.d};

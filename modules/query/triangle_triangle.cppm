@@ -1,7 +1,8 @@
 // triangle3 against triangle3 (closed triangles; a collinear triangle is its hull).
 // Semantics: touching at a vertex, along an edge, or coplanar overlap counts.
-// Method (exact tiers): first the orient3d signs of each triangle's vertices against the other's
-// plane; all three strictly on one side rejects. When all six signs are nonzero, each triangle
+// Method (exact tiers): bounding boxes apart reject (comparisons, exact; Ericson, Real-Time
+// Collision Detection (2005), section 4.2.1). Then the orient3d signs of each triangle's vertices
+// against the other's plane; all three strictly on one side rejects. When all six signs are nonzero, each triangle
 // strictly straddles the other's plane (so neither is degenerate and the planes cross in a line
 // L): after a circular permutation puts the vertex alone on its side first, and a swap of the
 // other triangle's last two vertices makes that vertex's sign positive, the triangles meet iff
@@ -73,6 +74,7 @@ template <class K>
 }
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const triangle3& p, const triangle3& q) {
+    if (boxes_apart(k, p, q)) return false; // exact, and cheap on the commonest no
     return before(q, p) ? triangles_meet(k, q, p) : triangles_meet(k, p, q);
 }
 
