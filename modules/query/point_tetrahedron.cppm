@@ -14,6 +14,11 @@
 // plus the inside test, the method for a closed mesh. When X has vertices, first the signs of its
 // vertices against T's face planes: a vertex inside T says yes, all vertices strictly outside one
 // face plane says no (that face's normal separates).
+// For a segment, a triangle or a tetrahedron, a filter pass at run time first evaluates the same
+// face planes rounded, each value widened by a proven error bound (tetra::rounded_locate), then
+// looks for an edge clearly through a face (rounded_crossing) and a clearly separating edge axis
+// (rounded_edge_axes_apart); the signs decide what that leaves. (For a lone point, as in
+// point_tetrahedron and contains, the stage measured slower than the signs alone.)
 // Source: Shewchuk, "Adaptive precision floating-point arithmetic and fast robust geometric
 // predicates" (1997) for orient3d; Ericson, Real-Time Collision Detection (2005), section 5.4.2
 // (point in tetrahedron by the four face orientations); CGAL's Tetrahedron_3 do_intersect
@@ -82,11 +87,193 @@ template <class K>
     return located::unknown;
 }
 
+// The rounded stage of the tetrahedron pairs (a filter pass at run time, arith::rounded_stage_applies):
+// t's four face planes evaluated in double, each value widened by a proven bound on its rounding
+// error, before any sign. For each point of pts[0..n) (n <= 8): +1 when it lies clearly inside t
+// (strictly inside every face plane by more than the bound), -1 when clearly beyond some face
+// plane, 0 when neither is clear. `apart` says that every point lies clearly beyond one face plane
+// (t and the points' hull are then disjoint). Every entry 0 and `apart` false when a face's
+// opposite vertex is not clearly off its plane (a flat or nearly flat t), or a value is far off or
+// not finite. Where it decides, it agrees with the orient3d signs of in_solid and locate. The
+// values themselves stay in the result for rounded_crossing (an edge of the other shape clearly
+// through a face of t).
+// Frame: x = p - t.a, rounded once. Face i (opposite vertex i) has base b and normal
+// n = (c - b) x (d - b), each difference rounded once; its values n . x - n . x_b. Error bounds
+// (u = 2^-53): n_k is off by at most about 4u N_k (N_k = |s| + |r|, the permanent of its two
+// products), n . x by 8u sum N_k X_k (X_k: the largest |x_k| over t's vertices and the points), and
+// the difference of two such by 18u sum N_k X_k (its own rounding included): 2^-48 sum N_k X_k
+// (32u) covers it. Every |x_k| at most 2^300, so nothing overflows; an underflowed product is off
+// by at most 2^-1074, which stays under 2^-700 through the degree-3 values. Source: Ericson,
+// Real-Time Collision Detection (2005), section 5.4.2 (the four face orientations); Higham,
+// Accuracy and Stability of Numerical Algorithms, 2nd ed. (2002), section 3.1 (the bounds).
+struct rounded_located {
+    int status[8];
+    bool apart;
+    // For rounded_crossing: w[i][j], point j's value against face i, signed so that t's inside is
+    // positive, off by at most err[i]; `crossings` when every value and bound is at most 2^500.
+    double w[4][8];
+    double err[4];
+    bool crossings;
+};
+[[nodiscard]] constexpr rounded_located rounded_locate(const tetrahedron3& t, const point3* pts, int n) {
+    rounded_located r{};
+    const point3 v[4] = {t.a, t.b, t.c, t.d};
+    double xv[4][3], xp[8][3], X[3] = {0.0, 0.0, 0.0};
+    bool in_range = true; // every |x_k| <= 2^300 (false for NaN)
+    auto rel = [&](point3 p, double* x) {
+        x[0] = p.x - t.a.x, x[1] = p.y - t.a.y, x[2] = p.z - t.a.z;
+        for (int k = 0; k < 3; ++k) {
+            const double a = arith::abs(x[k]);
+            in_range = in_range && a <= 0x1p300;
+            X[k] = max2(X[k], a);
+        }
+    };
+    for (int i = 0; i < 4; ++i) rel(v[i], xv[i]);
+    for (int j = 0; j < n; ++j) rel(pts[j], xp[j]);
+    if (!in_range) return r;
+    bool inside[8] = {true, true, true, true, true, true, true, true};
+    double largest = 0.0;
+    for (int i = 0; i < 4; ++i) {
+        const int ib = (i + 1) & 3, ic = (i + 2) & 3, id = (i + 3) & 3;
+        const double e[2][3] = {{v[ic].x - v[ib].x, v[ic].y - v[ib].y, v[ic].z - v[ib].z},
+                                {v[id].x - v[ib].x, v[id].y - v[ib].y, v[id].z - v[ib].z}};
+        double nrm[3], perm = 0.0;
+        for (int k = 0; k < 3; ++k) {
+            const int j = (k + 1) % 3, l = (k + 2) % 3;
+            const double sp = e[0][j] * e[1][l], rp = e[0][l] * e[1][j];
+            nrm[k] = sp - rp;
+            perm += (arith::abs(sp) + arith::abs(rp)) * X[k];
+        }
+        const double err = 0x1p-48 * perm + 0x1p-700;
+        auto value = [&](const double* x) {
+            return (nrm[0] * x[0] + nrm[1] * x[1] + nrm[2] * x[2]) - (nrm[0] * xv[ib][0] + nrm[1] * xv[ib][1] + nrm[2] * xv[ib][2]);
+        };
+        const double opposite = value(xv[i]);
+        if (!(opposite > err || opposite < -err)) return rounded_located{}; // flat, or not clear
+        const double side = opposite > 0.0 ? 1.0 : -1.0;
+        bool all_beyond = true;
+        for (int j = 0; j < n; ++j) {
+            const double w = side * value(xp[j]);
+            r.w[i][j] = w;
+            largest = max2(largest, arith::abs(w));
+            if (w < -err) r.status[j] = -1;
+            else all_beyond = false;
+            inside[j] = inside[j] && w > err;
+        }
+        r.err[i] = err;
+        largest = max2(largest, err);
+        if (all_beyond) r.apart = true;
+    }
+    for (int j = 0; j < n; ++j)
+        if (inside[j]) r.status[j] = 1;
+    r.crossings = largest <= 0x1p500;
+    return r;
+}
+
+// Does the segment from point p to point q of rounded_locate's table clearly cross t's boundary
+// inside a face? For face i with the two values clearly of opposite signs (a < 0 < b, or the
+// reverse), the crossing point X lies on face i's plane strictly between p and q, and its value
+// against face j is (a d - b c) / (a - b) (c, d: the values of p and q against face j); X lies in
+// the closed face, so the segment meets t, when that is clearly positive for the three other
+// faces. Error bound on M = a d - b c from values off by at most E_i (a, b) and E_j (c, d):
+// (|a| + |b|) E_j + (|c| + |d| + 2 E_j) E_i for the values, 2^-50 (|a d| + |b c|) for the two
+// products and the difference (about 2u), the whole widened by 1/8 for the rounding of the bound
+// itself, plus 2^-1060 for underflow (values at most 2^500, so no product overflows).
+[[nodiscard]] constexpr bool rounded_crossing(const rounded_located& r, int p, int q) {
+    if (!r.crossings) return false;
+    for (int i = 0; i < 4; ++i) {
+        const double a = r.w[i][p], b = r.w[i][q], ei = r.err[i];
+        if (!((a < -ei && b > ei) || (a > ei && b < -ei))) continue;
+        const double sa = a < 0.0 ? -1.0 : 1.0; // the sign of a - b
+        bool in_face = true;
+        for (int j = 0; j < 4 && in_face; ++j) {
+            if (j == i) continue;
+            const double c = r.w[j][p], d = r.w[j][q], ej = r.err[j];
+            const double ad = a * d, bc = b * c;
+            const double bound = ((arith::abs(a) + arith::abs(b)) * ej + (arith::abs(c) + arith::abs(d) + 2.0 * ej) * ei +
+                                  0x1p-50 * (arith::abs(ad) + arith::abs(bc))) *
+                                     1.125 +
+                                 0x1p-1060;
+            in_face = sa * (ad - bc) > bound;
+        }
+        if (in_face) return true;
+    }
+    return false;
+}
+
+// Is there a clearly separating axis among the cross products of an edge of the hull of a[0..na)
+// with an edge of the hull of b[0..nb) (na, nb <= 4: every pair of points is taken as an edge,
+// which covers the edges of a point, a segment, a triangle or a tetrahedron)? The separating-axis
+// test's edge axes, rounded, each widened by a proven bound. Frame: x = p - a[0], rounded once;
+// an axis is e x f with e and f differences of inputs rounded once. The axis component k is off
+// by about 4u M_k (M_k = |e_j f_l| + |e_l f_j|), a projection x . (e x f) by 8u sum M_k X_k
+// (X_k: the largest |x_k|), the difference of two projections by 18u sum M_k X_k: 2^-48 sum M_k X_k
+// plus 2^-700 covers it, as in rounded_locate (every |x_k| and every edge component at most 2^300).
+// Only a separation is claimed: where no axis separates clearly, nothing is known. Source:
+// Gottschalk, Lin and Manocha, "OBBTree", SIGGRAPH 1996, section 5 (the edge-edge axes); Higham,
+// Accuracy and Stability of Numerical Algorithms, 2nd ed. (2002), section 3.1 (the bounds).
+[[nodiscard]] constexpr bool rounded_edge_axes_apart(const point3* a, int na, const point3* b, int nb) {
+    double x[8][3], X[3] = {0.0, 0.0, 0.0};
+    bool in_range = true;
+    const int n = na + nb;
+    for (int p = 0; p < n; ++p) {
+        const point3 v = p < na ? a[p] : b[p - na];
+        x[p][0] = v.x - a[0].x, x[p][1] = v.y - a[0].y, x[p][2] = v.z - a[0].z;
+        for (int k = 0; k < 3; ++k) {
+            const double m = arith::abs(x[p][k]);
+            in_range = in_range && m <= 0x1p299; // so every edge component is at most 2^300
+            X[k] = max2(X[k], m);
+        }
+    }
+    if (!in_range) return false;
+    for (int p0 = 0; p0 < na; ++p0)
+        for (int p1 = p0 + 1; p1 < na; ++p1) {
+            const double e[3] = {a[p1].x - a[p0].x, a[p1].y - a[p0].y, a[p1].z - a[p0].z};
+            for (int q0 = 0; q0 < nb; ++q0)
+                for (int q1 = q0 + 1; q1 < nb; ++q1) {
+                    const double f[3] = {b[q1].x - b[q0].x, b[q1].y - b[q0].y, b[q1].z - b[q0].z};
+                    double axis[3], perm = 0.0;
+                    for (int k = 0; k < 3; ++k) {
+                        const int j = (k + 1) % 3, l = (k + 2) % 3;
+                        const double sp = e[j] * f[l], rp = e[l] * f[j];
+                        axis[k] = sp - rp;
+                        perm += (arith::abs(sp) + arith::abs(rp)) * X[k];
+                    }
+                    const double err = 0x1p-48 * perm + 0x1p-700;
+                    double lo_a = __builtin_huge_val(), hi_a = -__builtin_huge_val();
+                    double lo_b = __builtin_huge_val(), hi_b = -__builtin_huge_val();
+                    for (int p = 0; p < n; ++p) {
+                        const double proj = axis[0] * x[p][0] + axis[1] * x[p][1] + axis[2] * x[p][2];
+                        if (p < na) lo_a = min2(lo_a, proj), hi_a = max2(hi_a, proj);
+                        else lo_b = min2(lo_b, proj), hi_b = max2(hi_b, proj);
+                    }
+                    if (lo_b - hi_a > err || lo_a - hi_b > err) return true;
+                }
+        }
+    return false;
+}
+
 // The closed convex set x (finite, checked by the caller) against the closed tetrahedron t
 // (finite): pts[0..n) are points of x, its vertices when `hull`; meets(f) says whether x meets
 // the triangle f.
 template <class K, class Meets>
 [[nodiscard]] constexpr bool tetrahedron_meets(K& k, const tetrahedron3& t, const Meets& meets, const point3* pts, int n, bool hull) {
+    // The rounded stage first, for a hull (x's vertices; for a lone point of x such as a ray's
+    // origin it measured slower than the signs alone).
+    if (arith::rounded_stage_applies<K>() && hull && n <= 8) {
+        const rounded_located r = rounded_locate(t, pts, n);
+        if (r.apart) return false;
+        for (int j = 0; j < n; ++j)
+            if (r.status[j] == 1) return true;
+        // x is convex: the segment between two of its points lies in it
+        if (n <= 4) {
+            for (int p = 0; p < n; ++p)
+                for (int q = p + 1; q < n; ++q)
+                    if (rounded_crossing(r, p, q)) return true;
+            const point3 v[4] = {t.a, t.b, t.c, t.d};
+            if (rounded_edge_axes_apart(pts, n, v, 4)) return false;
+        }
+    }
     const sign o = orientation(k, t);
     if (o != sign::zero) {
         const located l = locate(k, t, o, pts, n, hull);

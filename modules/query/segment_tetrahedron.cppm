@@ -5,7 +5,9 @@
 // Collision Detection (2005), section 4.2.1). Then: an end point inside the solid says yes, both
 // end points strictly beyond one face plane say no (orient3d signs, degree 3); otherwise the
 // segment meets the tetrahedron iff it meets one of its four faces (segment_triangle), since it
-// cannot then lie inside.
+// cannot then lie inside. In a filter pass at run time the rounded stage of point_tetrahedron.cppm
+// comes first (face planes, an edge clearly through a face, the edge axes; each value widened by a
+// proven error bound).
 // Source: the boundary-plus-inside decomposition of point_tetrahedron.cppm; Ericson, Real-Time
 // Collision Detection (2005), section 5.4.2.
 // Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero

@@ -4,7 +4,9 @@
 // Collision Detection (2005), section 4.2.1). Then: each one's vertices against the other's face
 // planes (orient3d signs, degree 3): a vertex inside the other solid says yes, all four strictly
 // beyond one face plane say no. Otherwise neither lies inside the other, so they meet iff a face of
-// one meets a face of the other (the 16 triangle_triangle tests).
+// one meets a face of the other (the 16 triangle_triangle tests). In a filter pass at run time the
+// rounded stage of point_tetrahedron.cppm comes first (face planes, an edge clearly through a face,
+// the edge axes; each value widened by a proven error bound).
 // Source: the boundary-plus-inside decomposition of point_tetrahedron.cppm; Ganovelli, Ponchio
 // and Rocchini, "Fast tetrahedron-tetrahedron overlap algorithm", JGT 7(2), 2002 use the same
 // face-plane rejections first.
@@ -35,6 +37,16 @@ template <class K>
     const bool keep = before(s0, t0);
     const tetrahedron3 s = keep ? s0 : t0, t = keep ? t0 : s0;
     const point3 vs[4] = {s.a, s.b, s.c, s.d}, vt[4] = {t.a, t.b, t.c, t.d};
+    if (arith::rounded_stage_applies<K>()) { // the rounded face planes of each, first
+        const tetra::rounded_located in_s = tetra::rounded_locate(s, vt, 4), in_t = tetra::rounded_locate(t, vs, 4);
+        if (in_s.apart || in_t.apart) return false;
+        for (int j = 0; j < 4; ++j)
+            if (in_s.status[j] == 1 || in_t.status[j] == 1) return true;
+        for (int p = 0; p < 4; ++p) // an edge of one clearly through a face of the other
+            for (int q = p + 1; q < 4; ++q)
+                if (tetra::rounded_crossing(in_s, p, q) || tetra::rounded_crossing(in_t, p, q)) return true;
+        if (tetra::rounded_edge_axes_apart(vs, 4, vt, 4)) return false;
+    }
     if (const sign o = tetra::orientation(k, s); o != sign::zero) {
         const auto l = tetra::locate(k, s, o, vt, 4, true);
         if (l != tetra::located::unknown) return l == tetra::located::inside;

@@ -5,7 +5,9 @@
 // Collision Detection (2005), section 4.2.1). Then: a triangle vertex inside the solid says yes,
 // all three strictly beyond one face plane say no (orient3d signs, degree 3); otherwise the
 // triangle meets the tetrahedron iff it meets one of its four faces (triangle_triangle), since it
-// cannot then lie inside.
+// cannot then lie inside. In a filter pass at run time the rounded stage of point_tetrahedron.cppm
+// comes first (face planes, an edge clearly through a face, the edge axes; each value widened by a
+// proven error bound).
 // Source: the boundary-plus-inside decomposition of point_tetrahedron.cppm; Guigue and Devillers,
 // JGT 8(1), 2003 for the face tests.
 // Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
