@@ -3,7 +3,9 @@
 // Semantics: touching a face, an edge or a vertex counts.
 // Method (exact tiers): a line that meets a bounded convex solid meets its boundary, so the
 // line meets the tetrahedron iff it meets one of its four faces (the line_triangle sign
-// algorithm); the origin inside the solid (four orient3d signs) answers first.
+// algorithm); the origin inside the solid (four orient3d signs) answers first. In a filter pass
+// at run time the line's side of each of the six edges first, rounded with proven error bounds
+// (tetra::rounded_line_meets); the signs decide what that leaves.
 // Source: the boundary-plus-inside decomposition of point_tetrahedron.cppm; Ericson, Real-Time
 // Collision Detection (2005), section 5.4.2.
 // Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
@@ -22,6 +24,9 @@ export namespace incidence::pair {
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const line3& l, const tetrahedron3& t) {
     if (!finite(l) || !finite(t)) return false;
+    // In a filter pass, the rounded edge and face values first (tetra::rounded_line_meets).
+    if (arith::rounded_stage_applies<K>())
+        if (const int m = tetra::rounded_line_meets(t, l.origin, l.direction, false); m >= 0) return m == 1;
     const point3 pts[1] = {l.origin};
     return tetra::tetrahedron_meets(k, t, [&](const triangle3& face) { return intersects(k, l, face); }, pts, 1, false);
 }

@@ -253,6 +253,85 @@ struct rounded_located {
     return false;
 }
 
+// The line (or, when `ray`, the ray) through o with direction d against the closed tetrahedron t,
+// rounded, each value widened by a proven bound: 1 when it clearly meets t, 0 when it clearly
+// misses, -1 when that is not clear (and for a zero d, a flat t that the line lies in, values far
+// off or not finite). Frame: x_i = v_i - o, rounded once. For an edge (v_i, v_j),
+// s_ij = d . (x_i x x_j) is the side of the line on which the edge passes (Pluecker's relative
+// orientation of two lines). The line crosses the plane of face (a, b, c) at a point of the face,
+// transversally, iff s_ab, s_bc and s_ca share a sign (their sum is d . n, n the face normal), so
+// all three clearly of sign S says the line meets t; every face with two clearly opposite values
+// says it misses (a line that meets t meets a face, where the three are of one sign or zero). For
+// the ray the crossing's parameter is D / (d . n), D = x_a . (x_b x x_c) (o against the face's
+// plane): a face clearly of sign S is crossed ahead of o when D is clearly of sign S, behind when
+// clearly of sign -S; the ray misses t when every face is clearly missed by the line or crossed
+// behind o (a ray that meets t meets a face at a parameter of at least 0). Error bounds (u = 2^-53):
+// a component k of x_i x x_j is off by about 4u M_k (M_k = |x_i,l x_j,m| + |x_i,m x_j,l|, the
+// permanent of its two products), a value s_ij or D by about 8u sum |y_k| M_k (y = d or x_a): 2^-48
+// sum |y_k| M_k covers it; every |x_i,k| and |d_k| at most 2^300, so nothing overflows, and
+// underflowed products stay under 2^-700. Source: Pluecker coordinates for line-triangle
+// crossing, Ericson, Real-Time Collision Detection (2005), section 5.3.4 (scalar triple products
+// of a line against a triangle's edges); Higham, Accuracy and Stability of Numerical Algorithms,
+// 2nd ed. (2002), section 3.1 (the bounds).
+[[nodiscard]] constexpr int rounded_line_meets(const tetrahedron3& t, point3 o, vec3 d, bool ray) {
+    const point3 v[4] = {t.a, t.b, t.c, t.d};
+    const double y[3] = {d.x, d.y, d.z};
+    double x[4][3];
+    bool in_range = true; // every |x_i,k| and |d_k| at most 2^300 (false for NaN)
+    for (int i = 0; i < 4; ++i) {
+        x[i][0] = v[i].x - o.x, x[i][1] = v[i].y - o.y, x[i][2] = v[i].z - o.z;
+        for (int k = 0; k < 3; ++k) in_range = in_range && arith::abs(x[i][k]) <= 0x1p300;
+    }
+    for (int k = 0; k < 3; ++k) in_range = in_range && arith::abs(y[k]) <= 0x1p300;
+    if (!in_range) return -1;
+    // The six edges (0,1) (0,2) (0,3) (1,2) (1,3) (2,3): their cross products, permanents, s and bound.
+    constexpr int ei[6] = {0, 0, 0, 1, 1, 2}, ej[6] = {1, 2, 3, 2, 3, 3};
+    double c[6][3], m[6][3], s[6], es[6];
+    for (int e = 0; e < 6; ++e) {
+        const double* a = x[ei[e]];
+        const double* b = x[ej[e]];
+        double val = 0.0, perm = 0.0;
+        for (int k = 0; k < 3; ++k) {
+            const int l = (k + 1) % 3, n = (k + 2) % 3;
+            const double sp = a[l] * b[n], rp = a[n] * b[l];
+            c[e][k] = sp - rp;
+            m[e][k] = arith::abs(sp) + arith::abs(rp);
+            val += y[k] * c[e][k];
+            perm += arith::abs(y[k]) * m[e][k];
+        }
+        s[e] = val;
+        es[e] = 0x1p-48 * perm + 0x1p-700;
+    }
+    // Face opposite vertex f as the cycle (a, b, c): its edges (a, b), (b, c) and (a, c) (whose s
+    // is -s_ca), and the vertex a and edge (b, c) for D.
+    constexpr int fe[4][3] = {{3, 5, 4}, {1, 5, 2}, {0, 4, 2}, {0, 3, 1}};
+    constexpr int fa[4] = {1, 0, 0, 0}, fbc[4] = {5, 5, 4, 3};
+    bool misses = true;
+    for (int f = 0; f < 4; ++f) {
+        int pos = 0, neg = 0;
+        for (int q = 0; q < 3; ++q) {
+            const double w = q == 2 ? -s[fe[f][q]] : s[fe[f][q]], err = es[fe[f][q]];
+            pos += w > err;
+            neg += w < -err;
+        }
+        if (pos > 0 && neg > 0) continue; // the line misses this face
+        if (pos < 3 && neg < 3) {
+            misses = false; // not clear
+            continue;
+        }
+        if (!ray) return 1;
+        const double S = pos == 3 ? 1.0 : -1.0;
+        const double* a = x[fa[f]];
+        const int e = fbc[f];
+        const double D = a[0] * c[e][0] + a[1] * c[e][1] + a[2] * c[e][2];
+        const double eD = 0x1p-48 * (arith::abs(a[0]) * m[e][0] + arith::abs(a[1]) * m[e][1] + arith::abs(a[2]) * m[e][2]) + 0x1p-700;
+        if (S * D > eD) return 1;  // crossed ahead of o
+        if (S * D < -eD) continue; // crossed behind o
+        misses = false;
+    }
+    return misses ? 0 : -1;
+}
+
 // The closed convex set x (finite, checked by the caller) against the closed tetrahedron t
 // (finite): pts[0..n) are points of x, its vertices when `hull`; meets(f) says whether x meets
 // the triangle f.
