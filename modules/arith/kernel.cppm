@@ -453,6 +453,14 @@ struct exact_kernel {
     }
 };
 
+// Whether a query body is the exact kernel's pass at run time: a rounded stage cannot decide there
+// (the filter pass before it, on the same input, could not), but what it found clear may still
+// spare exact signs (aabb_triangle's axes that clearly overlap).
+template <class K>
+[[nodiscard, gnu::always_inline]] constexpr bool exact_pass_at_run_time() {
+    return __is_same(K, exact_kernel) && !__builtin_is_constant_evaluated();
+}
+
 // probe(k, f): k's sign of f for a check that may fail without consequence; only a positive
 // result may be relied on (the filter reports zero for what it cannot prove).
 template <class K, class F>

@@ -10,7 +10,8 @@
 // point) is not a solid, and the 13 axes no longer suffice for it; such a box is its rectangle's
 // two triangles, decided by the exact triangle_triangle test. At run time the filter pass first
 // tries the same 13 axes rounded, each widened by a proven error bound (rounded_axes_decide); the
-// signs decide what that leaves.
+// signs decide what that leaves, on the axes it left unclear only (the exact pass at run time asks
+// the stage which those are), after a vertex in the closed box has said yes (comparisons).
 // Source: Akenine-Moeller, "Fast 3D triangle-box overlap testing", JGT 6(1), 2001 (the 13 axes);
 // Gottschalk, Lin and Manocha, "OBBTree", SIGGRAPH 1996, section 5 (the separating axis theorem).
 // Approximate tier: Akenine-Moeller's test in plain double (box centre and half sizes, the nine
@@ -75,10 +76,15 @@ template <box_reach Reach>
 // degree 3 below 2^300 that stays under 2^-700, which is added to every bound. A NaN cannot
 // decide. Source: Akenine-Moeller, "Fast 3D triangle-box overlap testing", JGT 6(1), 2001 (the
 // axes); Higham, Accuracy and Stability of Numerical Algorithms, 2nd ed. (2002), section 3.1
-// (the bounds). Run time only (the callers check).
+// (the bounds). Run time only (the callers check). With `unclear` given and -1 returned, the axes
+// whose projections are not clearly overlapping get their bit in *unclear (edge e with box axis i:
+// bit 3 e + i; face g: bit 3 NE + g; every bit when the stage stopped early): the others cannot
+// separate, so the signs need not test them.
 template <int NV, int NE, int NF>
 [[nodiscard]] constexpr int rounded_hull_axes_decide(const aabb3& b, const point3 (&v)[NV], const int (&edges)[NE][2],
-                                                     const int (&faces)[NF][3]) {
+                                                     const int (&faces)[NF][3], unsigned* unclear = nullptr) {
+    static_assert(3 * NE + NF <= 32);
+    if (unclear) *unclear = ~0u;
     for (int i = 0; i < 3; ++i) { // the box's face normals: comparisons, exact
         const double lo = at(b.min, i), hi = at(b.max, i);
         bool above = true, below = true;
@@ -97,7 +103,7 @@ template <int NV, int NE, int NF>
     const double X = Xk[0] + Xk[1] + Xk[2], W = w[0] + w[1] + w[2];
     if (!(X <= 0x1p300 && F <= 0x1p300 && W <= 0x1p300)) return -1; // also NaN
     constexpr double tiny = 0x1p-700;
-    bool clear = true;
+    unsigned mask = 0;
     const double err = 0x1p-48 * F * (X + W) + tiny;
     for (int e = 0; e < NE; ++e)
         for (int i = 0; i < 3; ++i) {
@@ -115,7 +121,7 @@ template <int NV, int NE, int NF>
                 mn = P < mn ? P : mn, mx = P > mx ? P : mx;
             }
             if (mn - hi > err || mx - lo < -err) return 0;
-            clear = clear && mn - hi < -err && mx - lo > err;
+            if (!(mn - hi < -err && mx - lo > err)) mask |= 1u << (3 * e + i);
         }
     for (int g = 0; g < NF; ++g) {
         const int a = faces[g][0], fb = faces[g][1], fc = faces[g][2];
@@ -139,14 +145,16 @@ template <int NV, int NE, int NF>
         }
         const double en = 0x1p-48 * perm + tiny;
         if (mn - hi > en || mx - lo < -en) return 0;
-        clear = clear && mn - hi < -en && mx - lo > en;
+        if (!(mn - hi < -en && mx - lo > en)) mask |= 1u << (3 * NE + g);
     }
-    return clear ? 1 : -1;
+    if (mask == 0) return 1;
+    if (unclear) *unclear = mask;
+    return -1;
 }
 // The triangle's 13 axes (every tier's box-triangle test, and the box-tetrahedron test's faces).
-[[nodiscard]] constexpr int rounded_axes_decide(const aabb3& b, const point3 (&v)[3]) {
+[[nodiscard]] constexpr int rounded_axes_decide(const aabb3& b, const point3 (&v)[3], unsigned* unclear = nullptr) {
     constexpr int edges[3][2] = {{0, 1}, {1, 2}, {2, 0}}, faces[1][3] = {{0, 1, 2}};
-    return rounded_hull_axes_decide(b, v, edges, faces);
+    return rounded_hull_axes_decide(b, v, edges, faces, unclear);
 }
 
 template <box_reach Reach, class K>
@@ -158,10 +166,22 @@ template <box_reach Reach, class K>
     if (!finite(b.min) || !finite(b.max)) return false;
     const point3 v[3] = {t.a, t.b, t.c};
     // In a filter pass (arith::rounded_stage_applies) the rounded axes first (the box's axes
-    // included); the signs where they are not clear.
-    if constexpr (Reach == box_reach::closed)
-        if (arith::rounded_stage_applies<K>())
-            if (const int r = rounded_axes_decide(b, v); r >= 0) return r == 1;
+    // included); the signs where they are not clear, and only on the axes it left unclear (the
+    // others cannot separate). The exact pass at run time asks the stage for those axes too.
+    unsigned unclear = ~0u; // bit 3 e + i: edge e with box axis i; bit 9: the normal
+    if constexpr (Reach == box_reach::closed) {
+        if (arith::rounded_stage_applies<K>()) {
+            if (const int r = rounded_axes_decide(b, v, &unclear); r >= 0) return r == 1;
+        } else if (arith::exact_pass_at_run_time<K>())
+            if (const int r = rounded_axes_decide(b, v, &unclear); r >= 0) return r == 1;
+        // a vertex in the closed box: they meet (comparisons, exact)
+        for (const point3& p : v) {
+            bool in = true;
+            for (int i = 0; i < 3 && in; ++i)
+                in = arith::compare(k, at(p, i), at(b.min, i)) != sign::negative && arith::compare(k, at(p, i), at(b.max, i)) != sign::positive;
+            if (in) return true;
+        }
+    }
     constexpr sign up = sign::positive, down = sign::negative;
     // The box's face normals: comparisons of coordinates.
     for (int i = 0; i < 3; ++i) {
@@ -186,7 +206,7 @@ template <box_reach Reach, class K>
             return intersects(k, triangle3{c00, c10, c11}, t) || intersects(k, triangle3{c00, c11, c01}, t);
         }
     // The triangle's normal n = (b - a) x (c - a): every vertex projects to n . a.
-    {
+    if (unclear >> 9 & 1u) {
         const point3 a = t.a, bb = t.b, c = t.c;
         // A triangle in a coordinate plane (its vertices share that coordinate) has its normal's
         // other two components exactly zero: comparisons say so, where the filter could not.
@@ -219,6 +239,7 @@ template <box_reach Reach, class K>
     for (int e = 0; e < 3; ++e) {
         const point3 p = v[e], q = v[(e + 1) % 3], o = v[(e + 2) % 3];
         for (int i = 0; i < 3; ++i) {
+            if (!(unclear >> (3 * e + i) & 1u)) continue; // clearly overlapping on this axis
             const int j = (i + 1) % 3, l = (i + 2) % 3;
             const sign fj = arith::compare(k, at(q, j), at(p, j)), fl = arith::compare(k, at(q, l), at(p, l));
             if (fj == sign::zero && fl == sign::zero) continue; // the edge is parallel to e_i: no axis
