@@ -65,7 +65,7 @@ template <class K>
     for (const point3& p : v)
         if (b.min.x <= p.x && p.x <= b.max.x && b.min.y <= p.y && p.y <= b.max.y && b.min.z <= p.z && p.z <= b.max.z) return true;
     const box_corners c(b);
-    return tetra::tetrahedron_meets(k, t, [&](const triangle3& face) { return intersects(k, b, face); }, c.p, 8, true);
+    return tetra::tetrahedron_meets(k, t, [&](const triangle3& face) { return box_triangle_detail::box_meets<box_reach::closed, false>(k, b, face); }, c.p, 8, true);
 }
 
 template <class K>

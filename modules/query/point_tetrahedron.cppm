@@ -16,8 +16,10 @@
 // face plane says no (that face's normal separates).
 // For a segment, a triangle or a tetrahedron, a filter pass at run time first evaluates the same
 // face planes rounded, each value widened by a proven error bound (tetra::rounded_locate), then
-// looks for an edge clearly through a face (rounded_crossing) and a clearly separating edge axis
-// (rounded_edge_axes_apart); the signs decide what that leaves. (For a lone point, as in
+// looks for an edge clearly through a face (rounded_crossing), for a triangle its plane and the
+// tetrahedron's edges through it (rounded_triangle_side), and a clearly separating edge axis
+// (rounded_edge_axes_apart); the signs decide what that leaves. A line or a ray has its own stage
+// (rounded_line_meets: its side of each edge). (For a lone point, as in
 // point_tetrahedron and contains, the stage measured slower than the signs alone.)
 // Source: Shewchuk, "Adaptive precision floating-point arithmetic and fast robust geometric
 // predicates" (1997) for orient3d; Ericson, Real-Time Collision Detection (2005), section 5.4.2
@@ -117,7 +119,7 @@ struct rounded_located {
 };
 [[nodiscard]] constexpr rounded_located rounded_locate(const tetrahedron3& t, const point3* pts, int n) {
     rounded_located r{};
-    const point3 v[4] = {t.a, t.b, t.c, t.d};
+    const point3* const v[4] = {&t.a, &t.b, &t.c, &t.d}; // in place: a copy's stores stall wide loads
     double xv[4][3], xp[8][3], X[3] = {0.0, 0.0, 0.0};
     bool in_range = true; // every |x_k| <= 2^300 (false for NaN)
     auto rel = [&](point3 p, double* x) {
@@ -128,15 +130,15 @@ struct rounded_located {
             X[k] = max2(X[k], a);
         }
     };
-    for (int i = 0; i < 4; ++i) rel(v[i], xv[i]);
+    for (int i = 0; i < 4; ++i) rel(*v[i], xv[i]);
     for (int j = 0; j < n; ++j) rel(pts[j], xp[j]);
     if (!in_range) return r;
     bool inside[8] = {true, true, true, true, true, true, true, true};
     double largest = 0.0;
     for (int i = 0; i < 4; ++i) {
         const int ib = (i + 1) & 3, ic = (i + 2) & 3, id = (i + 3) & 3;
-        const double e[2][3] = {{v[ic].x - v[ib].x, v[ic].y - v[ib].y, v[ic].z - v[ib].z},
-                                {v[id].x - v[ib].x, v[id].y - v[ib].y, v[id].z - v[ib].z}};
+        const double e[2][3] = {{v[ic]->x - v[ib]->x, v[ic]->y - v[ib]->y, v[ic]->z - v[ib]->z},
+                                {v[id]->x - v[ib]->x, v[id]->y - v[ib]->y, v[id]->z - v[ib]->z}};
         double nrm[3], perm = 0.0;
         for (int k = 0; k < 3; ++k) {
             const int j = (k + 1) % 3, l = (k + 2) % 3;
@@ -145,27 +147,26 @@ struct rounded_located {
             perm += (arith::abs(sp) + arith::abs(rp)) * X[k];
         }
         const double err = 0x1p-48 * perm + 0x1p-700;
-        auto value = [&](const double* x) {
-            return (nrm[0] * x[0] + nrm[1] * x[1] + nrm[2] * x[2]) - (nrm[0] * xv[ib][0] + nrm[1] * xv[ib][1] + nrm[2] * xv[ib][2]);
-        };
+        const double base = nrm[0] * xv[ib][0] + nrm[1] * xv[ib][1] + nrm[2] * xv[ib][2];
+        auto value = [&](const double* x) { return (nrm[0] * x[0] + nrm[1] * x[1] + nrm[2] * x[2]) - base; };
         const double opposite = value(xv[i]);
         if (!(opposite > err || opposite < -err)) return rounded_located{}; // flat, or not clear
         const double side = opposite > 0.0 ? 1.0 : -1.0;
-        bool all_beyond = true;
+        bool all_beyond = true; // without branches: on random input each would be a coin toss
         for (int j = 0; j < n; ++j) {
             const double w = side * value(xp[j]);
             r.w[i][j] = w;
             largest = max2(largest, arith::abs(w));
-            if (w < -err) r.status[j] = -1;
-            else all_beyond = false;
-            inside[j] = inside[j] && w > err;
+            const bool beyond = w < -err;
+            r.status[j] |= -int(beyond);
+            all_beyond = all_beyond & beyond;
+            inside[j] = inside[j] & (w > err);
         }
         r.err[i] = err;
         largest = max2(largest, err);
-        if (all_beyond) r.apart = true;
+        r.apart = r.apart | all_beyond;
     }
-    for (int j = 0; j < n; ++j)
-        if (inside[j]) r.status[j] = 1;
+    for (int j = 0; j < n; ++j) r.status[j] = inside[j] ? 1 : r.status[j];
     r.crossings = largest <= 0x1p500;
     return r;
 }
@@ -242,10 +243,13 @@ struct rounded_located {
                     const double err = 0x1p-48 * perm + 0x1p-700;
                     double lo_a = __builtin_huge_val(), hi_a = -__builtin_huge_val();
                     double lo_b = __builtin_huge_val(), hi_b = -__builtin_huge_val();
-                    for (int p = 0; p < n; ++p) {
+                    for (int p = 0; p < na; ++p) {
                         const double proj = axis[0] * x[p][0] + axis[1] * x[p][1] + axis[2] * x[p][2];
-                        if (p < na) lo_a = min2(lo_a, proj), hi_a = max2(hi_a, proj);
-                        else lo_b = min2(lo_b, proj), hi_b = max2(hi_b, proj);
+                        lo_a = min2(lo_a, proj), hi_a = max2(hi_a, proj);
+                    }
+                    for (int p = na; p < n; ++p) {
+                        const double proj = axis[0] * x[p][0] + axis[1] * x[p][1] + axis[2] * x[p][2];
+                        lo_b = min2(lo_b, proj), hi_b = max2(hi_b, proj);
                     }
                     if (lo_b - hi_a > err || lo_a - hi_b > err) return true;
                 }
@@ -274,12 +278,12 @@ struct rounded_located {
 // of a line against a triangle's edges); Higham, Accuracy and Stability of Numerical Algorithms,
 // 2nd ed. (2002), section 3.1 (the bounds).
 [[nodiscard]] constexpr int rounded_line_meets(const tetrahedron3& t, point3 o, vec3 d, bool ray) {
-    const point3 v[4] = {t.a, t.b, t.c, t.d};
+    const point3* const v[4] = {&t.a, &t.b, &t.c, &t.d}; // in place: a copy's stores stall wide loads
     const double y[3] = {d.x, d.y, d.z};
     double x[4][3];
     bool in_range = true; // every |x_i,k| and |d_k| at most 2^300 (false for NaN)
     for (int i = 0; i < 4; ++i) {
-        x[i][0] = v[i].x - o.x, x[i][1] = v[i].y - o.y, x[i][2] = v[i].z - o.z;
+        x[i][0] = v[i]->x - o.x, x[i][1] = v[i]->y - o.y, x[i][2] = v[i]->z - o.z;
         for (int k = 0; k < 3; ++k) in_range = in_range && arith::abs(x[i][k]) <= 0x1p300;
     }
     for (int k = 0; k < 3; ++k) in_range = in_range && arith::abs(y[k]) <= 0x1p300;
@@ -332,6 +336,78 @@ struct rounded_located {
     return misses ? 0 : -1;
 }
 
+// The triangle f[0..3) against the tetrahedron t from f's side, rounded, each value widened by a
+// proven bound: 0 when every vertex of t lies clearly on one side of f's plane (that normal
+// separates), 1 when an edge of t clearly crosses f's plane inside f (its end points clearly on
+// opposite sides, and the edge's line clearly through f's interior: the three values
+// (q - p) . ((a - p) x (b - p)) over f's edges (a, b) clearly of one sign, as in
+// rounded_line_meets), -1 when neither is clear (and for a collinear f, values far off or not
+// finite). Plane values: n . (v - f[0]) with n = (f[1] - f[0]) x (f[2] - f[0]), every difference
+// rounded once, off by at most about 8u sum N_k X_k (N_k: the permanent of n_k, X_k: the largest
+// |v_k - f[0]_k|); an edge value is an orient3d of three rounded differences, off by at most
+// about 9u sum |y_k| M_k (y = q - p, M_k the permanent of the cross product's component k,
+// Shewchuk's bound for orient3d is 7u plus higher order); 2^-48 (32u) times the permanent, plus
+// 2^-700, covers both (every difference at most 2^300 in magnitude). Source: Moeller, "A fast
+// triangle-triangle intersection test", JGT 2(2), 1997 (the plane rejection); Ericson, Real-Time
+// Collision Detection (2005), section 5.3.4 (a line through a triangle by scalar triple products).
+[[nodiscard]] constexpr int rounded_triangle_side(const point3* f, const tetrahedron3& t) {
+    const point3* const v[4] = {&t.a, &t.b, &t.c, &t.d}; // in place: a copy's stores stall wide loads
+    double x[4][3], X[3] = {0.0, 0.0, 0.0};
+    bool in_range = true; // every |difference| at most 2^299 (false for NaN)
+    for (int i = 0; i < 4; ++i) {
+        x[i][0] = v[i]->x - f[0].x, x[i][1] = v[i]->y - f[0].y, x[i][2] = v[i]->z - f[0].z;
+        for (int k = 0; k < 3; ++k) {
+            const double m = arith::abs(x[i][k]);
+            in_range = in_range && m <= 0x1p299;
+            X[k] = max2(X[k], m);
+        }
+    }
+    const double e[2][3] = {{f[1].x - f[0].x, f[1].y - f[0].y, f[1].z - f[0].z}, {f[2].x - f[0].x, f[2].y - f[0].y, f[2].z - f[0].z}};
+    for (int k = 0; k < 3; ++k) in_range = in_range && arith::abs(e[0][k]) <= 0x1p299 && arith::abs(e[1][k]) <= 0x1p299;
+    if (!in_range) return -1;
+    double nrm[3], perm = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        const int j = (k + 1) % 3, l = (k + 2) % 3;
+        const double sp = e[0][j] * e[1][l], rp = e[0][l] * e[1][j];
+        nrm[k] = sp - rp;
+        perm += (arith::abs(sp) + arith::abs(rp)) * X[k];
+    }
+    const double err = 0x1p-48 * perm + 0x1p-700;
+    double w[4];
+    int above = 0, below = 0;
+    for (int i = 0; i < 4; ++i) {
+        w[i] = nrm[0] * x[i][0] + nrm[1] * x[i][1] + nrm[2] * x[i][2];
+        above += w[i] > err;
+        below += w[i] < -err;
+    }
+    if (above == 4 || below == 4) return 0;
+    if (above == 0 || below == 0) return -1;
+    for (int p = 0; p < 4; ++p)
+        for (int q = p + 1; q < 4; ++q) {
+            if (!((w[p] > err && w[q] < -err) || (w[p] < -err && w[q] > err))) continue;
+            const double y[3] = {v[q]->x - v[p]->x, v[q]->y - v[p]->y, v[q]->z - v[p]->z};
+            double a[3][3]; // f's vertices relative to v[p]
+            for (int c = 0; c < 3; ++c) a[c][0] = f[c].x - v[p]->x, a[c][1] = f[c].y - v[p]->y, a[c][2] = f[c].z - v[p]->z;
+            int pos = 0, neg = 0;
+            for (int c = 0; c < 3; ++c) {
+                const double* g = a[c];
+                const double* h = a[(c + 1) % 3];
+                double val = 0.0, pm = 0.0;
+                for (int k = 0; k < 3; ++k) {
+                    const int j = (k + 1) % 3, l = (k + 2) % 3;
+                    const double sp = g[j] * h[l], rp = g[l] * h[j];
+                    val += y[k] * (sp - rp);
+                    pm += arith::abs(y[k]) * (arith::abs(sp) + arith::abs(rp));
+                }
+                const double ev = 0x1p-48 * pm + 0x1p-700;
+                pos += val > ev;
+                neg += val < -ev;
+            }
+            if (pos == 3 || neg == 3) return 1;
+        }
+    return -1;
+}
+
 // The closed convex set x (finite, checked by the caller) against the closed tetrahedron t
 // (finite): pts[0..n) are points of x, its vertices when `hull`; meets(f) says whether x meets
 // the triangle f.
@@ -349,6 +425,8 @@ template <class K, class Meets>
             for (int p = 0; p < n; ++p)
                 for (int q = p + 1; q < n; ++q)
                     if (rounded_crossing(r, p, q)) return true;
+            if (n == 3) // a triangle: its plane, and t's edges through it
+                if (const int s = rounded_triangle_side(pts, t); s >= 0) return s == 1;
             const point3 v[4] = {t.a, t.b, t.c, t.d};
             if (rounded_edge_axes_apart(pts, n, v, 4)) return false;
         }
