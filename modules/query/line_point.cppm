@@ -1,8 +1,9 @@
 // line3 against point3.
 // Semantics: A line (a zero direction: its origin point) and a point: the point lies on the line.
-// Method (exact tiers): the linear pairs' shared body, linear_linear in segment_segment.cppm
-// (skew test det(D, E, w), then the coplanar crossing's parameter bounds as signs of products,
-// or the collinear overlap along D); every sign of degree <= 4.
+// Method (exact tiers): p lies on the line through o with direction d != 0 iff (p - o) x d = 0:
+// three signs of degree 2, the first nonzero one says no (with d = 0, p = o by comparisons).
+// The linear pairs' shared body (linear_linear in segment_segment.cppm) decides the same, slower
+// (12.2 ns against CGAL Epick's 42.9 on random input, measured before this body).
 // Source: Schneider and Eberly, Geometric Tools for Computer Graphics (2003), section 11.1.
 // Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
 // magnitudes lie in [2^-500, 2^500], wrong only when a deciding sign is within 2^-40 of its
@@ -17,7 +18,16 @@ export namespace incidence::pair {
 
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const line3& l, const point3& p) {
-    return linear_linear(k, as_linear(l), as_linear(p));
+    if (!finite(l) || !finite(p)) return false;
+    const point3 o = l.origin;
+    const vec3 d = l.direction;
+    if (d.x == 0.0 && d.y == 0.0 && d.z == 0.0)
+        return arith::compare(k, p.x, o.x) == sign::zero && arith::compare(k, p.y, o.y) == sign::zero &&
+               arith::compare(k, p.z, o.z) == sign::zero;
+    // component i of (p - o) x d: (p - o)_j d_l - (p - o)_l d_j, (i, j, l) cyclic
+    if (k.sgn([=](auto L) { return (L(p.y) - L(o.y)) * L(d.z) - (L(p.z) - L(o.z)) * L(d.y); }) != sign::zero) return false;
+    if (k.sgn([=](auto L) { return (L(p.z) - L(o.z)) * L(d.x) - (L(p.x) - L(o.x)) * L(d.z); }) != sign::zero) return false;
+    return k.sgn([=](auto L) { return (L(p.x) - L(o.x)) * L(d.y) - (L(p.y) - L(o.y)) * L(d.x); }) == sign::zero;
 }
 
 } // namespace incidence::pair
