@@ -18,7 +18,11 @@ export namespace incidence::pair {
 
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const plane3& pl, const segment3& s) {
-    return plane_linear(k, pl, as_linear(s)); // line_plane.cppm: the body every linear object shares
+    // the two signs directly (line_plane.cppm's plane_linear, which every linear object shares,
+    // decides the same: 7.4 ns against 35.8 for CGAL Epick, measured before this body)
+    const sign sa = plane_side(k, pl, s.a);
+    if (sa == sign::zero) return finite(s.b); // the other end unread
+    return plane_side(k, pl, s.b) != sa;
 }
 
 } // namespace incidence::pair
