@@ -176,13 +176,15 @@ template <box_reach Reach, bool ExactPassStage = true, class K>
             if (const int r = rounded_axes_decide(b, v, &unclear); r >= 0) return r == 1;
         } else if (ExactPassStage && arith::exact_pass_at_run_time<K>())
             if (const int r = rounded_axes_decide(b, v, &unclear); r >= 0) return r == 1;
-        // a vertex in the closed box: they meet (comparisons, exact)
-        for (const point3& p : v) {
-            bool in = true;
-            for (int i = 0; i < 3 && in; ++i)
-                in = arith::compare(k, at(p, i), at(b.min, i)) != sign::negative && arith::compare(k, at(p, i), at(b.max, i)) != sign::positive;
-            if (in) return true;
-        }
+        // a vertex in the closed box: they meet (comparisons, exact; a triangle with a NaN or an
+        // infinity is no shape, which the signs below turn into no)
+        if (finite(t))
+            for (const point3& p : v) {
+                bool in = true;
+                for (int i = 0; i < 3 && in; ++i)
+                    in = arith::compare(k, at(p, i), at(b.min, i)) != sign::negative && arith::compare(k, at(p, i), at(b.max, i)) != sign::positive;
+                if (in) return true;
+            }
     }
     constexpr sign up = sign::positive, down = sign::negative;
     // The box's face normals: comparisons of coordinates.
