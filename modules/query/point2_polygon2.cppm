@@ -69,6 +69,36 @@ template <class K>
     return odd;
 }
 
+// The rounded stage of the crossing test (a filter pass at run time, arith::rounded_stage_applies):
+// inside()'s test on a point P known to within (rx, ry) of (px, py), each comparison decided only
+// when clear by more than its bound; edges(f) calls f(a, b) for every edge until it returns true.
+// 1 inside, 0 outside, -1 when some comparison is not clear (or a value is not finite). Where it
+// decides, P is also clearly off every edge (both ends clearly above or below it, both clearly left
+// of it, or a clearly nonzero orientation). The orientation (b - a) x (P - a) is off by at most
+// |b_x - a_x| ry + |b_y - a_y| rx plus 4u times its permanent (u = 2^-53), widened by 1/8 for its
+// own rounding, plus 2^-1000 for underflow; a radius is at least its bound widened by 1/8, which
+// also covers the rounding of a - p against it. Source: Haines, "Point in polygon strategies",
+// Graphics Gems IV (1994) (the crossings test); Higham, Accuracy and Stability of Numerical
+// Algorithms, 2nd ed. (2002), section 3.1 (the bounds).
+template <class Edges>
+[[nodiscard]] constexpr int rounded_parity(const Edges& edges, double px, double py, double rx, double ry) {
+    bool odd = false;
+    const bool unclear = edges([&](point2 a, point2 b) {
+        const double da = a.y - py, db = b.y - py;
+        if (!(da > ry || da < -ry) || !(db > ry || db < -ry)) return true;
+        const bool a_above = da > 0.0, b_above = db > 0.0;
+        if (a_above == b_above || (px - a.x > rx && px - b.x > rx)) return false;
+        const double dx = b.x - a.x, dy = b.y - a.y;
+        const double p1 = dx * (py - a.y), p2 = dy * (px - a.x);
+        const double v = p1 - p2;
+        const double ev = (arith::abs(dx) * ry + arith::abs(dy) * rx + 0x1p-50 * (arith::abs(p1) + arith::abs(p2))) * 1.125 + 0x1p-1000;
+        if (!(v > ev || v < -ev)) return true;
+        if ((v > 0.0) == b_above) odd = !odd;
+        return false;
+    });
+    return unclear ? -1 : (odd ? 1 : 0);
+}
+
 // The polygon's point set against the connected shape x: an edge meets x, or p (a point of x)
 // lies inside. The caller has checked the polygon well formed and x finite. With x's bounding
 // box `xb` (bounded shapes), edges whose own box misses it are skipped (comparisons).

@@ -10,7 +10,10 @@
 // (homogeneous), and each comparison of the 2D test becomes a sign multiplied through by D. Any
 // other connected shape X meets the polygon iff it meets an edge (a segment3) or else one point
 // of X in H lies inside (a connected piece of X in H that meets no edge lies wholly inside or
-// outside): point2_polygon2's boundary-plus-inside decomposition, one dimension up.
+// outside): point2_polygon2's boundary-plus-inside decomposition, one dimension up. A point of H
+// is on an edge iff its projection is in the projected edge's box with orient2d zero. In a filter
+// pass, a segment, ray or line crossing H first goes through rounded_crossing (its crossing point
+// in double within a proven radius, the crossing test on it with proven bounds).
 // Source: Haines, "Point in polygon strategies", Graphics Gems IV (1994): the projection along the
 // normal's largest component (section 1) and the crossings test with the half-open rule.
 // Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
@@ -23,7 +26,9 @@ export module incidence.query:point_polygon;
 import incidence.core;
 import incidence.arith;
 import incidence.shapes;
+import incidence.predicates;
 import :segment_segment;
+import :point2_polygon2;
 
 export namespace incidence::pair {
 
@@ -67,6 +72,11 @@ template <class F>
             if (f(segment3{g.vertices[j], g.vertices[polygon3::next(j, b, e)]})) return true;
     }
     return false;
+}
+
+// Calls f(p, q) for the projection of every edge (a well-formed polygon) until it returns true.
+[[nodiscard]] constexpr auto projected_edges(const polygon3& g) {
+    return [&g](const auto& f) { return any_edge(g, [&](const segment3& e) { return f(g.projected(e.a), g.projected(e.b)); }); };
 }
 
 // The projected coordinates (u, v) of a lifted 3D vector: (y, z), (z, x) or (x, y).
@@ -143,9 +153,62 @@ template <class K>
     }
     return contact::crosses;
 }
+// The rounded stage of a crossing (a filter pass at run time, arith::rounded_stage_applies): x
+// crosses H; its crossing point P = o + (T / D) u, T = n . (a - o), D = n . u, computed in double,
+// each projected coordinate off by at most a proven radius r; then the crossing test of inside on
+// it, each comparison decided only when clear by more than its bound. 1 inside, 0 outside, -1 when
+// some comparison is not clear (also for D not clearly nonzero, a value far off or not finite).
+// Where it decides, P is also clearly off every edge (each edge has both ends clearly above or
+// below P, both clearly left of it, or a clearly nonzero orientation), so the answer is that of
+// linear_meets' edge tests and inside's signs together. Bounds (u = 2^-53): T and D are plane
+// values of rounded differences, off by at most 2^-48 sum N_k X_k + 2^-700 (eT, eD; as
+// tetra::rounded_triangle_side, N_k the permanent of n_k, X_k the difference's |component k|,
+// every component at most 2^299); for |D^| > 2 eD, t = T / D is off by at most
+// (eT + |t| eD) / |D^| + u |t^| with |t| <= (|T^| + eT) / (|D^| - eD); P_c by at most
+// |u_c| dt + 2u |u_c t^| + u |P_c^| (the product, the sum), widened by 1/8 for its own rounding,
+// plus 2^-1000 for underflow (an overflow leaves an infinite or NaN bound, and nothing is clear);
+// the crossing test on it is polyq::rounded_parity. Source: Higham, Accuracy and Stability of
+// Numerical Algorithms, 2nd ed. (2002), section 3.1 (the bounds).
+[[nodiscard]] constexpr int rounded_crossing(const polygon3& g, const linear3& x) {
+    const point3 a = g.vertices[g.plane_vertices[0]], b = g.vertices[g.plane_vertices[1]], c = g.vertices[g.plane_vertices[2]];
+    const double e[2][3] = {{b.x - a.x, b.y - a.y, b.z - a.z}, {c.x - a.x, c.y - a.y, c.z - a.z}};
+    const double w[3] = {a.x - x.o.x, a.y - x.o.y, a.z - x.o.z};
+    const double u[3] = {x.kind == extent::segment ? x.q.x - x.o.x : x.d.x, x.kind == extent::segment ? x.q.y - x.o.y : x.d.y,
+                         x.kind == extent::segment ? x.q.z - x.o.z : x.d.z};
+    double largest = 0.0;
+    for (int k = 0; k < 3; ++k)
+        largest = max2(largest, max2(max2(arith::abs(e[0][k]), arith::abs(e[1][k])), max2(arith::abs(w[k]), arith::abs(u[k]))));
+    if (!(largest <= 0x1p299)) return -1; // far off, or NaN
+    double n[3], T = 0.0, D = 0.0, pT = 0.0, pD = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        const int j = (k + 1) % 3, l = (k + 2) % 3;
+        const double sp = e[0][j] * e[1][l], rp = e[0][l] * e[1][j];
+        n[k] = sp - rp;
+        const double N = arith::abs(sp) + arith::abs(rp);
+        pT += N * arith::abs(w[k]);
+        pD += N * arith::abs(u[k]);
+    }
+    for (int k = 0; k < 3; ++k) T += n[k] * w[k], D += n[k] * u[k];
+    const double eT = 0x1p-48 * pT + 0x1p-700, eD = 0x1p-48 * pD + 0x1p-700;
+    const double aD = arith::abs(D);
+    if (!(aD > 2.0 * eD)) return -1;
+    const double t = T / D;
+    const double tb = (arith::abs(T) + eT) / (aD - eD);
+    const double dt = (eT + tb * eD) / aD + 0x1p-52 * arith::abs(t);
+    const int axis = g.axis;
+    const int cu = axis == 0 ? 1 : (axis == 1 ? 2 : 0), cv = axis == 0 ? 2 : (axis == 1 ? 0 : 1);
+    const double o[3] = {x.o.x, x.o.y, x.o.z};
+    const double px = o[cu] + u[cu] * t, py = o[cv] + u[cv] * t;
+    const double rx = (arith::abs(u[cu]) * dt + 0x1p-51 * (arith::abs(u[cu] * t) + arith::abs(px))) * 1.125 + 0x1p-1000;
+    const double ry = (arith::abs(u[cv]) * dt + 0x1p-51 * (arith::abs(u[cv] * t) + arith::abs(py))) * 1.125 + 0x1p-1000;
+    return polyq::rounded_parity(projected_edges(g), px, py, rx, ry);
+}
+
 // x crosses H (w the sign of n . u): is the crossing V / D, off the boundary, inside?
 template <class K>
 [[nodiscard]] constexpr bool crossing_point_inside(K& k, const polygon3& g, const linear3& x, sign w) {
+    if (arith::rounded_stage_applies<K>())
+        if (const int s = rounded_crossing(g, x); s >= 0) return s == 1;
     const point3 a = g.vertices[g.plane_vertices[0]];
     auto T = [=](auto L) { return arith::dot(normal(L, g), arith::lift(L, a) - x.O(L)); };
     auto D = [=](auto L) { return arith::dot(normal(L, g), x.D(L)); };
@@ -191,6 +254,8 @@ template <class K>
                }) ||
                inside(k, g, at_double{x.o});
     default:
+        if (arith::rounded_stage_applies<K>()) // P clearly off every edge too (rounded_crossing)
+            if (const int s = rounded_crossing(g, x); s >= 0) return s == 1;
         return any_edge(g, [&](const segment3& e) { return linear_linear(k, as_linear(e), x); }) || crossing_point_inside(k, g, x, w);
     }
 }
@@ -201,9 +266,15 @@ template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const point3& p, const polygon3& g) {
     if (!finite(p) || !planeq::usable(k, g)) return false;
     if (planeq::side(k, g, p) != sign::zero) return false;
-    const linear3 x = as_linear(p);
-    return planeq::any_edge(g, [&](const segment3& e) { return linear_linear(k, as_linear(e), x); }) ||
-           planeq::inside(k, g, planeq::at_double{p});
+    // on an edge, in the projection (one to one on H): within the edge's box (comparisons), and
+    // orient2d zero
+    const point2 q = g.projected(p);
+    const bool on_edge = planeq::any_edge(g, [&](const segment3& e) {
+        const point2 a = g.projected(e.a), b = g.projected(e.b);
+        if (q.x < min2(a.x, b.x) || q.x > max2(a.x, b.x) || q.y < min2(a.y, b.y) || q.y > max2(a.y, b.y)) return false;
+        return k.sgn([=](auto L) { return poly::orient2d(L, a, b, q); }) == sign::zero;
+    });
+    return on_edge || planeq::inside(k, g, planeq::at_double{p});
 }
 // contains(polygon3, point3): the same set.
 template <class K>

@@ -9,7 +9,9 @@
 // it (E = q - p, x = p), or for an edge along the segment's line the parameters of p and q (E a
 // unit axis, L(1) - L(0)); each open piece lies on such an edge or off the boundary, where one
 // point decides by the crossing parity, each comparison multiplied through by the point's weight
-// W > 0: a + t (b - a) for a double t (degree 3), or the exact midpoint (degree 6). The same
+// W > 0: a + t (b - a) for a double t (degree 3), or the exact midpoint (degree 6); in a filter
+// pass the first goes through point2_polygon2's rounded_parity (the point in double within a
+// proven radius) before the signs. The same
 // engine serves contains(polygon3, segment3 | triangle3) in the projection (polygon_segment.cppm,
 // polygon_triangle.cppm).
 // Source: Haines, "Point in polygon strategies", Graphics Gems IV (1994), the crossings test.
@@ -67,6 +69,15 @@ struct point2_at {
         using U = decltype(W * A.x + T * D.x);
         return std::pair{arith::v2<U>{W * A.x + T * D.x, W * A.y + T * D.y}, W};
     }
+    // In double, each coordinate within its radius (for rounded_parity): the difference, the
+    // product and the sum, each off by at most u times its result (u = 2^-53), 2^-51 covers them.
+    [[nodiscard]] constexpr bool rounded(double& px, double& py, double& rx, double& ry) const {
+        const double mx = t * (b.x - a.x), my = t * (b.y - a.y);
+        px = a.x + mx, py = a.y + my;
+        rx = 0x1p-51 * (arith::abs(mx) + arith::abs(px)) * 1.125 + 0x1p-1000;
+        ry = 0x1p-51 * (arith::abs(my) + arith::abs(py)) * 1.125 + 0x1p-1000;
+        return true;
+    }
 };
 // The midpoint of a + t (b - a) between the parameters lo and hi, V / W with W = 2 D_lo D_hi > 0.
 struct point2_mid {
@@ -88,8 +99,16 @@ struct point2_mid {
 // Is the point q = V / W (W > 0, q.weighted(L) gives {V, W}), off the boundary, inside? The
 // crossing test of inside() with every comparison multiplied through by W; edges(f) calls f(p, q)
 // for every edge until it returns true.
+// A point that can say where it is in double (q.rounded) goes to rounded_parity first, in a filter
+// pass at run time.
 template <class K, class Edges, class Q>
 [[nodiscard]] constexpr bool inside_weighted(K& k, const Edges& edges, const Q& q) {
+    if constexpr (requires(double x) { q.rounded(x, x, x, x); })
+        if (arith::rounded_stage_applies<K>()) {
+            double px = 0.0, py = 0.0, rx = 0.0, ry = 0.0;
+            if (q.rounded(px, py, rx, ry))
+                if (const int s = rounded_parity(edges, px, py, rx, ry); s >= 0) return s == 1;
+        }
     bool odd = false;
     (void)edges([&](point2 a, point2 b) {
         auto above = [&](point2 w) { // w.y > V.y / W

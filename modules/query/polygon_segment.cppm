@@ -28,13 +28,6 @@ template <class K>
     return planeq::linear_meets(k, g, as_linear(s));
 }
 
-namespace planeq {
-// Calls f(p, q) for the projection of every edge (a well-formed polygon) until it returns true.
-[[nodiscard]] constexpr auto projected_edges(const polygon3& g) {
-    return [&g](const auto& f) { return any_edge(g, [&](const segment3& e) { return f(g.projected(e.a), g.projected(e.b)); }); };
-}
-} // namespace planeq
-
 // contains(polygon, segment): both ends in the polygon's plane, and the projected segment in the
 // projected polygon.
 template <class K>

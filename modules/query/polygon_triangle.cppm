@@ -11,7 +11,8 @@
 // edges in the polygon (polygon_segment.cppm), no polygon edge meeting the open triangle (its
 // points strictly inside all three edge lines: separating lines along the triangle's edges or the
 // edge's own line, orient2d signs of degree 2), and the centroid (a + b + c) / 3 inside by crossing
-// parity (weight L(1) + L(1) + L(1)). Then no boundary crosses the open triangle, which lies wholly
+// parity (weight L(1) + L(1) + L(1); in a filter pass the rounded centroid within a proven radius
+// first, point2_polygon2's rounded_parity). Then no boundary crosses the open triangle, which lies wholly
 // inside or outside, and its centroid decides (a hole exactly the triangle has every edge in the
 // set). A collinear triangle is the union of its edges.
 // Source: the boundary-plus-inside decomposition of point_polygon.cppm; Moeller, "A fast
@@ -52,6 +53,14 @@ struct centroid2 {
         const auto A = arith::lift(lift, a), B = arith::lift(lift, b), C = arith::lift(lift, c);
         const auto one = lift(1.0);
         return std::pair{arith::v2<decltype(A.x + B.x + C.x)>{A.x + B.x + C.x, A.y + B.y + C.y}, one + one + one};
+    }
+    // In double, each coordinate within its radius (for rounded_parity): two sums off by at most
+    // 2u (|a| + |b| + |c|) together, a third of that after the division, which adds u |p| (u = 2^-53).
+    [[nodiscard]] constexpr bool rounded(double& px, double& py, double& rx, double& ry) const {
+        px = (a.x + b.x + c.x) / 3.0, py = (a.y + b.y + c.y) / 3.0;
+        rx = 0x1p-51 * (arith::abs(a.x) + arith::abs(b.x) + arith::abs(c.x)) * 1.125 + 0x1p-1000;
+        ry = 0x1p-51 * (arith::abs(a.y) + arith::abs(b.y) + arith::abs(c.y)) * 1.125 + 0x1p-1000;
+        return true;
     }
 };
 // Does the segment p q meet the open triangle a b c (o = orient2d(a, b, c), not zero)?

@@ -5,7 +5,8 @@
 // and 20,000 near-degenerate cases (support/polygon3_cases.hpp: exactly planar star polygons with
 // holes at scales 2^-500..2^500, the other shape at a vertex, an edge point or inside, along the edge,
 // in the plane or across it, nudged by ulps or not); both argument orders, rotated and reversed rings,
-// rewritten partners, exact translations.
+// rewritten partners, exact translations; the rounded crossing stage (planeq::rounded_crossing, for
+// segments, rays and lines across the plane) against the oracle.
 #include <catch2/catch_test_macros.hpp>
 #include <cmath>
 #include "../oracle/cgal_oracle.hpp"
@@ -65,6 +66,47 @@ TEST_CASE("point_polygon: fixtures", "[point_polygon]") {
 }
 TEST_CASE("point_polygon: oracle, random and near-degenerate", "[point_polygon][oracle]") {
     support::polygon3_oracle<point3>("point_polygon", support::cases(20000), approx_bound);
+}
+TEST_CASE("point_polygon: the rounded crossing stage never claims what the oracle denies", "[point_polygon][polygon_segment][oracle]") {
+    // planeq::rounded_crossing, the filter pass's stage of every pair that crosses a polygon's
+    // plane with a segment, ray or line (crossing_inside, linear_meets): for random cases at every
+    // scale and at scale 1 and near-degenerate ones (through a vertex or an edge point, inside or
+    // just outside, nudged by ulps), each that crosses the plane within its range (plane_contact,
+    // exact), its claim (meets, misses) against the oracle.
+    support::rng r(support::seed() + 23);
+    long n = 0, claimed = 0, one_n = 0, one_claimed = 0, wrong = 0;
+    auto check = [&]<class B>(B*, int kind) {
+        support::polygon3_store g, other;
+        support::mesh_store unused;
+        r.at_scale_one = kind == 1;
+        const auto b = kind == 2 ? support::polygon3_near<B>(r, g, other, unused) : support::polygon3_random<B>(r, g, other, unused);
+        r.at_scale_one = false;
+        if (!b || !support::finite_partner(*b)) return;
+        const pair::linear3 x = pair::as_linear(*b);
+        arith::exact_kernel k;
+        sign w = sign::zero;
+        if (!pair::planeq::usable(k, g.g) || pair::planeq::plane_contact(k, g.g, x, w) != pair::planeq::contact::crosses) return;
+        ++n;
+        one_n += kind == 1;
+        const int got = pair::planeq::rounded_crossing(g.g, x);
+        if (got < 0) return;
+        ++claimed;
+        one_claimed += kind == 1;
+        if ((got == 1) != support::polygon3_truth(g.g, *b) && ++wrong <= 5)
+            std::printf("  rounded crossing stage wrong: %s\n", support::shape_str(*b).c_str());
+    };
+    for (long i = 0; i < support::cases(30000); ++i) {
+        const int kind = int(i % 3);
+        switch ((i / 3) % 3) {
+        case 0: check(static_cast<segment3*>(nullptr), kind); break;
+        case 1: check(static_cast<ray3*>(nullptr), kind); break;
+        default: check(static_cast<line3*>(nullptr), kind); break;
+        }
+    }
+    std::printf("[cases] polygon rounded crossing stage: %ld crossing cases, %ld claimed (%ld of %ld random at scale 1), wrong %ld\n", n,
+                claimed, one_claimed, one_n, wrong);
+    CHECK(wrong == 0);
+    CHECK(one_claimed > one_n * 9 / 10);
 }
 TEST_CASE("point_polygon: rewritten shapes and exact translations give the same answer", "[point_polygon]") {
     support::polygon3_symmetries<point3>("point_polygon", support::cases(5000));
