@@ -453,6 +453,14 @@ struct exact_kernel {
     }
 };
 
+// Whether K's signs evaluate their expression on lift_filter first (the filter kernels, and the
+// exact kernel's stage 1): where a body may lift a shared subexpression into the filter once
+// (convex_polyhedron_triangle.cppm's vertex of two planes and the triangle's plane).
+template <class K>
+[[nodiscard]] consteval bool lifts_filter() {
+    return __is_base_of(filter_kernel, K) || __is_same(K, exact_kernel);
+}
+
 // Whether a query body is the exact kernel's pass at run time: a rounded stage cannot decide there
 // (the filter pass before it, on the same input, could not), but what it found clear may still
 // spare exact signs (aabb_triangle's axes that clearly overlap).

@@ -19,6 +19,7 @@
 // permanent (tests/query/aabb_convex_polyhedron.cpp).
 module;
 #include <array>
+#include <tuple>
 #include <type_traits>
 export module incidence.query:aabb_convex_polyhedron;
 import incidence.core;
@@ -112,13 +113,25 @@ template <class K, class Rows>
                 const sign d = settled(k, [=](auto L) { return arith::det3(rows.normal(L, i), rows.normal(L, j), rows.normal(L, l)); });
                 if (d == sign::zero) continue; // no single point
                 found.independent = true;
-                auto beyond = [=](unsigned r) { // c_h D - n_h . V, with n_h . (n_j x n_k) = det(n_h, n_j, n_k)
-                    return [=](auto L) {
-                        const auto na = rows.normal(L, i), nc = rows.normal(L, j), ne = rows.normal(L, l);
-                        const auto nh = rows.normal(L, r);
-                        return rows.offset(L, r) * arith::det3(na, nc, ne) -
-                               (rows.offset(L, i) * arith::det3(nh, nc, ne) + rows.offset(L, j) * arith::det3(nh, ne, na) +
-                                rows.offset(L, l) * arith::det3(nh, na, nc));
+                // the three cross products and D, lifted once into the filter for every row's
+                // condition (the same values each condition would lift again)
+                auto crosses = [=](auto L) {
+                    const auto na = rows.normal(L, i), nc = rows.normal(L, j), ne = rows.normal(L, l);
+                    const auto x = arith::cross(nc, ne);
+                    return std::tuple{x, arith::cross(ne, na), arith::cross(na, nc), arith::dot(na, x)};
+                };
+                decltype(crosses(arith::lift_filter{})) cf{};
+                if constexpr (arith::lifts_filter<K>()) cf = crosses(arith::lift_filter{});
+                auto beyond = [=, &cf](unsigned r) { // c_h D - n_h . V, V = c_i n_j x n_l + c_j n_l x n_i + c_l n_i x n_j
+                    return [=, &cf](auto L) {
+                        auto value = [&](const auto& c) {
+                            const auto& [x, y, z, D] = c;
+                            const auto nh = rows.normal(L, r);
+                            return rows.offset(L, r) * D -
+                                   (rows.offset(L, i) * arith::dot(nh, x) + rows.offset(L, j) * arith::dot(nh, y) + rows.offset(L, l) * arith::dot(nh, z));
+                        };
+                        if constexpr (std::is_same_v<decltype(L), arith::lift_filter>) return value(cf);
+                        else return value(crosses(L));
                     };
                 };
                 // a row the filter proves the vertex outside of rejects it before any sign is

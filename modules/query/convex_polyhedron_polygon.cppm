@@ -8,7 +8,8 @@
 // whose normals are independent of H's normal n cross H at v = V / D (D = det(n_i, n_j, n),
 // V = c_i n_j x n + c_j n x n_i + (n . a) n_i x n_j, as in convex_polyhedron_triangle.cppm), the
 // first such v in every half-space (degree 6) is tested by the homogeneous crossing test of
-// point_polygon.cppm (degree <= 7). A Q that lies inside the polygon is bounded, so it has a
+// point_polygon.cppm (degree <= 7); in a filter pass, first by planeq::rounded_inside (v in double
+// within a proven radius from the filter's values of V and D). A Q that lies inside the polygon is bounded, so it has a
 // vertex; an unbounded Q lies outside, and its vertex (if any) says so.
 // Source: Schrijver, Theory of Linear and Integer Programming, 1986, section 8.5; the
 // boundary-plus-inside decomposition of point_polygon.cppm.
@@ -17,6 +18,7 @@
 // permanent (tests/query/convex_polyhedron_polygon.cpp).
 module;
 #include <array>
+#include <type_traits>
 export module incidence.query:convex_polyhedron_polygon;
 import incidence.core;
 import incidence.arith;
@@ -58,9 +60,18 @@ template <class K>
             };
             const sign d = settled(k, D);
             if (d == sign::zero) continue; // no single point
-            auto in_plane = [=](int r) {
+            // D and V lifted once into the filter for every condition (the same values each
+            // condition would lift again)
+            decltype(D(arith::lift_filter{})) Df{};
+            decltype(V(arith::lift_filter{})) Vf{};
+            if constexpr (arith::lifts_filter<K>()) Df = D(arith::lift_filter{}), Vf = V(arith::lift_filter{});
+            auto in_plane = [=, &Df, &Vf](int r) {
                 const plane3 h = planes[r];
-                return [=](auto L) { return L(h.offset) * L(1.0) * D(L) - arith::dot(arith::lift(L, h.normal), V(L)); };
+                return [=, &Df, &Vf](auto L) {
+                    if constexpr (std::is_same_v<decltype(L), arith::lift_filter>)
+                        return L(h.offset) * L(1.0) * Df - arith::dot(arith::lift(L, h.normal), Vf);
+                    else return L(h.offset) * L(1.0) * D(L) - arith::dot(arith::lift(L, h.normal), V(L));
+                };
             };
             bool out = false; // a condition the filter proves violated skips the pair
             for (int r = 0; r < m && !out; ++r)
@@ -72,7 +83,10 @@ template <class K>
                 const sign x = k.sgn(in_plane(r));
                 in = x == sign::zero || x == d;
             }
-            if (in) return planeq::inside(k, g, planeq::at_homogeneous<decltype(V), decltype(D)>{V, D, d});
+            if (!in) continue;
+            if (arith::rounded_stage_applies<K>())
+                if (const int s = planeq::rounded_inside(g, Vf, Df); s >= 0) return s == 1;
+            return planeq::inside(k, g, planeq::at_homogeneous<decltype(V), decltype(D)>{V, D, d});
         }
     }
     return false;

@@ -23,6 +23,7 @@
 module;
 #include <array>
 #include <cstddef>
+#include <type_traits>
 export module incidence.query:convex_polyhedron_triangle;
 import incidence.core;
 import incidence.arith;
@@ -91,18 +92,30 @@ template <class K>
                 using T = decltype(ci * x.x + cj * y.x + h * z.x);
                 return arith::v3<T>{ci * x.x + cj * y.x + h * z.x, ci * x.y + cj * y.y + h * z.y, ci * x.z + cj * y.z + h * z.z};
             };
+            // D and V lifted once into the filter for all the conditions of this pair (the same
+            // values each condition would lift again; filled below when D's sign is known)
+            decltype(D(arith::lift_filter{})) Df{};
+            decltype(V(arith::lift_filter{})) Vf{};
+            auto Dl = [&Df, D](auto L) {
+                if constexpr (std::is_same_v<decltype(L), arith::lift_filter>) return Df;
+                else return D(L);
+            };
+            auto Vl = [&Vf, V](auto L) {
+                if constexpr (std::is_same_v<decltype(L), arith::lift_filter>) return Vf;
+                else return V(L);
+            };
             // condition r < m: v in half-space r (c_r D - n_r . V); r = m + e: v on the inner side
             // of the triangle's edge e, from corner e to e + 1 (((q - p) x (V - p D)) . n)
             auto in_plane = [=](int r) {
                 const plane3 h = planes[r];
-                return [=](auto L) { return L(h.offset) * L(1.0) * D(L) - arith::dot(arith::lift(L, h.normal), V(L)); };
+                return [=](auto L) { return L(h.offset) * L(1.0) * Dl(L) - arith::dot(arith::lift(L, h.normal), Vl(L)); };
             };
             auto in_edge = [=](int e) {
                 const point3 p = corner[e], q = corner[(e + 1) % 3];
                 return [=](auto L) {
                     const auto P = arith::lift(L, p);
-                    const auto d = D(L);
-                    const auto v = V(L);
+                    const auto d = Dl(L);
+                    const auto v = Vl(L);
                     using T = decltype(v.x - P.x * d);
                     const arith::v3<T> w{v.x - P.x * d, v.y - P.y * d, v.z - P.z * d};
                     return arith::dot(arith::cross(arith::lift(L, q) - P, w), normal(L));
@@ -112,6 +125,7 @@ template <class K>
             auto decided = [&](int r) { return r < m ? k.sgn(in_plane(r)) : k.sgn(in_edge(r - m)); };
             const sign d = settled(k, D);
             if (d == sign::zero) continue; // no single point
+            if constexpr (arith::lifts_filter<K>()) Df = D(arith::lift_filter{}), Vf = V(arith::lift_filter{});
             // a condition proven violated skips the pair; the proven ones are kept
             bool out = false;
             for (int r = 0; r < m + 3 && !out; ++r) {

@@ -153,6 +153,31 @@ template <class K>
     }
     return contact::crosses;
 }
+// For T and D off by at most eT and eD (|D| > 2 eD) and t = T / D rounded: t is off from the true
+// quotient by at most (eT + |t'| eD) / |D| + u |t| with |t'| <= (|T| + eT) / (|D| - eD), the true
+// quotient's bound (u = 2^-53 for the division).
+[[nodiscard]] constexpr double quotient_error(double T, double eT, double D, double eD, double t) {
+    const double aD = arith::abs(D);
+    return (eT + (arith::abs(T) + eT) / (aD - eD) * eD) / aD + 0x1p-52 * arith::abs(t);
+}
+
+// The rounded stage of a point V / D of H given as filter values (the filter's own lift of V and D,
+// each off by at most its arith::error_bound): 1 inside, 0 outside, -1 when a comparison is not
+// clear (polyq::rounded_parity, with the point's projection V / D in double and its radius by
+// quotient_error, widened by 1/8 for its own rounding, plus 2^-1000 for underflow), or when D is
+// not clearly nonzero or a permanent is not in the filter's trusted range (arith::proven_sign).
+template <int A, int B>
+[[nodiscard]] constexpr int rounded_inside(const polygon3& g, const arith::v3<arith::filtered<A>>& V, arith::filtered<B> D) {
+    const arith::filtered<A> vu = u_of(V, g.axis), vv = v_of(V, g.axis);
+    if (!(D.p >= 0x1p-900 && vu.p >= 0x1p-900 && vv.p >= 0x1p-900)) return -1; // also NaN
+    const double eD = arith::error_bound(D);
+    if (!(arith::abs(D.v) > 2.0 * eD)) return -1;
+    const double px = vu.v / D.v, py = vv.v / D.v;
+    const double rx = quotient_error(vu.v, arith::error_bound(vu), D.v, eD, px) * 1.125 + 0x1p-1000;
+    const double ry = quotient_error(vv.v, arith::error_bound(vv), D.v, eD, py) * 1.125 + 0x1p-1000;
+    return polyq::rounded_parity(projected_edges(g), px, py, rx, ry);
+}
+
 // The rounded stage of a crossing (a filter pass at run time, arith::rounded_stage_applies): x
 // crosses H; its crossing point P = o + (T / D) u, T = n . (a - o), D = n . u, computed in double,
 // each projected coordinate off by at most a proven radius r; then the crossing test of inside on
@@ -190,11 +215,9 @@ template <class K>
     }
     for (int k = 0; k < 3; ++k) T += n[k] * w[k], D += n[k] * u[k];
     const double eT = 0x1p-48 * pT + 0x1p-700, eD = 0x1p-48 * pD + 0x1p-700;
-    const double aD = arith::abs(D);
-    if (!(aD > 2.0 * eD)) return -1;
+    if (!(arith::abs(D) > 2.0 * eD)) return -1;
     const double t = T / D;
-    const double tb = (arith::abs(T) + eT) / (aD - eD);
-    const double dt = (eT + tb * eD) / aD + 0x1p-52 * arith::abs(t);
+    const double dt = quotient_error(T, eT, D, eD, t);
     const int axis = g.axis;
     const int cu = axis == 0 ? 1 : (axis == 1 ? 2 : 0), cv = axis == 0 ? 2 : (axis == 1 ? 0 : 1);
     const double o[3] = {x.o.x, x.o.y, x.o.z};
