@@ -62,7 +62,8 @@ template <class K, class F>
 }
 
 // The rows a vertex search reads: row x is the half-space normal(L, x) . v <= offset(L, x), with
-// zero(x) and parallel(x, y) known without a sign. plane_rows reads plane3 values as they are;
+// zero(x) and parallel(x, y) known without a sign; rows may say the sign of the determinant of
+// three normals themselves (triple_sign(k, i, j, l, det), det its lifted expression). plane_rows reads plane3 values as they are;
 // frame_rows (obb_convex_polyhedron.cppm) reads a set in a box's own coordinates.
 struct plane_rows {
     const plane3* p;
@@ -110,7 +111,10 @@ template <class K, class Rows>
             if (rows.zero(j) || rows.parallel(i, j)) continue;
             for (unsigned l = j + 1; l < total; ++l) {
                 if (rows.zero(l) || rows.parallel(i, l) || rows.parallel(j, l)) continue;
-                const sign d = settled(k, [=](auto L) { return arith::det3(rows.normal(L, i), rows.normal(L, j), rows.normal(L, l)); });
+                auto det = [=](auto L) { return arith::det3(rows.normal(L, i), rows.normal(L, j), rows.normal(L, l)); };
+                sign d;
+                if constexpr (requires { rows.triple_sign(k, i, j, l, det); }) d = rows.triple_sign(k, i, j, l, det);
+                else d = settled(k, det);
                 if (d == sign::zero) continue; // no single point
                 found.independent = true;
                 // the three cross products and D, lifted once into the filter for every row's
@@ -144,7 +148,9 @@ template <class K, class Rows>
                 bool vertex_inside = true;
                 for (unsigned r = 0; r < total && vertex_inside; ++r) {
                     if (r == i || r == j || r == l) continue;
-                    const sign s = k.sgn(beyond(r));
+                    // settled: a fourth plane through the vertex, or an ulp off it (a k-DOP's
+                    // rounded-out offsets), is common, and the cheap exact stages decide it
+                    const sign s = settled(k, beyond(r));
                     vertex_inside = s == sign::zero || s == d;
                 }
                 if (vertex_inside) {

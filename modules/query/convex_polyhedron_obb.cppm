@@ -71,6 +71,21 @@ struct frame_rows {
         const row r = at(x);
         return (l(r.d) * l(1.0) - arith::dot(arith::lift(l, r.n), arith::lift(l, r.c))) * l(1.0);
     }
+    // The sign of det(A^T n_i, A^T n_j, A^T n_l) for three planes of the set (A: the axes as
+    // columns) is sign(det A) sign(det(n_i, n_j, n_l)), exactly (the determinant is
+    // multiplicative): dependent normals, such as a k-DOP's (1, 0, 0), (0, 1, 0) and (1, 1, 0),
+    // give an exact zero that the cheap stages settle on the normals alone, where the product with
+    // the axes rounds. Rows with a box face: the lifted det.
+    template <class K, class Det>
+    [[nodiscard]] constexpr sign triple_sign(K& k, unsigned i, unsigned j, unsigned l, const Det& det) const {
+        if (i < 6 || j < 6 || l < 6) return settled(k, det);
+        const vec3 a = p[i - 6].normal, c = p[j - 6].normal, e = p[l - 6].normal;
+        const sign n = settled(k, [=](auto L) { return arith::det3(arith::lift(L, a), arith::lift(L, c), arith::lift(L, e)); });
+        if (n == sign::zero) return sign::zero;
+        const obb3& o = *b;
+        const sign s = settled(k, [=](auto L) { return arith::det3(arith::lift(L, o.axes[0]), arith::lift(L, o.axes[1]), arith::lift(L, o.axes[2])); });
+        return s == sign::positive ? n : -s == sign::positive ? -n : sign::zero;
+    }
 };
 
 // d - n . c + t sum_j h_j |n . a_j| (t = +1: the box's farthest point along -n is inside the plane

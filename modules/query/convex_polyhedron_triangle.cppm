@@ -122,7 +122,8 @@ template <class K>
                 };
             };
             auto probed = [&](int r) { return r < m ? arith::probe(k, in_plane(r)) : arith::probe(k, in_edge(r - m)); };
-            auto decided = [&](int r) { return r < m ? k.sgn(in_plane(r)) : k.sgn(in_edge(r - m)); };
+            // settled: a third plane through the point, or an ulp off it, is common (see first_row_vertex)
+            auto decided = [&](int r) { return r < m ? settled(k, in_plane(r)) : settled(k, in_edge(r - m)); };
             const sign d = settled(k, D);
             if (d == sign::zero) continue; // no single point
             if constexpr (arith::lifts_filter<K>()) Df = D(arith::lift_filter{}), Vf = V(arith::lift_filter{});
