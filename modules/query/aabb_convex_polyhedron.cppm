@@ -64,7 +64,7 @@ template <class K, class F>
 // The rows a vertex search reads: row x is the half-space normal(L, x) . v <= offset(L, x), with
 // zero(x) and parallel(x, y) known without a sign; rows may say the sign of the determinant of
 // three normals themselves (triple_sign(k, i, j, l, det), det its lifted expression). plane_rows reads plane3 values as they are;
-// frame_rows (obb_convex_polyhedron.cppm) reads a set in a box's own coordinates.
+// frame_rows (convex_polyhedron_obb.cppm) reads a set in a box's own coordinates.
 struct plane_rows {
     const plane3* p;
     unsigned total;

@@ -41,6 +41,7 @@ struct frame_rows {
     const plane3* p;
     unsigned m;
     const obb3* b;
+    sign axes; // sign(det A), A: the box's axes as columns (triple_sign)
     [[nodiscard]] constexpr unsigned size() const { return m + 6; }
     [[nodiscard]] constexpr bool zero(unsigned x) const { return x >= 6 && zero_normal(p, x - 6); }
     [[nodiscard]] constexpr bool parallel(unsigned x, unsigned y) const {
@@ -81,10 +82,7 @@ struct frame_rows {
         if (i < 6 || j < 6 || l < 6) return settled(k, det);
         const vec3 a = p[i - 6].normal, c = p[j - 6].normal, e = p[l - 6].normal;
         const sign n = settled(k, [=](auto L) { return arith::det3(arith::lift(L, a), arith::lift(L, c), arith::lift(L, e)); });
-        if (n == sign::zero) return sign::zero;
-        const obb3& o = *b;
-        const sign s = settled(k, [=](auto L) { return arith::det3(arith::lift(L, o.axes[0]), arith::lift(L, o.axes[1]), arith::lift(L, o.axes[2])); });
-        return s == sign::positive ? n : -s == sign::positive ? -n : sign::zero;
+        return axes == sign::positive ? n : axes == sign::negative ? -n : sign::zero;
     }
 };
 
@@ -117,7 +115,8 @@ template <class K>
                  sign::negative;
     }
     if (centre) return true;
-    return first_row_vertex(k, frame_rows{planes, static_cast<unsigned>(m), &b}).found;
+    const sign axes = settled(k, [=](auto L) { return arith::det3(arith::lift(L, b.axes[0]), arith::lift(L, b.axes[1]), arith::lift(L, b.axes[2])); });
+    return first_row_vertex(k, frame_rows{planes, static_cast<unsigned>(m), &b, axes}).found;
 }
 // Is the whole box inside the m half-spaces? (Every plane read, so a NaN gives no in the exact tier.)
 template <class K>
