@@ -172,9 +172,7 @@ template <box_reach Reach, bool ExactPassStage = true, class K>
     // others cannot separate). The exact pass at run time asks the stage for those axes too.
     unsigned unclear = ~0u; // bit 3 e + i: edge e with box axis i; bit 9: the normal
     if constexpr (Reach == box_reach::closed) {
-        if (arith::rounded_stage_applies<K>()) {
-            if (const int r = rounded_axes_decide(b, v, &unclear); r >= 0) return r == 1;
-        } else if (ExactPassStage && arith::exact_pass_at_run_time<K>())
+        if (arith::rounded_stage_applies<K>() || (ExactPassStage && arith::exact_pass_at_run_time<K>()))
             if (const int r = rounded_axes_decide(b, v, &unclear); r >= 0) return r == 1;
         // a vertex in the closed box: they meet (comparisons, exact; a triangle with a NaN or an
         // infinity is no shape, which the signs below turn into no)
