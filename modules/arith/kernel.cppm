@@ -455,11 +455,27 @@ struct exact_kernel {
 
 // Whether K's signs evaluate their expression on lift_filter first (the filter kernels, and the
 // exact kernel's stage 1): where a body may lift a shared subexpression into the filter once
-// (convex_polyhedron_triangle.cppm's vertex of two planes and the triangle's plane).
+// (lifted_once).
 template <class K>
 [[nodiscard]] consteval bool lifts_filter() {
     return __is_base_of(filter_kernel, K) || __is_same(K, exact_kernel);
 }
+// A subexpression f(L) that many signs of one body share, lifted into the filter once: called with
+// lift_filter it returns the value kept at construction (when lifts_filter<K>(): the same value
+// each call would compute, so the signs are unchanged), with any other lift it evaluates f.
+template <class K, class F>
+struct lifted_once {
+    F f;
+    decltype((*static_cast<const F*>(nullptr))(lift_filter{})) kept{};
+    constexpr explicit lifted_once(const F& g) : f(g) {
+        if constexpr (lifts_filter<K>()) kept = f(lift_filter{});
+    }
+    template <class L>
+    [[nodiscard]] constexpr decltype(auto) operator()(L l) const {
+        if constexpr (__is_same(L, lift_filter)) return (kept);
+        else return f(l);
+    }
+};
 
 // Whether a query body is the exact kernel's pass at run time: a rounded stage cannot decide there
 // (the filter pass before it, on the same input, could not), but what it found clear may still

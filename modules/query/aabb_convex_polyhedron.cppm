@@ -63,8 +63,9 @@ template <class K, class F>
 
 // The rows a vertex search reads: row x is the half-space normal(L, x) . v <= offset(L, x), with
 // zero(x) and parallel(x, y) known without a sign; rows may say the sign of the determinant of
-// three normals themselves (triple_sign(k, i, j, l, det), det its lifted expression). plane_rows reads plane3 values as they are;
-// frame_rows (convex_polyhedron_obb.cppm) reads a set in a box's own coordinates.
+// three normals themselves (triple_sign(k, i, j, l, det), det its lifted expression). plane_rows
+// reads plane3 values as they are; frame_rows (convex_polyhedron_obb.cppm) reads a set in a box's
+// own coordinates.
 struct plane_rows {
     const plane3* p;
     unsigned total;
@@ -124,18 +125,13 @@ template <class K, class Rows>
                     const auto x = arith::cross(nc, ne);
                     return std::tuple{x, arith::cross(ne, na), arith::cross(na, nc), arith::dot(na, x)};
                 };
-                decltype(crosses(arith::lift_filter{})) cf{};
-                if constexpr (arith::lifts_filter<K>()) cf = crosses(arith::lift_filter{});
-                auto beyond = [=, &cf](unsigned r) { // c_h D - n_h . V, V = c_i n_j x n_l + c_j n_l x n_i + c_l n_i x n_j
-                    return [=, &cf](auto L) {
-                        auto value = [&](const auto& c) {
-                            const auto& [x, y, z, D] = c;
-                            const auto nh = rows.normal(L, r);
-                            return rows.offset(L, r) * D -
-                                   (rows.offset(L, i) * arith::dot(nh, x) + rows.offset(L, j) * arith::dot(nh, y) + rows.offset(L, l) * arith::dot(nh, z));
-                        };
-                        if constexpr (std::is_same_v<decltype(L), arith::lift_filter>) return value(cf);
-                        else return value(crosses(L));
+                const arith::lifted_once<K, decltype(crosses)> cl{crosses};
+                auto beyond = [=, &cl](unsigned r) { // c_h D - n_h . V, V = c_i n_j x n_l + c_j n_l x n_i + c_l n_i x n_j
+                    return [=, &cl](auto L) {
+                        const auto& [x, y, z, D] = cl(L);
+                        const auto nh = rows.normal(L, r);
+                        return rows.offset(L, r) * D -
+                               (rows.offset(L, i) * arith::dot(nh, x) + rows.offset(L, j) * arith::dot(nh, y) + rows.offset(L, l) * arith::dot(nh, z));
                     };
                 };
                 // a row the filter proves the vertex outside of rejects it before any sign is

@@ -18,7 +18,6 @@
 // permanent (tests/query/convex_polyhedron_polygon.cpp).
 module;
 #include <array>
-#include <type_traits>
 export module incidence.query:convex_polyhedron_polygon;
 import incidence.core;
 import incidence.arith;
@@ -60,18 +59,12 @@ template <class K>
             };
             const sign d = settled(k, D);
             if (d == sign::zero) continue; // no single point
-            // D and V lifted once into the filter for every condition (the same values each
-            // condition would lift again)
-            decltype(D(arith::lift_filter{})) Df{};
-            decltype(V(arith::lift_filter{})) Vf{};
-            if constexpr (arith::lifts_filter<K>()) Df = D(arith::lift_filter{}), Vf = V(arith::lift_filter{});
-            auto in_plane = [=, &Df, &Vf](int r) {
+            // D and V lifted into the filter once for every condition
+            const arith::lifted_once<K, decltype(D)> Dl{D};
+            const arith::lifted_once<K, decltype(V)> Vl{V};
+            auto in_plane = [=, &Dl, &Vl](int r) {
                 const plane3 h = planes[r];
-                return [=, &Df, &Vf](auto L) {
-                    if constexpr (std::is_same_v<decltype(L), arith::lift_filter>)
-                        return L(h.offset) * L(1.0) * Df - arith::dot(arith::lift(L, h.normal), Vf);
-                    else return L(h.offset) * L(1.0) * D(L) - arith::dot(arith::lift(L, h.normal), V(L));
-                };
+                return [=, &Dl, &Vl](auto L) { return L(h.offset) * L(1.0) * Dl(L) - arith::dot(arith::lift(L, h.normal), Vl(L)); };
             };
             bool out = false; // a condition the filter proves violated skips the pair
             for (int r = 0; r < m && !out; ++r)
@@ -85,7 +78,7 @@ template <class K>
             }
             if (!in) continue;
             if (arith::rounded_stage_applies<K>())
-                if (const int s = planeq::rounded_inside(g, Vf, Df); s >= 0) return s == 1;
+                if (const int s = planeq::rounded_inside(g, Vl.kept, Dl.kept); s >= 0) return s == 1;
             return planeq::inside(k, g, planeq::at_homogeneous<decltype(V), decltype(D)>{V, D, d});
         }
     }

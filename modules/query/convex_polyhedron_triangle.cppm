@@ -23,7 +23,6 @@
 module;
 #include <array>
 #include <cstddef>
-#include <type_traits>
 export module incidence.query:convex_polyhedron_triangle;
 import incidence.core;
 import incidence.arith;
@@ -92,27 +91,20 @@ template <class K>
                 using T = decltype(ci * x.x + cj * y.x + h * z.x);
                 return arith::v3<T>{ci * x.x + cj * y.x + h * z.x, ci * x.y + cj * y.y + h * z.y, ci * x.z + cj * y.z + h * z.z};
             };
-            // D and V lifted once into the filter for all the conditions of this pair (the same
-            // values each condition would lift again; filled below when D's sign is known)
-            decltype(D(arith::lift_filter{})) Df{};
-            decltype(V(arith::lift_filter{})) Vf{};
-            auto Dl = [&Df, D](auto L) {
-                if constexpr (std::is_same_v<decltype(L), arith::lift_filter>) return Df;
-                else return D(L);
-            };
-            auto Vl = [&Vf, V](auto L) {
-                if constexpr (std::is_same_v<decltype(L), arith::lift_filter>) return Vf;
-                else return V(L);
-            };
+            const sign d = settled(k, D);
+            if (d == sign::zero) continue; // no single point
+            // D and V lifted into the filter once for all the conditions of this pair
+            const arith::lifted_once<K, decltype(D)> Dl{D};
+            const arith::lifted_once<K, decltype(V)> Vl{V};
             // condition r < m: v in half-space r (c_r D - n_r . V); r = m + e: v on the inner side
             // of the triangle's edge e, from corner e to e + 1 (((q - p) x (V - p D)) . n)
-            auto in_plane = [=](int r) {
+            auto in_plane = [=, &Dl, &Vl](int r) {
                 const plane3 h = planes[r];
-                return [=](auto L) { return L(h.offset) * L(1.0) * Dl(L) - arith::dot(arith::lift(L, h.normal), Vl(L)); };
+                return [=, &Dl, &Vl](auto L) { return L(h.offset) * L(1.0) * Dl(L) - arith::dot(arith::lift(L, h.normal), Vl(L)); };
             };
-            auto in_edge = [=](int e) {
+            auto in_edge = [=, &Dl, &Vl](int e) {
                 const point3 p = corner[e], q = corner[(e + 1) % 3];
-                return [=](auto L) {
+                return [=, &Dl, &Vl](auto L) {
                     const auto P = arith::lift(L, p);
                     const auto d = Dl(L);
                     const auto v = Vl(L);
@@ -124,9 +116,6 @@ template <class K>
             auto probed = [&](int r) { return r < m ? arith::probe(k, in_plane(r)) : arith::probe(k, in_edge(r - m)); };
             // settled: a third plane through the point, or an ulp off it, is common (see first_row_vertex)
             auto decided = [&](int r) { return r < m ? settled(k, in_plane(r)) : settled(k, in_edge(r - m)); };
-            const sign d = settled(k, D);
-            if (d == sign::zero) continue; // no single point
-            if constexpr (arith::lifts_filter<K>()) Df = D(arith::lift_filter{}), Vf = V(arith::lift_filter{});
             // a condition proven violated skips the pair; the proven ones are kept
             bool out = false;
             for (int r = 0; r < m + 3 && !out; ++r) {
