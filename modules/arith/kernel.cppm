@@ -314,6 +314,8 @@ template <class F>
 struct approx_kernel {
     template <class F>
     [[nodiscard, gnu::always_inline]] constexpr sign sgn(const F& f) { return sign_of_double(f(lift_double{})); }
+    template <class F>
+    [[nodiscard, gnu::always_inline]] constexpr bool zero(const F& f) { return !(abs(f(lift_double{})) > 0.0); } // NaN: zero, as sgn
 };
 
 // The exact fallback's two cheap stages for a sign the filter could not prove, on the inputs times
@@ -339,6 +341,14 @@ struct filter_kernel {
         const int s = proven_sign(v);
         if (s == 0) unproven = v.p;
         return to_sign(s);
+    }
+    // sgn(f) == sign::zero, with one test instead of two (proven_nonzero): true when not proven nonzero.
+    template <class F>
+    [[nodiscard, gnu::always_inline]] constexpr bool zero(const F& f) {
+        const auto v = f(lift_filter{});
+        if (proven_nonzero(v)) return false;
+        unproven = v.p;
+        return true;
     }
     // The filter, then the two cheap exact stages (settle_cheaply) before the sign counts as
     // unproven: for signs that are often exactly zero (settling_filter_kernel, and single signs
@@ -378,6 +388,14 @@ template <class K>
 struct settling_filter_kernel : filter_kernel {
     template <class F>
     [[nodiscard, gnu::always_inline]] constexpr sign sgn(const F& f) { return settled_sgn(f); }
+    template <class F>
+    [[nodiscard, gnu::always_inline]] constexpr bool zero(const F& f) {
+        const auto v = f(lift_filter{});
+        if (proven_nonzero(v)) return false;
+        if (const int s = settle_cheaply(f, 1.0); s != 2) return s == 0;
+        unproven = v.p;
+        return true;
+    }
 };
 
 // The filter on every input times one power of two, for a whole query whose scene lies far from
@@ -442,6 +460,12 @@ struct exact_kernel {
     bool valid = true; // false when a predicate saw a NaN or infinite input
     template <class F>
     [[nodiscard, gnu::always_inline]] constexpr sign sgn(const F& f) { return exact_sign(f, valid); }
+    template <class F>
+    [[nodiscard, gnu::always_inline]] constexpr bool zero(const F& f) {
+        const auto v = f(lift_filter{});
+        if (proven_nonzero(v)) return false;
+        return exact_sign_fallback(f, valid, in_trusted_range(v)) == sign::zero;
+    }
     // A check whose failure decides nothing (see probe below) needs no exact sign: the filter,
     // and the scaled filter where the scene's scale defeated it.
     template <class F>
@@ -491,6 +515,31 @@ template <class K, class F>
 [[nodiscard, gnu::always_inline]] constexpr sign probe(K& k, const F& f) {
     if constexpr (requires { k.probe(f); }) return k.probe(f);
     else return k.sgn(f);
+}
+
+// k.sgn(f) == sign::zero, through k's one-test form where it has one (zero(f): a random nonzero
+// sign then costs no mispredicted branch); a kernel that observes signs is asked for the sign.
+template <class K, class F>
+[[nodiscard, gnu::always_inline]] constexpr bool is_zero(K& k, const F& f) {
+    if constexpr (requires { k.zero(f); }) return k.zero(f);
+    else return k.sgn(f) == sign::zero;
+}
+
+// The sign of a low-degree polynomial that decides which candidate points exist (a determinant of
+// normals, a component of a cross product), which is often exactly zero or nearly (a camera
+// frustum's two side planes and its near plane are dependent; k-DOP directions and axis-aligned
+// normals give exact zeros): a sign the filter cannot prove would end its run, so the filter
+// kernel then tries the exact fallback's two cheap stages, plain double with every operation
+// exact, then double-double, and only then gives up (filter_kernel::settled_sgn).
+template <class K, class F>
+[[nodiscard, gnu::always_inline]] constexpr sign settled(K& k, const F& f) {
+    if constexpr (__is_base_of(filter_kernel, K)) {
+        return k.settled_sgn(f);
+    } else {
+        const sign s = probe(k, f);
+        if (s != sign::zero) return s;
+        return k.sgn(f);
+    }
 }
 
 // sign(a - b) for two doubles, exactly, by comparison. A kernel that observes decisions (the tests'

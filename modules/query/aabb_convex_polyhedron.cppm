@@ -32,22 +32,8 @@ export namespace incidence::pair {
 
 namespace polyq {
 
-// The sign of a low-degree polynomial that decides which candidate points exist (a determinant of
-// normals, a component of a cross product), which is often exactly zero or nearly (a camera
-// frustum's two side planes and its near plane are dependent; k-DOP directions and axis-aligned
-// normals give exact zeros): a sign the filter cannot prove would end its run, so the filter
-// kernel then tries the exact fallback's two cheap stages, plain double with every operation
-// exact, then double-double, and only then gives up (arith::filter_kernel::settled_sgn).
-template <class K, class F>
-[[nodiscard]] constexpr sign settled(K& k, const F& f) {
-    if constexpr (std::is_base_of_v<arith::filter_kernel, K>) {
-        return k.settled_sgn(f);
-    } else {
-        const sign s = arith::probe(k, f);
-        if (s != sign::zero) return s;
-        return k.sgn(f);
-    }
-}
+// settled(k, f): the sign of a low-degree polynomial that is often exactly zero (arith::settled).
+using arith::settled;
 
 // A zero normal; two normals equal or opposite (the box's faces across one axis, a frustum's near
 // and far planes, a repeated plane): no single point where they meet, known without a sign (which

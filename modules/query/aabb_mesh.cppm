@@ -117,7 +117,7 @@ template <class K>
 template <class K>
 [[nodiscard]] constexpr bool coplanar(K& k, const triangle3& r, const triangle3& f) {
     for (const point3& p : {f.a, f.b, f.c})
-        if (!same(p, r.a) && !same(p, r.b) && !same(p, r.c) && k.sgn([=](auto L) { return poly::orient3d(L, r.a, r.b, r.c, p); }) != sign::zero)
+        if (!same(p, r.a) && !same(p, r.b) && !same(p, r.c) && !arith::is_zero(k, [=](auto L) { return poly::orient3d(L, r.a, r.b, r.c, p); }))
             return false;
     return true;
 }

@@ -25,9 +25,9 @@ template <class K>
         return arith::compare(k, p.x, o.x) == sign::zero && arith::compare(k, p.y, o.y) == sign::zero &&
                arith::compare(k, p.z, o.z) == sign::zero;
     // component i of (p - o) x d: (p - o)_j d_l - (p - o)_l d_j, (i, j, l) cyclic
-    if (k.sgn([=](auto L) { return (L(p.y) - L(o.y)) * L(d.z) - (L(p.z) - L(o.z)) * L(d.y); }) != sign::zero) return false;
-    if (k.sgn([=](auto L) { return (L(p.z) - L(o.z)) * L(d.x) - (L(p.x) - L(o.x)) * L(d.z); }) != sign::zero) return false;
-    return k.sgn([=](auto L) { return (L(p.x) - L(o.x)) * L(d.y) - (L(p.y) - L(o.y)) * L(d.x); }) == sign::zero;
+    if (!arith::is_zero(k, [=](auto L) { return (L(p.y) - L(o.y)) * L(d.z) - (L(p.z) - L(o.z)) * L(d.y); })) return false;
+    if (!arith::is_zero(k, [=](auto L) { return (L(p.z) - L(o.z)) * L(d.x) - (L(p.x) - L(o.x)) * L(d.z); })) return false;
+    return arith::is_zero(k, [=](auto L) { return (L(p.x) - L(o.x)) * L(d.y) - (L(p.y) - L(o.y)) * L(d.x); });
 }
 
 } // namespace incidence::pair

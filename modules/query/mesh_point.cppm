@@ -124,10 +124,10 @@ template <class K, class Q>
             const point3 a = t.a, b = t.b, cc = t.c;
             bool collinear = true;
             for (int axis = 0; axis < 3 && collinear; ++axis)
-                collinear = k.sgn([=](auto L) {
+                collinear = arith::is_zero(k, [=](auto L) {
                                 const auto n = arith::cross(arith::lift(L, b) - arith::lift(L, a), arith::lift(L, cc) - arith::lift(L, a));
                                 return axis == 0 ? n.x : (axis == 1 ? n.y : n.z);
-                            }) == sign::zero;
+                            });
             if (!collinear) return -1;
             continue;
         }

@@ -349,11 +349,11 @@ template <class K>
         if (zeros == 0 && (pos == 0 || neg == 0)) return; // off H
         bool collinear = true;
         for (int ax = 0; ax < 3 && collinear; ++ax)
-            collinear = k.sgn([=](auto L) {
+            collinear = arith::is_zero(k, [=](auto L) {
                             const auto P = arith::lift(L, v[0]);
                             const auto n = arith::cross(arith::lift(L, v[1]) - P, arith::lift(L, v[2]) - P);
                             return ax == 0 ? n.x : (ax == 1 ? n.y : n.z);
-                        }) == sign::zero;
+                        });
         if (collinear) return; // no interior: neither crossed nor covering
         for (int j = 0; j < 3; ++j) {
             const point3 p = v[j], q = v[(j + 1) % 3];
@@ -570,7 +570,7 @@ template <class K>
     // the same for a pair chord: its direction parallel to none
     auto generic_pair = [&](const pair_chord& c) {
         for (const sweep_dir& d : far_dirs)
-            if (k.sgn([=](auto L) { return cross_along(axis, c.dir(L), bound_vector(L, fr, sector_bound{d, false})); }) == sign::zero) return false;
+            if (arith::is_zero(k, [=](auto L) { return cross_along(axis, c.dir(L), bound_vector(L, fr, sector_bound{d, false})); })) return false;
         return true;
     };
     // a sector's bound: a direction (an edge's crossing z with its D's sign), or for s = 0 (b) or
@@ -666,11 +666,11 @@ template <class K>
     if (!meshq::in_box(mb, t.a) || !meshq::in_box(mb, t.b) || !meshq::in_box(mb, t.c)) return false; // the set lies in the vertices' box
     int axis = -1;
     for (int ax = 0; ax < 3 && axis < 0; ++ax)
-        if (k.sgn([=](auto L) {
+        if (!arith::is_zero(k, [=](auto L) {
                 const auto A = arith::lift(L, t.a);
                 const auto n = arith::cross(arith::lift(L, t.b) - A, arith::lift(L, t.c) - A);
                 return ax == 0 ? n.x : (ax == 1 ? n.y : n.z);
-            }) != sign::zero)
+            }))
             axis = ax;
     if (axis < 0) // collinear: the union of its edges
         return contains(k, m, segment3{t.a, t.b}) && contains(k, m, segment3{t.b, t.c}) && contains(k, m, segment3{t.c, t.a});

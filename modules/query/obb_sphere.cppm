@@ -32,7 +32,7 @@ template <class K>
     if (!sat::well_formed(b) || !finite(b) || !ball::usable(s)) return false;
     if (s.radius == 0.0) return contains(k, b, s.center);
     const vec3 a[3] = {b.axes[0], b.axes[1], b.axes[2]};
-    if (k.sgn([=](auto L) { return arith::det3(arith::lift(L, a[0]), arith::lift(L, a[1]), arith::lift(L, a[2])); }) == sign::zero)
+    if (arith::is_zero(k, [=](auto L) { return arith::det3(arith::lift(L, a[0]), arith::lift(L, a[1]), arith::lift(L, a[2])); }))
         return false; // a flat box
     const point3 o = b.center, c = s.center;
     const double r = s.radius;

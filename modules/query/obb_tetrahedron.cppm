@@ -101,15 +101,15 @@ template <class K>
         const auto normal = face_normal(i);
         bool zero = true;
         for (int c = 0; c < 3; ++c)
-            zero = zero && k.sgn([=](auto L) {
+            zero = zero && arith::is_zero(k, [=](auto L) {
                                 const auto n = normal(L);
                                 return c == 0 ? n.x : (c == 1 ? n.y : n.z);
-                            }) == sign::zero;
+                            });
         if (zero) continue;
         // In the plane: N . (c - q0) = 0 and N . a_j = 0 for each used axis.
         if (!tetra::box_on_zero(b, [&](point3 x, bool is_point) {
-                if (is_point) return k.sgn([=](auto L) { return arith::dot(normal(L), arith::lift(L, x) - arith::lift(L, q0)); }) == sign::zero;
-                return k.sgn([=](auto L) { return arith::dot(normal(L), arith::lift(L, vec3{x.x, x.y, x.z})); }) == sign::zero;
+                if (is_point) return arith::is_zero(k, [=](auto L) { return arith::dot(normal(L), arith::lift(L, x) - arith::lift(L, q0)); });
+                return arith::is_zero(k, [=](auto L) { return arith::dot(normal(L), arith::lift(L, vec3{x.x, x.y, x.z})); });
             }))
             return false;
         // Within each line through two vertices that has the other two on one side of it.
@@ -145,12 +145,12 @@ template <class K>
     const point3 w = v[far];
     for (int c = 0; c < 3; ++c) // on the line: d x (c - u) = 0 and d x a_j = 0
         if (!tetra::box_on_zero(b, [&](point3 x, bool is_point) {
-                return k.sgn([=](auto L) {
+                return arith::is_zero(k, [=](auto L) {
                            const auto d = arith::lift(L, w) - arith::lift(L, u);
                            const auto e = is_point ? arith::lift(L, x) - arith::lift(L, u) : arith::lift(L, x) - arith::lift(L, point3{0, 0, 0});
                            const auto n = arith::cross(d, e);
                            return c == 0 ? n.x : (c == 1 ? n.y : n.z);
-                       }) == sign::zero;
+                       });
             }))
             return false;
     // Along the line, t(x) = d . x: some vertex at or below the box's least t, some at or above its

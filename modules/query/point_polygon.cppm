@@ -55,7 +55,7 @@ template <class K>
 [[nodiscard]] constexpr bool usable(K& k, const polygon3& g) {
     if (!well_formed(g)) return false;
     const int axis = g.axis;
-    return k.sgn([=](auto L) { return component(normal(L, g), axis); }) != sign::zero;
+    return !arith::is_zero(k, [=](auto L) { return component(normal(L, g), axis); });
 }
 // n . (p - a): zero iff p lies in H.
 template <class K>
@@ -295,7 +295,7 @@ template <class K>
     const bool on_edge = planeq::any_edge(g, [&](const segment3& e) {
         const point2 a = g.projected(e.a), b = g.projected(e.b);
         if (q.x < min2(a.x, b.x) || q.x > max2(a.x, b.x) || q.y < min2(a.y, b.y) || q.y > max2(a.y, b.y)) return false;
-        return k.sgn([=](auto L) { return poly::orient2d(L, a, b, q); }) == sign::zero;
+        return arith::is_zero(k, [=](auto L) { return poly::orient2d(L, a, b, q); });
     });
     return on_edge || planeq::inside(k, g, planeq::at_double{p});
 }

@@ -88,7 +88,7 @@ template <class K>
 template <class K>
 [[nodiscard]] constexpr bool point_in_triangle(K& k, point3 x, const triangle3& t) {
     const point3 a = t.a, b = t.b, c = t.c;
-    if (k.sgn([=](auto L) { return poly::orient3d(L, a, b, c, x); }) != sign::zero) return false;
+    if (!arith::is_zero(k, [=](auto L) { return poly::orient3d(L, a, b, c, x); })) return false;
     for (int axis = 0; axis < 3; ++axis) {
         const sign na = k.sgn([=](auto L) {
             const auto A = arith::lift(L, a);

@@ -26,12 +26,8 @@ template <class K>
     if (!finite(s.a) || !finite(s.b) || !finite(t.a) || !finite(t.b)) return false; // no shape
     if (boxes_apart(k, s, t)) return false; // exact, and cheap on the commonest no
     // In the filter pass an unproven sign (an end point on the other's line, often exactly) is
-    // settled where it arises (arith::filter_kernel::settled_sgn) rather than by rerunning the pair.
-    auto orient = [&](point2 p, point2 q, point2 r) {
-        const auto f = [=](auto L) { return poly::orient2d(L, p, q, r); };
-        if constexpr (__is_base_of(arith::filter_kernel, K)) return k.settled_sgn(f);
-        else return k.sgn(f);
-    };
+    // settled where it arises (arith::settled) rather than by rerunning the pair.
+    auto orient = [&](point2 p, point2 q, point2 r) { return arith::settled(k, [=](auto L) { return poly::orient2d(L, p, q, r); }); };
     // r, on the line p q, lies on the closed segment p q iff it lies in its bounding box
     auto within = [](point2 p, point2 q, point2 r) {
         return (p.x <= q.x ? p.x <= r.x && r.x <= q.x : q.x <= r.x && r.x <= p.x) &&

@@ -244,7 +244,7 @@ template <class K, class Lin>
     const sign c = k.sgn([&](auto L) { return arith::cross(drop_axis(s.D(L), axis), drop_axis(r.D(L), axis)); });
     if (c != sign::zero) return crossing_2d(k, s, r, axis, c);
     // Parallel in the plane: r must lie on s's line.
-    if (k.sgn([&](auto L) { return arith::cross(drop_axis(s.D(L), axis), drop_axis(r.O(L) - s.O(L), axis)); }) != sign::zero)
+    if (!arith::is_zero(k, [&](auto L) { return arith::cross(drop_axis(s.D(L), axis), drop_axis(r.O(L) - s.O(L), axis)); }))
         return false;
     return collinear_overlap(k, s, r);
 }
@@ -291,12 +291,12 @@ template <class K>
     const linear3& r = swap ? s0 : r0;
     if (s.is_point()) { // both points
         const point3 a = s.o, b = r.o;
-        return k.sgn([&](auto L) { return L(a.x) - L(b.x); }) == sign::zero &&
-               k.sgn([&](auto L) { return L(a.y) - L(b.y); }) == sign::zero &&
-               k.sgn([&](auto L) { return L(a.z) - L(b.z); }) == sign::zero;
+        return arith::is_zero(k, [&](auto L) { return L(a.x) - L(b.x); }) &&
+               arith::is_zero(k, [&](auto L) { return L(a.y) - L(b.y); }) &&
+               arith::is_zero(k, [&](auto L) { return L(a.z) - L(b.z); });
     }
     if (!r.is_point()) {
-        if (k.sgn([&](auto L) { return arith::det3(s.D(L), r.D(L), r.O(L) - s.O(L)); }) != sign::zero) return false; // skew
+        if (!arith::is_zero(k, [&](auto L) { return arith::det3(s.D(L), r.D(L), r.O(L) - s.O(L)); })) return false; // skew
         for (int axis = 0; axis < 3; ++axis) {
             const sign c = k.sgn([&](auto L) { return pick(arith::cross(s.D(L), r.D(L)), axis); });
             if (c != sign::zero) return crossing_2d(k, s, r, axis, c);
@@ -304,7 +304,7 @@ template <class K>
     }
     // Parallel, or r a point: r must lie on s's line.
     for (int axis = 0; axis < 3; ++axis)
-        if (k.sgn([&](auto L) { return pick(arith::cross(s.D(L), r.O(L) - s.O(L)), axis); }) != sign::zero) return false;
+        if (!arith::is_zero(k, [&](auto L) { return pick(arith::cross(s.D(L), r.O(L) - s.O(L)), axis); })) return false;
     return collinear_overlap(k, s, r);
 }
 
@@ -316,11 +316,11 @@ template <class K>
     const linear2& r = swap ? s0 : r0;
     if (s.is_point()) { // both points
         const point2 a = s.o, b = r.o;
-        return k.sgn([&](auto L) { return L(a.x) - L(b.x); }) == sign::zero &&
-               k.sgn([&](auto L) { return L(a.y) - L(b.y); }) == sign::zero;
+        return arith::is_zero(k, [&](auto L) { return L(a.x) - L(b.x); }) &&
+               arith::is_zero(k, [&](auto L) { return L(a.y) - L(b.y); });
     }
     if (!r.is_point()) return linear_linear_2d(k, s, r, 0);
-    if (k.sgn([&](auto L) { return arith::cross(s.D(L), r.O(L) - s.O(L)); }) != sign::zero) return false;
+    if (!arith::is_zero(k, [&](auto L) { return arith::cross(s.D(L), r.O(L) - s.O(L)); })) return false;
     return collinear_overlap(k, s, r);
 }
 

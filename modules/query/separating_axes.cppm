@@ -141,7 +141,7 @@ template <class K, class Separates, class Offset>
             for (int m = j + 1; m < ds.n; ++m) {
                 if (!ds.live[i] || !ds.live[j] || !ds.live[m]) continue;
                 const direction a = ds.d[i], b = ds.d[j], c = ds.d[m];
-                if (k.sgn([=](auto L) { return arith::det3(lift(L, a), lift(L, b), lift(L, c)); }) != sign::zero) return false;
+                if (!arith::is_zero(k, [=](auto L) { return arith::det3(lift(L, a), lift(L, b), lift(L, c)); })) return false;
             }
     // 3. Flat configurations: in-plane normals (a x b) x c, the directions, (a x d) x a, the
     //    coordinate axes.
