@@ -255,7 +255,7 @@ inline constexpr int max_expansion_capacity = 2048;
 // The predicate is passed by value (predicates capture their inputs by value): nothing of the
 // fast path escapes to memory, so the filter runs on registers without store-forwarding stalls.
 template <class F>
-[[nodiscard, gnu::noinline]] constexpr sign exact_sign_fallback(F f, bool& valid, bool in_range);
+[[nodiscard, gnu::noinline]] constexpr sign exact_sign_fallback(F f, bool& valid, bool in_range, bool rounded_zero);
 
 // Exact sign of a generic polynomial predicate at the exact values of its inputs.
 // `valid` is cleared for non-finite inputs (their sign is then reported as zero).
@@ -264,14 +264,18 @@ template <class F>
     // Stage 1: semi-static filter.
     const auto v = f(lift_filter{});
     if (const int s = proven_sign(v); s != 0) return to_sign(s);
-    return exact_sign_fallback(f, valid, in_trusted_range(v));
+    return exact_sign_fallback(f, valid, in_trusted_range(v), v.v == 0.0);
 }
 
 template <class F>
-[[nodiscard, gnu::noinline]] constexpr sign exact_sign_fallback(F f, bool& valid, bool in_range) {
+[[nodiscard, gnu::noinline]] constexpr sign exact_sign_fallback(F f, bool& valid, bool in_range, bool rounded_zero) {
     // Stage 1a: every operation exact in double (exactly touching inputs: an exact zero, which no
-    // filter can prove, is the commonest reason to be here).
-    if (const exact_double x = f(lift_exact_double{}); x.exact) return sign_of_double(x.v);
+    // filter can prove, is the commonest reason to be here). Only where the filter's value, the
+    // same expression in plain double, is zero (rounded_zero): where this stage succeeds, that
+    // value is the exact one, so it can settle a zero only there; a nonzero sign it would settle,
+    // the stages below settle as well (skipping it is always sound, never wrong).
+    if (rounded_zero)
+        if (const exact_double x = f(lift_exact_double{}); x.exact) return sign_of_double(x.v);
     // Stage 1b, where the filter's permanent left its trusted range (in_range false): the filter
     // on inputs scaled by a power of two (scaled_filter_sign). Then 1c: the double-double filter,
     // which decides configurations a few ulps off the boundary (on the inputs scaled as in 1b, or
@@ -321,10 +325,12 @@ struct approx_kernel {
 // The exact fallback's two cheap stages for a sign the filter could not prove, on the inputs times
 // factor (a power of two that keeps every input exact; 1 for the inputs as they are): plain double
 // with every operation exact (an exact zero, from coplanar or axis-aligned inputs, is the
-// commonest reason), then double-double. +1, -1, 0 when settled; 2 when not.
+// commonest reason; tried only where the filter's value on the same inputs, rounded_zero, is zero,
+// as in exact_sign_fallback), then double-double. +1, -1, 0 when settled; 2 when not.
 template <class F>
-[[nodiscard, gnu::noinline]] constexpr int settle_cheaply(F f, double factor) {
-    if (const exact_double x = f(lift_scaled<lift_exact_double>{factor}); x.exact) return x.v > 0.0 ? 1 : (x.v < 0.0 ? -1 : 0);
+[[nodiscard, gnu::noinline]] constexpr int settle_cheaply(F f, double factor, bool rounded_zero) {
+    if (rounded_zero)
+        if (const exact_double x = f(lift_scaled<lift_exact_double>{factor}); x.exact) return x.v > 0.0 ? 1 : (x.v < 0.0 ? -1 : 0);
     if (const int s = proven_sign(f(lift_scaled<lift_filter2>{factor})); s != 0) return s;
     return 2;
 }
@@ -357,7 +363,7 @@ struct filter_kernel {
     [[nodiscard, gnu::always_inline]] constexpr sign settled_sgn(const F& f) {
         const auto v = f(lift_filter{});
         if (const int s = proven_sign(v); s != 0) return to_sign(s);
-        if (const int s = settle_cheaply(f, 1.0); s != 2) return to_sign(s);
+        if (const int s = settle_cheaply(f, 1.0, v.v == 0.0); s != 2) return to_sign(s);
         unproven = v.p;
         return sign::zero;
     }
@@ -392,7 +398,7 @@ struct settling_filter_kernel : filter_kernel {
     [[nodiscard, gnu::always_inline]] constexpr bool zero(const F& f) {
         const auto v = f(lift_filter{});
         if (proven_nonzero(v)) return false;
-        if (const int s = settle_cheaply(f, 1.0); s != 2) return s == 0;
+        if (const int s = settle_cheaply(f, 1.0, v.v == 0.0); s != 2) return s == 0;
         unproven = v.p;
         return true;
     }
@@ -423,7 +429,7 @@ struct scaled_filter_kernel {
             const auto v = f(lift_scaled_filter{factor});
             if (const int s = proven_sign(v); s != 0) return s;
             // not where a NaN permanent says an input was not exact
-            return v.p == v.p ? settle_cheaply(f, factor) : 2;
+            return v.p == v.p ? settle_cheaply(f, factor, v.v == 0.0) : 2;
         } else {
             const int s = proven_sign(f(lift_filter{}));
             return s != 0 ? s : 2;
@@ -464,7 +470,7 @@ struct exact_kernel {
     [[nodiscard, gnu::always_inline]] constexpr bool zero(const F& f) {
         const auto v = f(lift_filter{});
         if (proven_nonzero(v)) return false;
-        return exact_sign_fallback(f, valid, in_trusted_range(v)) == sign::zero;
+        return exact_sign_fallback(f, valid, in_trusted_range(v), v.v == 0.0) == sign::zero;
     }
     // A check whose failure decides nothing (see probe below) needs no exact sign: the filter,
     // and the scaled filter where the scene's scale defeated it.
