@@ -642,7 +642,9 @@ template <class K>
         if (!done) { // chords w0 V_lo + w1 V_hi between the sector's bounds: each point where two lines
                      // cross, and each far direction, rules out one ratio w1 / w0
             const sector_bound blo = bound_of(lo, false), bhi = bound_of(hi, true);
-            const std::size_t tries = lines.size() * lines.size() + far_dirs.size() + 2;
+            // (plain double reaches here where its signs disagree with the exact ones, near a zero: a
+            // guess, two ratios, rather than lines^2 chords of lines^2 cuts each)
+            const std::size_t tries = __is_same(K, arith::approx_kernel) ? 2 : lines.size() * lines.size() + far_dirs.size() + 2;
             for (std::size_t w = 1; w <= tries && !done; ++w) {
                 const pair_chord c{fr, blo, bhi, 1.0, double(w), side_a};
                 if (!generic_pair(c)) continue;
