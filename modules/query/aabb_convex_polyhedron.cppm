@@ -19,6 +19,7 @@
 // permanent (tests/query/aabb_convex_polyhedron.cpp).
 module;
 #include <array>
+#include <cstdint>
 #include <tuple>
 #include <type_traits>
 export module incidence.query:aabb_convex_polyhedron;
@@ -88,62 +89,257 @@ template <class L>
     using T = decltype(ca * x.x + cc * y.x + ce * z.x);
     return arith::v3<T>{ca * x.x + cc * y.x + ce * z.x, ca * x.y + cc * y.y + ce * z.y, ca * x.z + cc * y.z + ce * z.z};
 }
+// Is the point where rows i, j and l meet (independent normals) inside every row? found and
+// independent say so, with d = sign(D); independent alone: they meet at one point, outside.
 template <class K, class Rows>
-[[nodiscard]] constexpr row_vertex first_row_vertex(K& k, const Rows& rows) {
+[[nodiscard]] constexpr row_vertex vertex_of_rows(K& k, const Rows& rows, unsigned i, unsigned j, unsigned l) {
+    row_vertex found;
+    if (rows.zero(i) || rows.zero(j) || rows.zero(l) || rows.parallel(i, j) || rows.parallel(i, l) || rows.parallel(j, l)) return found;
+    auto det = [=](auto L) { return arith::det3(rows.normal(L, i), rows.normal(L, j), rows.normal(L, l)); };
+    sign d;
+    if constexpr (requires { rows.triple_sign(k, i, j, l, det); }) d = rows.triple_sign(k, i, j, l, det);
+    else d = settled(k, det);
+    if (d == sign::zero) return found; // no single point
+    found.independent = true;
+    // the three cross products and D, lifted once into the filter for every row's condition (the
+    // same values each condition would lift again)
+    auto crosses = [=](auto L) {
+        const auto na = rows.normal(L, i), nc = rows.normal(L, j), ne = rows.normal(L, l);
+        const auto x = arith::cross(nc, ne);
+        return std::tuple{x, arith::cross(ne, na), arith::cross(na, nc), arith::dot(na, x)};
+    };
+    const arith::lifted_once<K, decltype(crosses)> cl{crosses};
+    auto beyond = [=, &cl](unsigned r) { // c_h D - n_h . V, V = c_i n_j x n_l + c_j n_l x n_i + c_l n_i x n_j
+        return [=, &cl](auto L) {
+            const auto& [x, y, z, D] = cl(L);
+            const auto nh = rows.normal(L, r);
+            return rows.offset(L, r) * D - (rows.offset(L, i) * arith::dot(nh, x) + rows.offset(L, j) * arith::dot(nh, y) + rows.offset(L, l) * arith::dot(nh, z));
+        };
+    };
+    // a row the filter proves the vertex outside of rejects it before any sign is decided (a zero
+    // sign elsewhere, such as a fourth plane through the same point, would otherwise end the
+    // filter's run)
+    const unsigned total = rows.size();
+    for (unsigned r = 0; r < total; ++r)
+        if (r != i && r != j && r != l && arith::probe(k, beyond(r)) == -d) return found;
+    for (unsigned r = 0; r < total; ++r) {
+        if (r == i || r == j || r == l) continue;
+        // settled: a fourth plane through the vertex, or an ulp off it (a k-DOP's rounded-out
+        // offsets), is common, and the cheap exact stages decide it
+        const sign s = settled(k, beyond(r));
+        if (s != sign::zero && s != d) return found;
+    }
+    found.found = true;
+    found.i = i, found.j = j, found.l = l, found.d = d;
+    return found;
+}
+// Every triple of rows in turn: the first vertex inside every row.
+template <class K, class Rows>
+[[nodiscard]] constexpr row_vertex search_row_vertex(K& k, const Rows& rows) {
     row_vertex found;
     const unsigned total = rows.size();
-    for (unsigned i = 0; i < total; ++i) {
-        if (rows.zero(i)) continue;
-        for (unsigned j = i + 1; j < total; ++j) {
-            if (rows.zero(j) || rows.parallel(i, j)) continue;
+    for (unsigned i = 0; i < total; ++i)
+        for (unsigned j = i + 1; j < total; ++j)
             for (unsigned l = j + 1; l < total; ++l) {
-                if (rows.zero(l) || rows.parallel(i, l) || rows.parallel(j, l)) continue;
-                auto det = [=](auto L) { return arith::det3(rows.normal(L, i), rows.normal(L, j), rows.normal(L, l)); };
-                sign d;
-                if constexpr (requires { rows.triple_sign(k, i, j, l, det); }) d = rows.triple_sign(k, i, j, l, det);
-                else d = settled(k, det);
-                if (d == sign::zero) continue; // no single point
-                found.independent = true;
-                // the three cross products and D, lifted once into the filter for every row's
-                // condition (the same values each condition would lift again)
-                auto crosses = [=](auto L) {
-                    const auto na = rows.normal(L, i), nc = rows.normal(L, j), ne = rows.normal(L, l);
-                    const auto x = arith::cross(nc, ne);
-                    return std::tuple{x, arith::cross(ne, na), arith::cross(na, nc), arith::dot(na, x)};
-                };
-                const arith::lifted_once<K, decltype(crosses)> cl{crosses};
-                auto beyond = [=, &cl](unsigned r) { // c_h D - n_h . V, V = c_i n_j x n_l + c_j n_l x n_i + c_l n_i x n_j
-                    return [=, &cl](auto L) {
-                        const auto& [x, y, z, D] = cl(L);
-                        const auto nh = rows.normal(L, r);
-                        return rows.offset(L, r) * D -
-                               (rows.offset(L, i) * arith::dot(nh, x) + rows.offset(L, j) * arith::dot(nh, y) + rows.offset(L, l) * arith::dot(nh, z));
-                    };
-                };
-                // a row the filter proves the vertex outside of rejects it before any sign is
-                // decided (a zero sign elsewhere, such as a fourth plane through the same point,
-                // would otherwise end the filter's run)
-                bool rejected = false;
-                for (unsigned r = 0; r < total && !rejected; ++r)
-                    if (r != i && r != j && r != l) rejected = arith::probe(k, beyond(r)) == -d;
-                if (rejected) continue;
-                bool vertex_inside = true;
-                for (unsigned r = 0; r < total && vertex_inside; ++r) {
-                    if (r == i || r == j || r == l) continue;
-                    // settled: a fourth plane through the vertex, or an ulp off it (a k-DOP's
-                    // rounded-out offsets), is common, and the cheap exact stages decide it
-                    const sign s = settled(k, beyond(r));
-                    vertex_inside = s == sign::zero || s == d;
-                }
-                if (vertex_inside) {
-                    found.found = true;
-                    found.i = i, found.j = j, found.l = l, found.d = d;
-                    return found;
-                }
+                const row_vertex v = vertex_of_rows(k, rows, i, j, l);
+                if (v.found) return v;
+                found.independent = found.independent || v.independent;
+            }
+    return found;
+}
+
+// Seidel's randomised incremental linear programming in plain double (Seidel, "Small-dimensional
+// linear programming and convex hulls made easy", Discrete Comput. Geom. 6, 1991), for a guess
+// only: the rows through the least point of the set along a fixed generic direction inside a box
+// of half-width 2^200, or at most four rows with no common point. first_row_vertex proves a guess
+// with the exact signs before it counts and searches every triple where it does not hold.
+namespace lp {
+inline constexpr unsigned box_face = ~0u; // a face of the box, not a row
+inline constexpr unsigned max_rows = 2 * convex_polyhedron3::capacity + 8;
+inline constexpr double half_width = 0x1p200;
+template <int D>
+struct row { // no initialisers: the arrays of rows are written before they are read
+    std::array<double, D> a;
+    double b;
+    unsigned id;
+};
+template <int D>
+struct result {
+    bool feasible = true;
+    std::array<double, D> x{};
+    std::array<unsigned, D> tight{};  // the rows through x
+    std::array<unsigned, D + 1> why{}; // infeasible: rows with no common point
+    int nwhy = 0;
+};
+// minimise f . x over the box and the n rows a . x <= b, taken in their order
+template <int D>
+[[nodiscard]] constexpr result<D> solve(const row<D>* rows, unsigned n, const std::array<double, D>& f) {
+    result<D> out;
+    if constexpr (D == 1) {
+        double lo = -half_width, hi = half_width;
+        unsigned ilo = box_face, ihi = box_face;
+        for (unsigned i = 0; i < n; ++i) {
+            const double a = rows[i].a[0], b = rows[i].b;
+            if (a > 0.0 && b / a < hi) hi = b / a, ihi = rows[i].id;
+            else if (a < 0.0 && b / a > lo) lo = b / a, ilo = rows[i].id;
+            else if (a == 0.0 && b < 0.0) {
+                out.feasible = false, out.why[0] = rows[i].id, out.nwhy = 1;
+                return out;
             }
         }
+        if (lo > hi) {
+            out.feasible = false, out.why = {ilo, ihi}, out.nwhy = 2;
+            return out;
+        }
+        const bool low = !(f[0] < 0.0);
+        out.x[0] = low ? lo : hi, out.tight[0] = low ? ilo : ihi;
+        return out;
+    } else {
+        for (int c = 0; c < D; ++c) out.x[c] = f[c] > 0.0 ? -half_width : half_width, out.tight[c] = box_face;
+        for (unsigned i = 0; i < n; ++i) {
+            const row<D>& r = rows[i];
+            double s = 0.0;
+            for (int c = 0; c < D; ++c) s += r.a[c] * out.x[c];
+            if (!(s > r.b)) continue;
+            // the least point now lies on r's plane: x_e eliminated, |a_e| the largest
+            auto mag = [](double v) { return v < 0.0 ? -v : v; };
+            int e = 0;
+            for (int c = 1; c < D; ++c)
+                if (mag(r.a[static_cast<unsigned>(c)]) > mag(r.a[static_cast<unsigned>(e)])) e = c;
+            if (!(mag(r.a[static_cast<unsigned>(e)]) > 0.0)) {
+                out.feasible = false, out.why[0] = r.id, out.nwhy = 1;
+                return out;
+            }
+            auto project = [&](const std::array<double, D>& a, double b, unsigned id) {
+                const double q = a[static_cast<unsigned>(e)] / r.a[static_cast<unsigned>(e)];
+                row<D - 1> p{{}, b - q * r.b, id};
+                for (int c = 0, m = 0; c < D; ++c)
+                    if (c != e) p.a[static_cast<unsigned>(m++)] = a[static_cast<unsigned>(c)] - q * r.a[static_cast<unsigned>(c)];
+                return p;
+            };
+            std::array<row<D - 1>, max_rows + 2> sub;
+            std::array<double, D> unit{};
+            unit[static_cast<unsigned>(e)] = 1.0;
+            sub[0] = project(unit, half_width, box_face);
+            unit[static_cast<unsigned>(e)] = -1.0;
+            sub[1] = project(unit, half_width, box_face);
+            for (unsigned j = 0; j < i; ++j) sub[j + 2] = project(rows[j].a, rows[j].b, rows[j].id);
+            const row<D - 1> pf = project(f, 0.0, box_face);
+            const result<D - 1> lower = solve<D - 1>(sub.data(), i + 2, pf.a);
+            if (!lower.feasible) {
+                out.feasible = false, out.why[0] = r.id, out.nwhy = lower.nwhy + 1;
+                for (int w = 0; w < lower.nwhy; ++w) out.why[static_cast<unsigned>(w + 1)] = lower.why[static_cast<unsigned>(w)];
+                return out;
+            }
+            double xe = r.b;
+            for (int c = 0, m = 0; c < D; ++c)
+                if (c != e) {
+                    out.x[static_cast<unsigned>(c)] = lower.x[static_cast<unsigned>(m)];
+                    xe -= r.a[static_cast<unsigned>(c)] * lower.x[static_cast<unsigned>(m++)];
+                }
+            out.x[static_cast<unsigned>(e)] = xe / r.a[static_cast<unsigned>(e)];
+            out.tight[0] = r.id;
+            for (int c = 0; c + 1 < D; ++c) out.tight[static_cast<unsigned>(c + 1)] = lower.tight[static_cast<unsigned>(c)];
+        }
+        return out;
     }
-    return found;
+}
+// The guess for the rows: a vertex (three rows), rows with no common point (n of them), or none.
+struct guess {
+    bool vertex = false;
+    std::array<unsigned, 4> r{};
+    unsigned n = 0;
+    std::array<double, 3> x{}; // the vertex
+};
+inline constexpr std::array<double, 3> generic_direction{1.0, 0x1.6a09e667f3bcdp-1, 0x1.279a74590331cp-2};
+// f: the direction to minimise along
+template <class Rows>
+[[nodiscard]] constexpr guess guess_of(const Rows& rows, const std::array<double, 3>& f = generic_direction) {
+    const unsigned total = rows.size();
+    if (total > max_rows) return {};
+    std::array<row<3>, max_rows> in;
+    unsigned n = 0;
+    for (unsigned x = 0; x < total; ++x) {
+        if (rows.zero(x)) continue;
+        const auto v = rows.normal(arith::lift_double{}, x);
+        in[n++] = row<3>{{v.x, v.y, v.z}, rows.offset(arith::lift_double{}, x), x};
+    }
+    // a fixed shuffle (xorshift), the same on every call: the expected linear time of a random order
+    std::uint64_t s = 0x9e3779b97f4a7c15u;
+    for (unsigned i = n; i > 1; --i) {
+        s ^= s << 13, s ^= s >> 7, s ^= s << 17;
+        const auto j = static_cast<unsigned>(s % i);
+        const row<3> t = in[i - 1];
+        in[i - 1] = in[j], in[j] = t;
+    }
+    const result<3> r = solve<3>(in.data(), n, f);
+    guess g;
+    if (r.feasible) {
+        g.vertex = true, g.n = 3, g.x = r.x;
+        for (unsigned c = 0; c < 3; ++c) g.r[c] = r.tight[c];
+    } else {
+        g.n = static_cast<unsigned>(r.nwhy);
+        for (unsigned c = 0; c < g.n; ++c) g.r[c] = r.why[c];
+    }
+    for (unsigned c = 0; c < g.n; ++c)
+        if (g.r[c] == box_face) return {};
+    return g;
+}
+} // namespace lp
+
+// Some of the rows, by their indices in `at`.
+template <class Rows>
+struct picked_rows {
+    const Rows* rows;
+    std::array<unsigned, 4> at;
+    unsigned n;
+    [[nodiscard]] constexpr unsigned size() const { return n; }
+    [[nodiscard]] constexpr bool zero(unsigned x) const { return rows->zero(at[x]); }
+    [[nodiscard]] constexpr bool parallel(unsigned x, unsigned y) const { return rows->parallel(at[x], at[y]); }
+    template <class L>
+    [[nodiscard]] constexpr auto normal(L l, unsigned x) const { return rows->normal(l, at[x]); }
+    template <class L>
+    [[nodiscard]] constexpr auto offset(L l, unsigned x) const { return rows->offset(l, at[x]); }
+    template <class K, class Det>
+        requires requires(const Rows& r, K& k, const Det& det) { r.triple_sign(k, 0u, 1u, 2u, det); }
+    [[nodiscard]] constexpr sign triple_sign(K& k, unsigned i, unsigned j, unsigned l, const Det& det) const {
+        return rows->triple_sign(k, at[i], at[j], at[l], det);
+    }
+};
+
+// A vertex of the set of the rows, or that there is none: at run time the guess of lp::guess_of
+// first (a vertex inside every row, or rows with no common point among which three are
+// independent, both proven with the kernel's signs), then every triple in turn. Any vertex found
+// is one of the set's; found false with independent true: the set is empty.
+template <class K, class Rows>
+[[nodiscard]] constexpr row_vertex first_row_vertex(K& k, const Rows& rows) {
+    if (!__builtin_is_constant_evaluated()) {
+        const lp::guess g = lp::guess_of(rows);
+        if (g.vertex) {
+            if (const row_vertex v = vertex_of_rows(k, rows, g.r[0], g.r[1], g.r[2]); v.found) return v;
+            // more than three rows through the vertex (a k-DOP's corner), where the three the guess
+            // ended on may be dependent: the triples of the rows through it, to rounding
+            auto mag = [](double v) { return v < 0.0 ? -v : v; };
+            std::array<unsigned, 8> through{};
+            unsigned m = 0;
+            for (unsigned x = 0; x < rows.size() && m < through.size(); ++x) {
+                if (rows.zero(x)) continue;
+                const auto n = rows.normal(arith::lift_double{}, x);
+                const double c = rows.offset(arith::lift_double{}, x);
+                const double gap = n.x * g.x[0] + n.y * g.x[1] + n.z * g.x[2] - c;
+                const double scale = mag(n.x * g.x[0]) + mag(n.y * g.x[1]) + mag(n.z * g.x[2]) + mag(c);
+                if (mag(gap) <= 0x1p-30 * scale) through[m++] = x;
+            }
+            for (unsigned a = 0; a < m; ++a)
+                for (unsigned b = a + 1; b < m; ++b)
+                    for (unsigned c = b + 1; c < m; ++c)
+                        if (const row_vertex v = vertex_of_rows(k, rows, through[a], through[b], through[c]); v.found) return v;
+        } else if (g.n > 0) {
+            const row_vertex v = search_row_vertex(k, picked_rows<Rows>{&rows, g.r, g.n});
+            if (!v.found && v.independent) return v;
+        }
+    }
+    return search_row_vertex(k, rows);
 }
 template <class K>
 [[nodiscard]] constexpr set_vertex first_vertex(K& k, const plane3* rows, unsigned total) {

@@ -109,16 +109,27 @@ template <class K>
     constexpr int capacity = convex_polyhedron3::capacity;
     if (!well_formed(planes, m, capacity) || !finite(p.normal) || !finite(p.offset)) return false;
     // First the set's vertices least and greatest along the normal, guessed in double and proven
-    // with signs: they decide most cases without the enumeration below (which meets the near-zero
-    // signs of a camera frustum's side planes, nearly concurrent at the eye).
-    const vertex_guesses g = vertices_guess(planes, m);
+    // with signs: they decide most cases without the enumeration of feasible() (which meets the
+    // near-zero signs of a camera frustum's side planes, nearly concurrent at the eye). The guess:
+    // a linear program each (lp::guess_of), or for up to eight planes (a frustum, a box) every
+    // triple in double, which measured cheaper there (and in constant evaluation).
     std::array<int, 3> least{-1, -1, -1}, greatest{-1, -1, -1};
-    double lo = 0, hi = 0;
-    for (int v = 0; v < g.n; ++v) {
-        const auto u = static_cast<unsigned>(v);
-        const double t = dot(p.normal, g.at[u] - point3{0, 0, 0});
-        if (least[0] < 0 || t < lo) least = g.triple[u], lo = t;
-        if (greatest[0] < 0 || t > hi) greatest = g.triple[u], hi = t;
+    if (!__builtin_is_constant_evaluated() && m > 8) {
+        const plane_rows view{planes, static_cast<unsigned>(m)};
+        auto triple = [](const lp::guess& g) {
+            return g.vertex ? std::array<int, 3>{static_cast<int>(g.r[0]), static_cast<int>(g.r[1]), static_cast<int>(g.r[2])} : std::array<int, 3>{-1, -1, -1};
+        };
+        least = triple(lp::guess_of(view, {p.normal.x, p.normal.y, p.normal.z}));
+        greatest = triple(lp::guess_of(view, {-p.normal.x, -p.normal.y, -p.normal.z}));
+    } else {
+        const vertex_guesses g = vertices_guess(planes, m);
+        double lo = 0, hi = 0;
+        for (int v = 0; v < g.n; ++v) {
+            const auto u = static_cast<unsigned>(v);
+            const double t = dot(p.normal, g.at[u] - point3{0, 0, 0});
+            if (least[0] < 0 || t < lo) least = g.triple[u], lo = t;
+            if (greatest[0] < 0 || t > hi) greatest = g.triple[u], hi = t;
+        }
     }
     const int upper = side_at_vertex(k, planes, m, greatest, p.normal, p.offset); // a point with n . x >= c?
     if (upper == 0) return false;
