@@ -9,11 +9,14 @@
 // bounded, so when it is not empty it has a vertex: three of the planes, with independent normals,
 // meet at a point v = V / D inside every half-space, where D = det(n_i, n_j, n_k) and
 // V = c_i n_j x n_k + c_j n_k x n_i + c_k n_i x n_j; n_l . v <= c_l iff sign(c_l D - n_l . V) is
-// zero or sign(D). The test tries every triple: homogeneous signs of degree 4, no division.
+// zero or sign(D). The test tries every triple: homogeneous signs of degree 4, no division. At run
+// time a guess comes first: a linear program in plain double names a vertex, or at most four rows
+// with no common point, which the same signs then prove or refute (polyq::first_row_vertex).
 // First, a polyhedron plane with the whole box beyond it (the corner least along n_i outside, a
 // sign of degree 2) says no.
 // Source: vertex enumeration for LP feasibility (Schrijver, Theory of Linear and Integer
-// Programming, 1986, section 8.5: a nonempty pointed polyhedron has a vertex).
+// Programming, 1986, section 8.5: a nonempty pointed polyhedron has a vertex); the guess, Seidel,
+// "Small-dimensional linear programming and convex hulls made easy", Discrete Comput. Geom. 6, 1991.
 // Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
 // magnitudes lie in [2^-500, 2^500], wrong only when a deciding sign is within 2^-40 of its
 // permanent (tests/query/aabb_convex_polyhedron.cpp).
