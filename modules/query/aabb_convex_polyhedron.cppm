@@ -11,7 +11,8 @@
 // V = c_i n_j x n_k + c_j n_k x n_i + c_k n_i x n_j; n_l . v <= c_l iff sign(c_l D - n_l . V) is
 // zero or sign(D). The test tries every triple: homogeneous signs of degree 4, no division. At run
 // time a guess comes first: a linear program in plain double names a vertex, or at most four rows
-// with no common point, which the same signs then prove or refute (polyq::first_row_vertex).
+// with no common point, which the same signs then prove or refute (polyq::first_row_vertex; rows
+// with no three independent normals by their lines or planes, polyq::low_rank_empty).
 // First, a polyhedron plane with the whole box beyond it (the corner least along n_i outside, a
 // sign of degree 2) says no.
 // Source: vertex enumeration for LP feasibility (Schrijver, Theory of Linear and Integer
@@ -310,6 +311,56 @@ struct picked_rows {
     }
 };
 
+// Is the set of the rows empty, when no three of their normals are independent? Its minimal faces
+// are then the lines where two planes with independent normals meet, or the planes themselves when
+// every normal is parallel to one (Schrijver 1986, section 8.5): empty iff none lies in every row.
+// The line of rows i and j is V / D with w = n_i x n_j, V = c_i n_j x w + c_j w x n_i, D = w . w > 0;
+// the plane of row i is V / D with V = c_i n_i, D = n_i . n_i. Signs of degree 5 and 3 for plane3
+// rows. false: not empty, or all normals zero.
+template <class K, class Rows>
+[[nodiscard]] constexpr bool low_rank_empty(K& k, const Rows& rows) {
+    const unsigned total = rows.size();
+    bool pair = false;
+    for (unsigned i = 0; i < total; ++i) {
+        if (rows.zero(i)) continue;
+        for (unsigned j = i + 1; j < total; ++j) {
+            if (rows.zero(j) || rows.parallel(i, j)) continue;
+            auto w = [=](auto L) { return arith::cross(rows.normal(L, i), rows.normal(L, j)); };
+            if (settled(k, [=](auto L) { return w(L).x; }) == sign::zero && settled(k, [=](auto L) { return w(L).y; }) == sign::zero &&
+                settled(k, [=](auto L) { return w(L).z; }) == sign::zero)
+                continue;
+            pair = true;
+            bool inside = true;
+            for (unsigned r = 0; r < total && inside; ++r) {
+                if (r == i || r == j) continue;
+                inside = k.sgn([=](auto L) {
+                    const auto wv = w(L);
+                    const auto nh = rows.normal(L, r);
+                    return rows.offset(L, r) * arith::dot(wv, wv) -
+                           (rows.offset(L, i) * arith::det3(nh, rows.normal(L, j), wv) + rows.offset(L, j) * arith::det3(nh, wv, rows.normal(L, i)));
+                }) != sign::negative;
+            }
+            if (inside) return false;
+        }
+    }
+    if (pair) return true;
+    bool any = false;
+    for (unsigned i = 0; i < total; ++i) {
+        if (rows.zero(i)) continue;
+        any = true;
+        bool inside = true;
+        for (unsigned r = 0; r < total && inside; ++r) {
+            if (r == i) continue;
+            inside = k.sgn([=](auto L) {
+                const auto ni = rows.normal(L, i);
+                return rows.offset(L, r) * arith::dot(ni, ni) - rows.offset(L, i) * arith::dot(rows.normal(L, r), ni);
+            }) != sign::negative;
+        }
+        if (inside) return false;
+    }
+    return any;
+}
+
 // A vertex of the set of the rows, or that there is none: at run time the guess of lp::guess_of
 // first (a vertex inside every row, or rows with no common point among which three are
 // independent, both proven with the kernel's signs), then every triple in turn. Any vertex found
@@ -338,8 +389,15 @@ template <class K, class Rows>
                     for (unsigned c = b + 1; c < m; ++c)
                         if (const row_vertex v = vertex_of_rows(k, rows, through[a], through[b], through[c]); v.found) return v;
         } else if (g.n > 0) {
-            const row_vertex v = search_row_vertex(k, picked_rows<Rows>{&rows, g.r, g.n});
+            const picked_rows<Rows> picked{&rows, g.r, g.n};
+            row_vertex v = search_row_vertex(k, picked);
             if (!v.found && v.independent) return v;
+            // no three of them independent (two parallel planes facing apart, three normals in
+            // one plane): their lines or planes
+            if (!v.found && low_rank_empty(k, picked)) {
+                v.independent = true;
+                return v;
+            }
         }
     }
     return search_row_vertex(k, rows);
@@ -362,62 +420,15 @@ template <class K>
 // 3 (planes).
 template <class K>
 [[nodiscard]] constexpr bool feasible(K& k, const plane3* rows, unsigned total) {
-    auto zero = [rows](unsigned x) { return zero_normal(rows, x); };
-    auto parallel = [rows](unsigned x, unsigned y) { return parallel_normals(rows, x, y); };
     // a zero normal is all of space (offset >= 0) or nothing: a comparison
     for (unsigned i = 0; i < total; ++i)
-        if (zero(i) && rows[i].offset < 0) return false;
+        if (zero_normal(rows, i) && rows[i].offset < 0) return false;
     // r = 3: the vertices
     const set_vertex v = first_vertex(k, rows, total);
     if (v.found) return true;
-    bool independent = v.independent; // some candidate of the current rank was found
-    if (independent) return false;
-    // r = 2: every normal is orthogonal to w = n_i x n_j (nonzero), and the line n_i . x = c_i,
-    // n_j . x = c_j is V / D with V = c_i n_j x w + c_j w x n_i and D = w . w > 0
-    for (unsigned i = 0; i < total; ++i) {
-        if (zero(i)) continue;
-        for (unsigned j = i + 1; j < total; ++j) {
-            if (zero(j) || parallel(i, j)) continue;
-            const vec3 a = rows[i].normal, c = rows[j].normal;
-            const double ca = rows[i].offset, cc = rows[j].offset;
-            const sign w[3] = {settled(k, [=](auto L) { return arith::cross(arith::lift(L, a), arith::lift(L, c)).x; }),
-                               settled(k, [=](auto L) { return arith::cross(arith::lift(L, a), arith::lift(L, c)).y; }),
-                               settled(k, [=](auto L) { return arith::cross(arith::lift(L, a), arith::lift(L, c)).z; })};
-            if (w[0] == sign::zero && w[1] == sign::zero && w[2] == sign::zero) continue; // parallel
-            independent = true;
-            bool line_inside = true;
-            for (unsigned r = 0; r < total && line_inside; ++r) {
-                if (r == i || r == j) continue;
-                const plane3 h = rows[r];
-                line_inside = k.sgn([=](auto L) {
-                    const auto na = arith::lift(L, a), nc = arith::lift(L, c), nh = arith::lift(L, h.normal);
-                    const auto wv = arith::cross(na, nc);
-                    return L(h.offset) * arith::dot(wv, wv) - (L(ca) * arith::det3(nh, nc, wv) + L(cc) * arith::det3(nh, wv, na));
-                }) != sign::negative;
-            }
-            if (line_inside) return true;
-        }
-    }
-    if (independent) return false;
-    // r = 1: the plane n_i . x = c_i is V / D with V = c_i n_i and D = n_i . n_i > 0
-    bool any = false;
-    for (unsigned i = 0; i < total; ++i) {
-        if (zero(i)) continue;
-        any = true;
-        const vec3 a = rows[i].normal;
-        const double ca = rows[i].offset;
-        bool plane_inside = true;
-        for (unsigned r = 0; r < total && plane_inside; ++r) {
-            if (r == i) continue;
-            const plane3 h = rows[r];
-            plane_inside = k.sgn([=](auto L) {
-                const auto na = arith::lift(L, a), nh = arith::lift(L, h.normal);
-                return L(h.offset) * arith::dot(na, na) - L(ca) * arith::dot(nh, na);
-            }) != sign::negative;
-        }
-        if (plane_inside) return true;
-    }
-    return !any; // r = 0: only zero normals, all of space
+    if (v.independent) return false; // some three normals independent, and no vertex
+    // r = 2 (the lines where two planes meet), r = 1 (the planes), r = 0 (all of space)
+    return !low_rank_empty(k, plane_rows{rows, total});
 }
 
 // Does the box meet the m half-spaces n_i . x <= c_i (m <= convex_polyhedron3::capacity)?

@@ -4,12 +4,14 @@
 // unbounded; a non-finite number or a count outside [0, capacity]: no set). Touching at a vertex,
 // an edge or a face counts.
 // Method (exact tiers): the two sets meet iff the half-spaces of both together are feasible.
-// First, a face of either set with the other set wholly beyond it says no: the other set's vertex
-// least along the face normal, guessed in double, short of the face, with its three planes'
-// multipliers for the normal all positive (a Farkas certificate), signs of degree <= 4. Then a
-// point strictly inside both says yes: the mean of the vertices of each set that lie in the other,
-// guessed in double and proven with signs of degree 2. Otherwise the exact feasibility test of
-// all the half-spaces together (polyq::feasible in aabb_convex_polyhedron.cppm: the minimal faces
+// At run time, with more than twelve planes in all, the exact feasibility test of all the
+// half-spaces together at once (its linear program's guess first). Otherwise first, a face of
+// either set with the other set wholly beyond it says no: the other set's vertex least along the
+// face normal, guessed in double, short of the face, with its three planes' multipliers for the
+// normal all positive (a Farkas certificate), signs of degree <= 4. Then a point strictly inside
+// both says yes: the mean of the vertices of each set that lie in the other, guessed in double and
+// proven with signs of degree 2. Otherwise the exact feasibility test of all the half-spaces
+// together (polyq::feasible in aabb_convex_polyhedron.cppm: the minimal faces
 // by the rank of the normals, signs of degree <= 5).
 // Source: Schrijver, Theory of Linear and Integer Programming, 1986, sections 7.3 (Farkas) and 8.5
 // (minimal faces).
@@ -50,11 +52,19 @@ template <class K>
     return false;
 }
 
+// Above this many planes in all, sets_meet goes to feasible() at once: its linear program's guess
+// measured cheaper than every triple of each set, except for two frustums (6 + 6).
+inline constexpr int guess_all_above = 12;
 // Do the half-space sets a (ma planes) and b (mb planes) meet? ma, mb <= convex_polyhedron3::capacity.
 template <class K>
 [[nodiscard]] constexpr bool sets_meet(K& k, const plane3* a, int ma, const plane3* b, int mb) {
     constexpr int capacity = convex_polyhedron3::capacity;
     if (!well_formed(a, ma, capacity) || !well_formed(b, mb, capacity)) return false;
+    std::array<plane3, 2 * capacity> rows{};
+    for (int i = 0; i < ma; ++i) rows[static_cast<unsigned>(i)] = a[i];
+    for (int i = 0; i < mb; ++i) rows[static_cast<unsigned>(ma + i)] = b[i];
+    // at run time, many planes: the linear program's guess in feasible() first
+    if (!__builtin_is_constant_evaluated() && ma + mb > guess_all_above) return feasible(k, rows.data(), static_cast<unsigned>(ma + mb));
     const vertex_guesses va = vertices_guess(a, ma), vb = vertices_guess(b, mb);
     if (face_separates(k, a, ma, b, mb, vb) || face_separates(k, b, mb, a, ma, va)) return false;
     // a point strictly inside both: the mean of the vertices of each set that look inside the other
@@ -87,9 +97,6 @@ template <class K>
         strictly_in(b, mb);
         if (strictly) return true;
     }
-    std::array<plane3, 2 * capacity> rows{};
-    for (int i = 0; i < ma; ++i) rows[static_cast<unsigned>(i)] = a[i];
-    for (int i = 0; i < mb; ++i) rows[static_cast<unsigned>(ma + i)] = b[i];
     return feasible(k, rows.data(), static_cast<unsigned>(ma + mb));
 }
 
