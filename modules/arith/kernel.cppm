@@ -371,6 +371,18 @@ struct filter_kernel {
     // filter cannot prove it, and the query's certainty is untouched.
     template <class F>
     [[nodiscard, gnu::always_inline]] constexpr sign probe(const F& f) { return to_sign(proven_sign(f(lift_filter{}))); }
+    // The filter, then the whole exact fallback in place (decided): for a sign that is often
+    // exactly zero where the cheap stages cannot settle it, and whose failure would send the whole
+    // query to the exact kernel's run, which would compute the same exact sign again.
+    template <class F>
+    [[nodiscard, gnu::always_inline]] constexpr sign decided_sgn(const F& f) {
+        const auto v = f(lift_filter{});
+        if (const int s = proven_sign(v); s != 0) return to_sign(s);
+        bool valid = true;
+        const sign s = exact_sign_fallback(f, valid, in_trusted_range(v), v.v == 0.0);
+        if (!valid) unproven = 0.0; // a non-finite input: the exact kernel's run reports it
+        return s;
+    }
 };
 
 // Whether a query body is in a filter pass at run time (a kernel derived from filter_kernel,
@@ -545,6 +557,20 @@ template <class K, class F>
         const sign s = probe(k, f);
         if (s != sign::zero) return s;
         return k.sgn(f);
+    }
+}
+
+// The exact sign of a polynomial that is often exactly zero at a point that decides the query
+// (a fourth plane through a guessed vertex: a k-DOP's corner, where several of its planes meet a
+// data point), in every kernel: the filter kernels compute it in place (filter_kernel::decided_sgn)
+// rather than fail their pass, after which the exact kernel's run of the whole query would
+// compute it again among every other sign.
+template <class K, class F>
+[[nodiscard, gnu::always_inline]] constexpr sign decided(K& k, const F& f) {
+    if constexpr (__is_base_of(filter_kernel, K)) {
+        return k.decided_sgn(f);
+    } else {
+        return settled(k, f);
     }
 }
 

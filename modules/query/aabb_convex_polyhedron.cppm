@@ -10,9 +10,10 @@
 // meet at a point v = V / D inside every half-space, where D = det(n_i, n_j, n_k) and
 // V = c_i n_j x n_k + c_j n_k x n_i + c_k n_i x n_j; n_l . v <= c_l iff sign(c_l D - n_l . V) is
 // zero or sign(D). The test tries every triple: homogeneous signs of degree 4, no division. At run
-// time a guess comes first: a linear program in plain double names a vertex, or at most four rows
+// time guesses come first: a linear program in plain double names a vertex, or at most four rows
 // with no common point, which the same signs then prove or refute (polyq::first_row_vertex; rows
-// with no three independent normals by their lines or planes, polyq::low_rank_empty).
+// with no three independent normals by their lines or planes, polyq::low_rank_empty); up to three
+// programs, each along its own direction with the rows in its own order (polyq::guess_paths).
 // First, a polyhedron plane with the whole box beyond it (the corner least along n_i outside, a
 // sign of degree 2) says no.
 // Source: vertex enumeration for LP feasibility (Schrijver, Theory of Linear and Integer
@@ -24,8 +25,8 @@
 module;
 #include <array>
 #include <cstdint>
-#include <tuple>
 #include <type_traits>
+#include <utility>
 export module incidence.query:aabb_convex_polyhedron;
 import incidence.core;
 import incidence.arith;
@@ -105,32 +106,48 @@ template <class K, class Rows>
     else d = settled(k, det);
     if (d == sign::zero) return found; // no single point
     found.independent = true;
-    // the three cross products and D, lifted once into the filter for every row's condition (the
-    // same values each condition would lift again)
-    auto crosses = [=](auto L) {
+    // V and D, lifted once into the filter for every row's condition (the same values each
+    // condition would lift again)
+    auto vertex = [=](auto L) {
         const auto na = rows.normal(L, i), nc = rows.normal(L, j), ne = rows.normal(L, l);
-        const auto x = arith::cross(nc, ne);
-        return std::tuple{x, arith::cross(ne, na), arith::cross(na, nc), arith::dot(na, x)};
+        const auto ca = rows.offset(L, i), cc = rows.offset(L, j), ce = rows.offset(L, l);
+        const auto x = arith::cross(nc, ne), y = arith::cross(ne, na), z = arith::cross(na, nc);
+        using T = decltype(ca * x.x + cc * y.x + ce * z.x);
+        return std::pair{arith::v3<T>{ca * x.x + cc * y.x + ce * z.x, ca * x.y + cc * y.y + ce * z.y, ca * x.z + cc * y.z + ce * z.z},
+                         arith::dot(na, x)};
     };
-    const arith::lifted_once<K, decltype(crosses)> cl{crosses};
-    auto beyond = [=, &cl](unsigned r) { // c_h D - n_h . V, V = c_i n_j x n_l + c_j n_l x n_i + c_l n_i x n_j
-        return [=, &cl](auto L) {
-            const auto& [x, y, z, D] = cl(L);
-            const auto nh = rows.normal(L, r);
-            return rows.offset(L, r) * D - (rows.offset(L, i) * arith::dot(nh, x) + rows.offset(L, j) * arith::dot(nh, y) + rows.offset(L, l) * arith::dot(nh, z));
+    const arith::lifted_once<K, decltype(vertex)> vl{vertex};
+    auto beyond = [=, &vl](unsigned r) { // c_h D - n_h . V
+        return [=, &vl](auto L) {
+            if constexpr (arith::lifts_filter<K>()) {
+                const auto& [V, D] = vl(L);
+                return rows.offset(L, r) * D - arith::dot(rows.normal(L, r), V);
+            } else {
+                (void)vl;
+                const auto na = rows.normal(L, i), nc = rows.normal(L, j), ne = rows.normal(L, l), nh = rows.normal(L, r);
+                const auto x = arith::cross(nc, ne);
+                return rows.offset(L, r) * arith::dot(na, x) -
+                       (rows.offset(L, i) * arith::dot(nh, x) + rows.offset(L, j) * arith::dot(nh, arith::cross(ne, na)) +
+                        rows.offset(L, l) * arith::dot(nh, arith::cross(na, nc)));
+            }
         };
     };
-    // a row the filter proves the vertex outside of rejects it before any sign is decided (a zero
-    // sign elsewhere, such as a fourth plane through the same point, would otherwise end the
-    // filter's run)
+    // each row's sign by the filter once: a row it proves the vertex outside of rejects it before
+    // any sign is decided (a zero sign elsewhere, such as a fourth plane through the same point,
+    // would otherwise end the filter's run); the rows it cannot prove are decided after
     const unsigned total = rows.size();
-    for (unsigned r = 0; r < total; ++r)
-        if (r != i && r != j && r != l && arith::probe(k, beyond(r)) == -d) return found;
+    std::uint64_t open[2] = {0, 0}; // rows 0 to 127 the filter left open (rows beyond: always decided)
     for (unsigned r = 0; r < total; ++r) {
         if (r == i || r == j || r == l) continue;
-        // settled: a fourth plane through the vertex, or an ulp off it (a k-DOP's rounded-out
-        // offsets), is common, and the cheap exact stages decide it
-        const sign s = settled(k, beyond(r));
+        const sign s = arith::probe(k, beyond(r));
+        if (s == -d) return found;
+        if (s == sign::zero && r < 128) open[r / 64] |= std::uint64_t{1} << (r % 64);
+    }
+    for (unsigned r = 0; r < total; ++r) {
+        if (r == i || r == j || r == l || (r < 128 && (open[r / 64] >> (r % 64) & 1) == 0)) continue;
+        // decided: a fourth plane through the vertex, or an ulp off it (a k-DOP's rounded-out
+        // offsets), is common; an exact zero the cheap stages cannot settle is computed in place
+        const sign s = arith::decided(k, beyond(r));
         if (s != sign::zero && s != d) return found;
     }
     found.found = true;
@@ -256,9 +273,10 @@ struct guess {
     std::array<double, 3> x{}; // the vertex
 };
 inline constexpr std::array<double, 3> generic_direction{1.0, 0x1.6a09e667f3bcdp-1, 0x1.279a74590331cp-2};
-// f: the direction to minimise along
+// f: the direction to minimise along; seed: the order the rows are taken in
+inline constexpr std::uint64_t first_seed = 0x9e3779b97f4a7c15u;
 template <class Rows>
-[[nodiscard]] constexpr guess guess_of(const Rows& rows, const std::array<double, 3>& f = generic_direction) {
+[[nodiscard]] constexpr guess guess_of(const Rows& rows, const std::array<double, 3>& f = generic_direction, std::uint64_t seed = first_seed) {
     const unsigned total = rows.size();
     if (total > max_rows) return {};
     std::array<row<3>, max_rows> in;
@@ -269,7 +287,7 @@ template <class Rows>
         in[n++] = row<3>{{v.x, v.y, v.z}, rows.offset(arith::lift_double{}, x), x};
     }
     // a fixed shuffle (xorshift), the same on every call: the expected linear time of a random order
-    std::uint64_t s = 0x9e3779b97f4a7c15u;
+    std::uint64_t s = seed;
     for (unsigned i = n; i > 1; --i) {
         s ^= s << 13, s ^= s >> 7, s ^= s << 17;
         const auto j = static_cast<unsigned>(s % i);
@@ -316,7 +334,8 @@ struct picked_rows {
 // every normal is parallel to one (Schrijver 1986, section 8.5): empty iff none lies in every row.
 // The line of rows i and j is V / D with w = n_i x n_j, V = c_i n_j x w + c_j w x n_i, D = w . w > 0;
 // the plane of row i is V / D with V = c_i n_i, D = n_i . n_i. Signs of degree 5 and 3 for plane3
-// rows. false: not empty, or all normals zero.
+// rows, decided in place (arith::decided: a guessed subset's line often lies on its third plane,
+// to rounding). false: not empty, or all normals zero.
 template <class K, class Rows>
 [[nodiscard]] constexpr bool low_rank_empty(K& k, const Rows& rows) {
     const unsigned total = rows.size();
@@ -333,7 +352,7 @@ template <class K, class Rows>
             bool inside = true;
             for (unsigned r = 0; r < total && inside; ++r) {
                 if (r == i || r == j) continue;
-                inside = k.sgn([=](auto L) {
+                inside = arith::decided(k, [=](auto L) {
                     const auto wv = w(L);
                     const auto nh = rows.normal(L, r);
                     return rows.offset(L, r) * arith::dot(wv, wv) -
@@ -351,7 +370,7 @@ template <class K, class Rows>
         bool inside = true;
         for (unsigned r = 0; r < total && inside; ++r) {
             if (r == i) continue;
-            inside = k.sgn([=](auto L) {
+            inside = arith::decided(k, [=](auto L) {
                 const auto ni = rows.normal(L, i);
                 return rows.offset(L, r) * arith::dot(ni, ni) - rows.offset(L, i) * arith::dot(rows.normal(L, r), ni);
             }) != sign::negative;
@@ -361,45 +380,70 @@ template <class K, class Rows>
     return any;
 }
 
-// A vertex of the set of the rows, or that there is none: at run time the guess of lp::guess_of
-// first (a vertex inside every row, or rows with no common point among which three are
-// independent, both proven with the kernel's signs), then every triple in turn. Any vertex found
-// is one of the set's; found false with independent true: the set is empty.
+// The guesses in turn, each minimising along its own direction with the rows in its own order: the
+// rounded program can name rows that do meet (three k-DOP planes with dependent normals, such as
+// (1, 0, 0), (0, 1, 1) and (1, 1, 1)) or a vertex the signs refute, and another direction and
+// order take another path through the rows; the full search of every triple comes only after.
+struct guess_path {
+    std::array<double, 3> f;
+    std::uint64_t seed;
+};
+inline constexpr std::array<guess_path, 3> guess_paths{
+    guess_path{lp::generic_direction, lp::first_seed},
+    guess_path{{-0x1.279a74590331cp-2, 1.0, -0x1.6a09e667f3bcdp-1}, 0xd1b54a32d192ed03u},
+    guess_path{{0x1.6a09e667f3bcdp-1, -0x1.279a74590331cp-2, -1.0}, 0x8cb92ba72f3d8dd7u},
+};
+// The guess of lp::guess_of along one path, proven with the kernel's signs: a vertex inside every row
+// (the three rows the guess ended on, or three of the rows through its point, to rounding), or
+// rows with no common point (their triples, or their lines or planes when no three are
+// independent). true when proven, with the answer in v. A program that ended on its box (no
+// guess) is tried along the other paths as well: in near-degenerate bounded sets a rounded
+// program ends there too, and stopping at it measured 13 to 34% slower on frustum_kdop_26 and
+// convex_polyhedron_kdop_26 for 0 to 4% gained on convex_polyhedron_plane.
 template <class K, class Rows>
-[[nodiscard]] constexpr row_vertex first_row_vertex(K& k, const Rows& rows) {
-    if (!__builtin_is_constant_evaluated()) {
-        const lp::guess g = lp::guess_of(rows);
-        if (g.vertex) {
-            if (const row_vertex v = vertex_of_rows(k, rows, g.r[0], g.r[1], g.r[2]); v.found) return v;
-            // more than three rows through the vertex (a k-DOP's corner), where the three the guess
-            // ended on may be dependent: the triples of the rows through it, to rounding
-            auto mag = [](double v) { return v < 0.0 ? -v : v; };
-            std::array<unsigned, 8> through{};
-            unsigned m = 0;
-            for (unsigned x = 0; x < rows.size() && m < through.size(); ++x) {
-                if (rows.zero(x)) continue;
-                const auto n = rows.normal(arith::lift_double{}, x);
-                const double c = rows.offset(arith::lift_double{}, x);
-                const double gap = n.x * g.x[0] + n.y * g.x[1] + n.z * g.x[2] - c;
-                const double scale = mag(n.x * g.x[0]) + mag(n.y * g.x[1]) + mag(n.z * g.x[2]) + mag(c);
-                if (mag(gap) <= 0x1p-30 * scale) through[m++] = x;
-            }
-            for (unsigned a = 0; a < m; ++a)
-                for (unsigned b = a + 1; b < m; ++b)
-                    for (unsigned c = b + 1; c < m; ++c)
-                        if (const row_vertex v = vertex_of_rows(k, rows, through[a], through[b], through[c]); v.found) return v;
-        } else if (g.n > 0) {
-            const picked_rows<Rows> picked{&rows, g.r, g.n};
-            row_vertex v = search_row_vertex(k, picked);
-            if (!v.found && v.independent) return v;
-            // no three of them independent (two parallel planes facing apart, three normals in
-            // one plane): their lines or planes
-            if (!v.found && low_rank_empty(k, picked)) {
-                v.independent = true;
-                return v;
-            }
+[[nodiscard]] constexpr bool proven_guess(K& k, const Rows& rows, const guess_path& path, row_vertex& v) {
+    const lp::guess g = lp::guess_of(rows, path.f, path.seed);
+    if (!g.vertex && g.n == 0) return false;
+    if (g.vertex) {
+        if (v = vertex_of_rows(k, rows, g.r[0], g.r[1], g.r[2]); v.found) return true;
+        // more than three rows through the vertex (a k-DOP's corner), where the three the guess
+        // ended on may be dependent: the triples of the rows through it, to rounding
+        auto mag = [](double x) { return x < 0.0 ? -x : x; };
+        std::array<unsigned, 8> through{};
+        unsigned m = 0;
+        for (unsigned x = 0; x < rows.size() && m < through.size(); ++x) {
+            if (rows.zero(x)) continue;
+            const auto n = rows.normal(arith::lift_double{}, x);
+            const double c = rows.offset(arith::lift_double{}, x);
+            const double gap = n.x * g.x[0] + n.y * g.x[1] + n.z * g.x[2] - c;
+            const double scale = mag(n.x * g.x[0]) + mag(n.y * g.x[1]) + mag(n.z * g.x[2]) + mag(c);
+            if (mag(gap) <= 0x1p-30 * scale) through[m++] = x;
+        }
+        for (unsigned a = 0; a < m; ++a)
+            for (unsigned b = a + 1; b < m; ++b)
+                for (unsigned c = b + 1; c < m; ++c)
+                    if (v = vertex_of_rows(k, rows, through[a], through[b], through[c]); v.found) return true;
+    } else {
+        const picked_rows<Rows> picked{&rows, g.r, g.n};
+        v = search_row_vertex(k, picked);
+        if (!v.found && v.independent) return true;
+        // no three of them independent (two parallel planes facing apart, three normals in
+        // one plane): their lines or planes
+        if (!v.found && low_rank_empty(k, picked)) {
+            v.independent = true;
+            return true;
         }
     }
+    return false;
+}
+// A vertex of the set of the rows, or that there is none: at run time the guesses of
+// proven_guess first, then every triple in turn. Any vertex found is one of the set's; found
+// false with independent true: the set is empty.
+template <class K, class Rows>
+[[nodiscard]] constexpr row_vertex first_row_vertex(K& k, const Rows& rows) {
+    if (!__builtin_is_constant_evaluated())
+        for (const guess_path& path : guess_paths)
+            if (row_vertex v; proven_guess(k, rows, path, v)) return v;
     return search_row_vertex(k, rows);
 }
 template <class K>
