@@ -55,9 +55,10 @@ using arith::settled;
 
 // The rows a vertex search reads: row x is the half-space normal(L, x) . v <= offset(L, x), with
 // zero(x) and parallel(x, y) known without a sign; rows may say the sign of the determinant of
-// three normals themselves (triple_sign(k, i, j, l, det), det its lifted expression). plane_rows
-// reads plane3 values as they are; frame_rows (convex_polyhedron_obb.cppm) reads a set in a box's
-// own coordinates.
+// three normals themselves (triple_sign(k, i, j, l, det), det its lifted expression) and the
+// decided sign of a fourth row at their vertex (beyond_sign(k, i, j, l, h, f), f its expression).
+// plane_rows reads plane3 values as they are; frame_rows (convex_polyhedron_obb.cppm) reads a set
+// in a box's own coordinates.
 struct plane_rows {
     const plane3* p;
     unsigned total;
@@ -94,6 +95,16 @@ template <class L>
     using T = decltype(ca * x.x + cc * y.x + ce * z.x);
     return arith::v3<T>{ca * x.x + cc * y.x + ce * z.x, ca * x.y + cc * y.y + ce * z.y, ca * x.z + cc * y.z + ce * z.z};
 }
+// c_h D - n_h . V for rows i, j and l meeting at V / D and a fourth row h, as three dot products
+// with the cross products: the 4 x 4 determinant of the rows (n, c).
+template <class L, class Rows>
+[[nodiscard]] constexpr auto four_rows(L lift, const Rows& rows, unsigned i, unsigned j, unsigned l, unsigned h) {
+    const auto na = rows.normal(lift, i), nc = rows.normal(lift, j), ne = rows.normal(lift, l), nh = rows.normal(lift, h);
+    const auto x = arith::cross(nc, ne);
+    return rows.offset(lift, h) * arith::dot(na, x) -
+           (rows.offset(lift, i) * arith::dot(nh, x) + rows.offset(lift, j) * arith::dot(nh, arith::cross(ne, na)) +
+            rows.offset(lift, l) * arith::dot(nh, arith::cross(na, nc)));
+}
 // Is the point where rows i, j and l meet (independent normals) inside every row? found and
 // independent say so, with d = sign(D); independent alone: they meet at one point, outside.
 template <class K, class Rows>
@@ -124,11 +135,7 @@ template <class K, class Rows>
                 return rows.offset(L, r) * D - arith::dot(rows.normal(L, r), V);
             } else {
                 (void)vl;
-                const auto na = rows.normal(L, i), nc = rows.normal(L, j), ne = rows.normal(L, l), nh = rows.normal(L, r);
-                const auto x = arith::cross(nc, ne);
-                return rows.offset(L, r) * arith::dot(na, x) -
-                       (rows.offset(L, i) * arith::dot(nh, x) + rows.offset(L, j) * arith::dot(nh, arith::cross(ne, na)) +
-                        rows.offset(L, l) * arith::dot(nh, arith::cross(na, nc)));
+                return four_rows(L, rows, i, j, l, r);
             }
         };
     };
@@ -147,7 +154,10 @@ template <class K, class Rows>
         if (r == i || r == j || r == l || (r < 128 && (open[r / 64] >> (r % 64) & 1) == 0)) continue;
         // decided: a fourth plane through the vertex, or an ulp off it (a k-DOP's rounded-out
         // offsets), is common; an exact zero the cheap stages cannot settle is computed in place
-        const sign s = arith::decided(k, beyond(r));
+        const sign s = [&] {
+            if constexpr (requires { rows.beyond_sign(k, i, j, l, r, beyond(r)); }) return rows.beyond_sign(k, i, j, l, r, beyond(r));
+            else return arith::decided(k, beyond(r));
+        }();
         if (s != sign::zero && s != d) return found;
     }
     found.found = true;

@@ -84,6 +84,19 @@ struct frame_rows {
         const sign n = settled(k, [=](auto L) { return arith::det3(arith::lift(L, a), arith::lift(L, c), arith::lift(L, e)); });
         return axes == sign::positive ? n : axes == sign::negative ? -n : sign::zero;
     }
+    // The decided sign of c_h D - n_h . V (vertex_of_rows) for four planes of the set is sign(det A)
+    // times the same sign on the planes as given: it is the 4 x 4 determinant of the rows, and the
+    // rows in s are (n, d) [[A, -c], [0, 1]], whose determinant is det A. Degree 4 instead of 9, so
+    // a fourth plane exactly through the vertex of three (a k-DOP's corner) is settled by the cheap
+    // exact stages, where the rows in s went to the big integers. In plain double (no filter to
+    // lift): the rows in s, as that tier rounds them.
+    template <class K, class F>
+    [[nodiscard]] constexpr sign beyond_sign(K& k, unsigned i, unsigned j, unsigned l, unsigned h, const F& in_frame) const {
+        if (!arith::lifts_filter<K>() || i < 6 || j < 6 || l < 6 || h < 6) return arith::decided(k, in_frame);
+        const plane_rows w{p, m};
+        const sign s = arith::decided(k, [=](auto L) { return four_rows(L, w, i - 6, j - 6, l - 6, h - 6); });
+        return axes == sign::positive ? s : axes == sign::negative ? -s : sign::zero;
+    }
 };
 
 // d - n . c + t sum_j h_j |n . a_j| (t = +1: the box's farthest point along -n is inside the plane
