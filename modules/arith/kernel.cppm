@@ -376,10 +376,8 @@ struct filter_kernel {
     // query to the exact kernel's run, which would compute the same exact sign again.
     template <class F>
     [[nodiscard, gnu::always_inline]] constexpr sign decided_sgn(const F& f) {
-        const auto v = f(lift_filter{});
-        if (const int s = proven_sign(v); s != 0) return to_sign(s);
         bool valid = true;
-        const sign s = exact_sign_fallback(f, valid, in_trusted_range(v), v.v == 0.0);
+        const sign s = exact_sign(f, valid);
         if (!valid) unproven = 0.0; // a non-finite input: the exact kernel's run reports it
         return s;
     }
