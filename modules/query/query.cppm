@@ -9,7 +9,7 @@
 // Tier is one of exact (the default), conservative, aggressive, approximate.
 //
 // Each pair file ends with `extern template` declarations of its body for arith::exact_kernel
-// (every K of a k-DOP); the build generates their definitions (exact_instances_*.cpp, from those
+// (every K of a k-DOP); the build generates their definitions (exact_instances.cpp, from those
 // lines). The filter and the tiers stay inline in the caller; the exact fallback, the largest
 // code of a query and rarely run, is compiled once in the library, and a file that imports
 // incidence calls it instead of compiling it again (a third of a test file's code). A new pair
