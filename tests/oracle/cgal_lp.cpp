@@ -3,8 +3,8 @@
 // given, never a computed one: a box is c + sum t_i a_i with |t_i| <= h_i, a segment or a
 // triangle the convex combinations of its vertices, a plane n . x = offset, a k-DOP its slabs
 // lo <= n . x <= hi (n the integer directions), a convex polyhedron or a frustum its half-spaces
-// n . x <= offset. Before the LP, a corner certificate decides most cases exactly (rationals) when
-// one set is a polytope given by its corners and the other slabs and half-spaces alone.
+// n . x <= offset. Before the LP, a corner certificate (corners_decide) decides most cases exactly
+// when one set is a polytope given by its corners and the other slabs and half-spaces alone.
 #include "cgal_oracle.hpp"
 #include "cgal_lp_point.hpp"
 
@@ -70,80 +70,79 @@ bool finite(const std::array<double, 3>& x) {
     return std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]);
 }
 
-// The corners of v when v is the hull of its points plus bounded generators (no plane, slabs or
-// half-spaces), as exact rationals; nothing otherwise or when there are more than 64.
-std::optional<std::vector<std::array<mpq_class, 3>>> corners(const convex_set& v) {
-    if (v.plane || !v.slabs.empty() || !v.halfspaces.empty() || v.points.empty() || v.generators.size() > 3)
-        return std::nullopt;
-    for (const auto& g : v.generators)
-        if (!g.has_lo || !g.has_hi || !(g.lo <= g.hi) || !finite(g.g) || !std::isfinite(g.lo) || !std::isfinite(g.hi))
-            return std::nullopt;
-    for (const auto& p : v.points)
-        if (!finite(p)) return std::nullopt;
-    std::vector<std::array<mpq_class, 3>> out;
-    const unsigned combos = 1U << v.generators.size();
-    for (const auto& p : v.points)
-        for (unsigned m = 0; m < combos; ++m) {
-            std::array<mpq_class, 3> c{mpq_class(p[0]), mpq_class(p[1]), mpq_class(p[2])};
-            for (unsigned i = 0; i < v.generators.size(); ++i) {
-                const auto& g = v.generators[i];
-                const mpq_class t((m >> i & 1U) ? g.hi : g.lo);
-                for (unsigned k = 0; k < 3; ++k) c[k] += t * mpq_class(g.g[k]);
-            }
-            out.push_back(c);
+// The sign of n . (p + sum_i t_i g_i) - c, t_i the lower or upper bound of generator i as bit i of
+// `corner` says: in double when rounding cannot reach it, else in rationals. The double sum has at
+// most 13 terms, each a product of at most three doubles: at most 14 roundings on each, under
+// 2^-49 of the sum of the terms' magnitudes, plus under 2^-1068 from last products that underflow.
+// A first product t g_k that underflows (its error would grow with n_k) leaves the sign to rationals.
+int corner_sign(const std::array<double, 3>& n, double c, const std::array<double, 3>& p,
+                const std::vector<convex_set::generator>& gs, unsigned corner) {
+    double s = -c, size = std::fabs(c);
+    bool underflow = false;
+    for (unsigned k = 0; k < 3; ++k) {
+        const double a = n[k] * p[k];
+        s += a, size += std::fabs(a);
+    }
+    for (unsigned i = 0; i < gs.size(); ++i) {
+        const double t = (corner >> i & 1U) ? gs[i].hi : gs[i].lo;
+        for (unsigned k = 0; k < 3; ++k) {
+            const double tg = t * gs[i].g[k], a = tg * n[k];
+            underflow = underflow || (std::fabs(tg) < 0x1p-1022 && t != 0 && gs[i].g[k] != 0);
+            s += a, size += std::fabs(a);
         }
-    return out;
-}
-
-mpq_class dot(const std::array<double, 3>& n, const std::array<mpq_class, 3>& c) {
-    return mpq_class(n[0]) * c[0] + mpq_class(n[1]) * c[1] + mpq_class(n[2]) * c[2];
-}
-
-// A certificate before the LP, when v is a polytope given by its corners and h is slabs and
-// half-spaces alone: a constraint of h that every corner violates strictly (v and h are apart;
-// v is the hull of its corners), or a corner that meets every constraint of h (a common point).
-// Nothing when neither is found (the LP decides).
-std::optional<bool> corner_certificate(const convex_set& v, const convex_set& h) {
-    if (h.plane || !h.points.empty() || !h.generators.empty()) return std::nullopt;
-    for (const auto& sl : h.slabs)
-        if (!finite(sl.n) || !std::isfinite(sl.lo) || !std::isfinite(sl.hi)) return std::nullopt;
-    for (const auto& hs : h.halfspaces)
-        if (!finite(hs.n) || !std::isfinite(hs.offset)) return std::nullopt;
-    const auto cs = corners(v);
-    if (!cs) return std::nullopt;
-    std::vector<mpq_class> d(cs->size());
-    std::vector<bool> inside(cs->size(), true);
-    auto values = [&](const std::array<double, 3>& n) {
-        for (std::size_t i = 0; i < cs->size(); ++i) d[i] = dot(n, (*cs)[i]);
-    };
-    auto all = [&](auto&& pred) {
-        for (const auto& x : d)
-            if (!pred(x)) return false;
-        return true;
-    };
-    for (const auto& sl : h.slabs) {
-        values(sl.n);
-        const mpq_class lo(sl.lo), hi(sl.hi);
-        if (all([&](const mpq_class& x) { return x < lo; }) || all([&](const mpq_class& x) { return x > hi; }))
-            return false;
-        for (std::size_t i = 0; i < d.size(); ++i) inside[i] = inside[i] && lo <= d[i] && d[i] <= hi;
     }
-    for (const auto& hs : h.halfspaces) {
-        values(hs.n);
-        const mpq_class offset(hs.offset);
-        if (all([&](const mpq_class& x) { return x > offset; })) return false;
-        for (std::size_t i = 0; i < d.size(); ++i) inside[i] = inside[i] && d[i] <= offset;
+    if (!underflow && std::isfinite(size) && std::isfinite(s)) {
+        const double reach = size * 0x1p-48 + 0x1p-1060;
+        if (s > reach) return 1;
+        if (s < -reach) return -1;
     }
-    for (const bool in : inside)
-        if (in) return true;
-    return std::nullopt;
+    mpq_class e = -mpq_class(c);
+    for (unsigned k = 0; k < 3; ++k) e += mpq_class(n[k]) * p[k];
+    for (unsigned i = 0; i < gs.size(); ++i) {
+        const mpq_class t((corner >> i & 1U) ? gs[i].hi : gs[i].lo);
+        for (unsigned k = 0; k < 3; ++k) e += t * gs[i].g[k] * n[k];
+    }
+    return sgn(e);
 }
 } // namespace
 
+int corners_decide(const convex_set& x, const convex_set& v) {
+    if (x.plane || !x.points.empty() || !x.generators.empty()) return 0;
+    for (const auto& sl : x.slabs)
+        if (!finite(sl.n) || !std::isfinite(sl.lo) || !std::isfinite(sl.hi)) return 0;
+    for (const auto& hs : x.halfspaces)
+        if (!finite(hs.n) || !std::isfinite(hs.offset)) return 0;
+    if (v.plane || !v.slabs.empty() || !v.halfspaces.empty() || v.points.empty() || v.generators.size() > 3) return 0;
+    for (const auto& g : v.generators)
+        if (!g.has_lo || !g.has_hi || !(g.lo <= g.hi) || !finite(g.g) || !std::isfinite(g.lo) || !std::isfinite(g.hi)) return 0;
+    for (const auto& p : v.points)
+        if (!finite(p)) return 0;
+    const unsigned per_point = 1U << v.generators.size();
+    const std::size_t count = v.points.size() * per_point;
+    std::vector<bool> inside(count, true);
+    // Every corner's sign against the bound c of the row n; false when all lie strictly on `side`.
+    auto not_all_beyond = [&](const std::array<double, 3>& n, double c, int side) {
+        bool some_not = false;
+        for (std::size_t j = 0; j < count; ++j) {
+            const int s = corner_sign(n, c, v.points[j / per_point], v.generators, static_cast<unsigned>(j % per_point));
+            if (s == side) inside[j] = false;
+            else some_not = true;
+        }
+        return some_not;
+    };
+    for (const auto& hs : x.halfspaces)
+        if (!not_all_beyond(hs.n, hs.offset, 1)) return -1;
+    for (const auto& sl : x.slabs)
+        if (!not_all_beyond(sl.n, sl.lo, -1) || !not_all_beyond(sl.n, sl.hi, 1)) return -1;
+    for (const bool in : inside)
+        if (in) return 1;
+    return 0;
+}
+
 std::optional<bool> lp_intersect_verified(const convex_set& a, const convex_set& b) {
-    // Independent of the LP below and exact (rationals): decides most random cases far faster.
-    if (const auto r = corner_certificate(a, b)) return r;
-    if (const auto r = corner_certificate(b, a)) return r;
+    // Independent of the LP below and exact: decides most random cases far faster.
+    if (const int r = corners_decide(b, a)) return r > 0;
+    if (const int r = corners_decide(a, b)) return r > 0;
     program lp(CGAL::EQUAL, false, 0.0, false, 0.0); // free variables unless bounded
     int var = 3, row = 0;
     add(lp, var, row, a);

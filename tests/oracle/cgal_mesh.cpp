@@ -88,40 +88,11 @@ bool mesh_intersect(const mesh_data& m, const flat& x) {
 
 namespace {
 // For x given by its slabs and half-spaces alone: -1 when the three points lie beyond one of its
-// bounds (the triangle misses x), +1 when one of them lies within all (it meets x), else 0;
-// every product exact in rationals.
+// bounds (the triangle misses x), +1 when one of them lies within all (it meets x), else 0.
 int rows_decide(const convex_set& x, const std::array<std::array<double, 3>, 3>& v) {
-    if (x.plane || !x.points.empty() || !x.generators.empty()) return 0;
-    // The sign of n . p - c: in double when the rounding cannot reach it (each term of
-    // n0 p0 + n1 p1 + n2 p2 - c goes through at most 4 roundings, under 2^-51 of the sum of their
-    // magnitudes, plus under 2^-1072 from products that underflow), else in rationals.
-    auto sign_of = [](const std::array<double, 3>& n, const std::array<double, 3>& p, double c) -> int {
-        const double a = n[0] * p[0], b = n[1] * p[1], d = n[2] * p[2];
-        const double s = a + b + d - c, size = std::fabs(a) + std::fabs(b) + std::fabs(d) + std::fabs(c);
-        if (std::isfinite(size)) {
-            const double reach = size * 0x1p-49 + 0x1p-1060;
-            if (s > reach) return 1;
-            if (s < -reach) return -1;
-        }
-        const mpq_class e = mpq_class(n[0]) * p[0] + mpq_class(n[1]) * p[1] + mpq_class(n[2]) * p[2] - c;
-        return sgn(e);
-    };
-    std::array<bool, 3> inside{true, true, true};
-    for (const auto& h : x.halfspaces) {
-        int beyond = 0;
-        for (unsigned j = 0; j < 3; ++j)
-            if (sign_of(h.n, v[j], h.offset) > 0) ++beyond, inside[j] = false;
-        if (beyond == 3) return -1;
-    }
-    for (const auto& sl : x.slabs) {
-        int below = 0, above = 0;
-        for (unsigned j = 0; j < 3; ++j) {
-            if (sign_of(sl.n, v[j], sl.lo) < 0) ++below, inside[j] = false;
-            if (sign_of(sl.n, v[j], sl.hi) > 0) ++above, inside[j] = false;
-        }
-        if (below == 3 || above == 3) return -1;
-    }
-    return inside[0] || inside[1] || inside[2] ? 1 : 0;
+    convex_set triangle;
+    triangle.points.assign(v.begin(), v.end());
+    return corners_decide(x, triangle);
 }
 // For x a parallelepiped c + sum s_i a_i, lo_i <= s_i <= hi_i (an OBB): with n_i = a_j x a_k and
 // D = n_i . a_i = det(a0, a1, a2), a point p of x has n_i . (p - c) = s_i D. So -1 when the three
