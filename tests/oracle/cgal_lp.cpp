@@ -69,6 +69,15 @@ void add(program& lp, int& var, int& row, const convex_set& s) {
 bool finite(const std::array<double, 3>& x) {
     return std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]);
 }
+// x given by its slabs and half-spaces alone, every value finite?
+bool finite_rows_only(const convex_set& x) {
+    if (x.plane || !x.points.empty() || !x.generators.empty()) return false;
+    for (const auto& sl : x.slabs)
+        if (!finite(sl.n) || !std::isfinite(sl.lo) || !std::isfinite(sl.hi)) return false;
+    for (const auto& hs : x.halfspaces)
+        if (!finite(hs.n) || !std::isfinite(hs.offset)) return false;
+    return true;
+}
 
 // The sign of n . (p + sum_i t_i g_i) - c, t_i the lower or upper bound of generator i as bit i of
 // `corner` says: in double when rounding cannot reach it, else in rationals. The double sum has at
@@ -107,11 +116,7 @@ int corner_sign(const std::array<double, 3>& n, double c, const std::array<doubl
 } // namespace
 
 int corners_decide(const convex_set& x, const convex_set& v) {
-    if (x.plane || !x.points.empty() || !x.generators.empty()) return 0;
-    for (const auto& sl : x.slabs)
-        if (!finite(sl.n) || !std::isfinite(sl.lo) || !std::isfinite(sl.hi)) return 0;
-    for (const auto& hs : x.halfspaces)
-        if (!finite(hs.n) || !std::isfinite(hs.offset)) return 0;
+    if (!finite_rows_only(x)) return 0;
     if (v.plane || !v.slabs.empty() || !v.halfspaces.empty() || v.points.empty() || v.generators.size() > 3) return 0;
     for (const auto& g : v.generators)
         if (!g.has_lo || !g.has_hi || !(g.lo <= g.hi) || !finite(g.g) || !std::isfinite(g.lo) || !std::isfinite(g.hi)) return 0;
@@ -139,10 +144,77 @@ int corners_decide(const convex_set& x, const convex_set& v) {
     return 0;
 }
 
+std::optional<bool> clip_decide(const convex_set& x, const convex_set& v) {
+    if (!finite_rows_only(x) || v.plane || !v.slabs.empty() || !v.halfspaces.empty() || v.points.empty()) return std::nullopt;
+    for (const auto& p : v.points)
+        if (!finite(p)) return std::nullopt;
+    using point = std::array<mpq_class, 3>;
+    auto of = [](const std::array<double, 3>& p) { return point{mpq_class(p[0]), mpq_class(p[1]), mpq_class(p[2])}; };
+    // Every bound of x as n . y <= c (a slab's lower bound as -n . y <= -lo); f(r, y) = n . y - c.
+    struct row {
+        std::array<double, 3> n;
+        double c;
+        bool flip;
+    };
+    std::vector<row> rows;
+    for (const auto& hs : x.halfspaces) rows.push_back({hs.n, hs.offset, false});
+    for (const auto& sl : x.slabs) rows.push_back({sl.n, sl.hi, false}), rows.push_back({sl.n, sl.lo, true});
+    auto f = [](const row& r, const point& y) {
+        mpq_class e = r.n[0] * y[0] + r.n[1] * y[1] + r.n[2] * y[2] - r.c;
+        return r.flip ? mpq_class(-e) : e;
+    };
+    if (v.points.size() == 1 && v.generators.size() == 1) { // p + t g, t within the generator's bounds
+        const auto& g = v.generators[0];
+        if (!finite(g.g) || (g.has_lo && !std::isfinite(g.lo)) || (g.has_hi && !std::isfinite(g.hi))) return std::nullopt;
+        bool has_lo = g.has_lo, has_hi = g.has_hi;
+        mpq_class lo(g.has_lo ? g.lo : 0.0), hi(g.has_hi ? g.hi : 0.0);
+        const point p = of(v.points[0]);
+        for (const auto& r : rows) { // f(r, p) + t n . g <= 0
+            const mpq_class at_p = f(r, p);
+            mpq_class a = r.n[0] * mpq_class(g.g[0]) + r.n[1] * mpq_class(g.g[1]) + r.n[2] * mpq_class(g.g[2]);
+            if (r.flip) a = -a;
+            if (sgn(a) == 0) {
+                if (sgn(at_p) > 0) return false;
+                continue;
+            }
+            const mpq_class t = -at_p / a;
+            if (sgn(a) > 0) hi = has_hi && hi < t ? hi : t, has_hi = true;
+            else lo = has_lo && lo > t ? lo : t, has_lo = true;
+            if (has_lo && has_hi && lo > hi) return false;
+        }
+        return !(has_lo && has_hi && lo > hi);
+    }
+    if (!v.generators.empty() || v.points.size() > 3) return std::nullopt;
+    std::vector<point> poly, next;
+    for (const auto& p : v.points) poly.push_back(of(p));
+    std::vector<mpq_class> d;
+    for (const auto& r : rows) { // keep the part with f <= 0: the closed polygon's vertices and edge crossings
+        d.clear();
+        for (const auto& y : poly) d.push_back(f(r, y));
+        next.clear();
+        for (std::size_t i = 0; i < poly.size(); ++i) {
+            const std::size_t j = (i + 1) % poly.size();
+            if (sgn(d[i]) <= 0) next.push_back(poly[i]);
+            if ((sgn(d[i]) < 0 && sgn(d[j]) > 0) || (sgn(d[i]) > 0 && sgn(d[j]) < 0)) {
+                const mpq_class t = d[i] / (d[i] - d[j]);
+                point y;
+                for (unsigned k = 0; k < 3; ++k) y[k] = poly[i][k] + t * (poly[j][k] - poly[i][k]);
+                next.push_back(y);
+            }
+        }
+        if (next.empty()) return false;
+        poly.swap(next);
+    }
+    return true;
+}
+
 std::optional<bool> lp_intersect_verified(const convex_set& a, const convex_set& b) {
     // Independent of the LP below and exact: decides most random cases far faster.
     if (const int r = corners_decide(b, a)) return r > 0;
     if (const int r = corners_decide(a, b)) return r > 0;
+    // Exact clipping in rationals, for a point, segment, triangle, ray or line against slabs and half-spaces.
+    if (const auto r = clip_decide(b, a)) return r;
+    if (const auto r = clip_decide(a, b)) return r;
     program lp(CGAL::EQUAL, false, 0.0, false, 0.0); // free variables unless bounded
     int var = 3, row = 0;
     add(lp, var, row, a);

@@ -18,4 +18,10 @@ std::optional<std::array<mpq_class, 3>> lp_point(const convex_set& s);
 // 0 when neither, or when x or v has another form or a value that is not finite. Every sign is
 // exact (double when rounding cannot reach it, else rationals).
 int corners_decide(const convex_set& x, const convex_set& v);
+// Exact clipping in GMP rationals, for x given by its slabs and half-spaces alone: v a point, a
+// segment or a triangle (one to three points: the convex polygon of v cut by each bound in turn,
+// Sutherland and Hodgman 1974) or p + t g with one generator (a segment, ray or line: the interval
+// of t cut by each bound). Whether they meet; nothing when v has another form or a value of x or v
+// is not finite.
+std::optional<bool> clip_decide(const convex_set& x, const convex_set& v);
 } // namespace oracle
