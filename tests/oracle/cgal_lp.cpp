@@ -78,6 +78,67 @@ bool finite_rows_only(const convex_set& x) {
         if (!finite(hs.n) || !std::isfinite(hs.offset)) return false;
     return true;
 }
+// v given by its points plus bounded generators alone, every value finite?
+bool finite_corners_only(const convex_set& v) {
+    if (v.plane || !v.slabs.empty() || !v.halfspaces.empty() || v.points.empty() || v.generators.size() > 3) return false;
+    for (const auto& g : v.generators)
+        if (!g.has_lo || !g.has_hi || !(g.lo <= g.hi) || !finite(g.g) || !std::isfinite(g.lo) || !std::isfinite(g.hi)) return false;
+    for (const auto& p : v.points)
+        if (!finite(p)) return false;
+    return true;
+}
+
+using qpoint = std::array<mpq_class, 3>;
+qpoint rational(const std::array<double, 3>& p) { return {mpq_class(p[0]), mpq_class(p[1]), mpq_class(p[2])}; }
+mpq_class dot(const qpoint& a, const qpoint& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+qpoint cross(const qpoint& a, const qpoint& b) {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+// The bounds n . y <= c of a set: its half-spaces and the sides of its slabs as given (doubles; a
+// slab's lower bound lo <= n . y as -n . y <= -lo, negation being exact), or the faces of a box
+// c0 + sum_i s_i a_i, lo_i <= s_i <= hi_i (rationals: with n_i = a_j x a_k and
+// D = n_i . a_i = det(a_0, a_1, a_2), n_i . (y - c0) = s_i D).
+struct bounds {
+    struct given {
+        std::array<double, 3> n;
+        double c;
+    };
+    struct exact {
+        qpoint n;
+        mpq_class c;
+    };
+    std::vector<given> doubles;
+    std::vector<exact> rationals;
+};
+// The bounds of x when it is slabs and half-spaces alone, or a box with a nonzero determinant.
+std::optional<bounds> bounds_of(const convex_set& x) {
+    bounds out;
+    if (finite_rows_only(x)) {
+        out.doubles.reserve(x.halfspaces.size() + 2 * x.slabs.size());
+        for (const auto& hs : x.halfspaces) out.doubles.push_back({hs.n, hs.offset});
+        for (const auto& sl : x.slabs) {
+            out.doubles.push_back({sl.n, sl.hi});
+            out.doubles.push_back({{-sl.n[0], -sl.n[1], -sl.n[2]}, -sl.lo});
+        }
+        return out;
+    }
+    if (x.points.size() != 1 || x.generators.size() != 3 || !finite_corners_only(x)) return std::nullopt;
+    const qpoint a[3] = {rational(x.generators[0].g), rational(x.generators[1].g), rational(x.generators[2].g)};
+    const mpq_class det = dot(cross(a[1], a[2]), a[0]);
+    if (sgn(det) == 0) return std::nullopt;
+    const qpoint c0 = rational(x.points[0]);
+    out.rationals.reserve(6);
+    for (unsigned i = 0; i < 3; ++i) {
+        const qpoint n = cross(a[(i + 1) % 3], a[(i + 2) % 3]);
+        const mpq_class at_c0 = dot(n, c0), lo = x.generators[i].lo * det, hi = x.generators[i].hi * det;
+        const mpq_class& top = sgn(det) > 0 ? hi : lo;
+        const mpq_class& bottom = sgn(det) > 0 ? lo : hi;
+        out.rationals.push_back({n, at_c0 + top});
+        out.rationals.push_back({{-n[0], -n[1], -n[2]}, -(at_c0 + bottom)});
+    }
+    return out;
+}
 
 // The sign of n . (p + sum_i t_i g_i) - c, t_i the lower or upper bound of generator i as bit i of
 // `corner` says: in double when rounding cannot reach it, else in rationals. The double sum has at
@@ -116,63 +177,57 @@ int corner_sign(const std::array<double, 3>& n, double c, const std::array<doubl
 } // namespace
 
 int corners_decide(const convex_set& x, const convex_set& v) {
-    if (!finite_rows_only(x)) return 0;
-    if (v.plane || !v.slabs.empty() || !v.halfspaces.empty() || v.points.empty() || v.generators.size() > 3) return 0;
-    for (const auto& g : v.generators)
-        if (!g.has_lo || !g.has_hi || !(g.lo <= g.hi) || !finite(g.g) || !std::isfinite(g.lo) || !std::isfinite(g.hi)) return 0;
-    for (const auto& p : v.points)
-        if (!finite(p)) return 0;
+    const auto bs = bounds_of(x);
+    if (!bs || !finite_corners_only(v)) return 0;
     const unsigned per_point = 1U << v.generators.size();
     const std::size_t count = v.points.size() * per_point;
+    std::vector<qpoint> corners; // in rationals, for a box's bounds
+    if (!bs->rationals.empty())
+        for (const auto& p : v.points)
+            for (unsigned m = 0; m < per_point; ++m) {
+                qpoint y = rational(p);
+                for (unsigned i = 0; i < v.generators.size(); ++i) {
+                    const auto& g = v.generators[i];
+                    const mpq_class t((m >> i & 1U) ? g.hi : g.lo);
+                    for (unsigned k = 0; k < 3; ++k) y[k] += t * g.g[k];
+                }
+                corners.push_back(y);
+            }
     std::vector<bool> inside(count, true);
-    // Every corner's sign against the bound c of the row n; false when all lie strictly on `side`.
-    auto not_all_beyond = [&](const std::array<double, 3>& n, double c, int side) {
-        bool some_not = false;
-        for (std::size_t j = 0; j < count; ++j) {
-            const int s = corner_sign(n, c, v.points[j / per_point], v.generators, static_cast<unsigned>(j % per_point));
-            if (s == side) inside[j] = false;
-            else some_not = true;
-        }
-        return some_not;
+    // sign(j): the sign of n . y - c at corner j for one bound; true when every corner is beyond it
+    auto all_beyond = [&](auto&& sign) {
+        bool all = true;
+        for (std::size_t j = 0; j < count; ++j)
+            if (sign(j) > 0) inside[j] = false;
+            else all = false;
+        return all;
     };
-    for (const auto& hs : x.halfspaces)
-        if (!not_all_beyond(hs.n, hs.offset, 1)) return -1;
-    for (const auto& sl : x.slabs)
-        if (!not_all_beyond(sl.n, sl.lo, -1) || !not_all_beyond(sl.n, sl.hi, 1)) return -1;
+    for (const auto& b : bs->doubles)
+        if (all_beyond([&](std::size_t j) { return corner_sign(b.n, b.c, v.points[j / per_point], v.generators, static_cast<unsigned>(j % per_point)); }))
+            return -1;
+    for (const auto& b : bs->rationals)
+        if (all_beyond([&](std::size_t j) { return sgn(dot(b.n, corners[j]) - b.c); })) return -1;
     for (const bool in : inside)
         if (in) return 1;
     return 0;
 }
 
 std::optional<bool> clip_decide(const convex_set& x, const convex_set& v) {
-    if (!finite_rows_only(x) || v.plane || !v.slabs.empty() || !v.halfspaces.empty() || v.points.empty()) return std::nullopt;
+    const auto bs = bounds_of(x);
+    if (!bs || v.plane || !v.slabs.empty() || !v.halfspaces.empty() || v.points.empty()) return std::nullopt;
     for (const auto& p : v.points)
         if (!finite(p)) return std::nullopt;
-    using point = std::array<mpq_class, 3>;
-    auto of = [](const std::array<double, 3>& p) { return point{mpq_class(p[0]), mpq_class(p[1]), mpq_class(p[2])}; };
-    // Every bound of x as n . y <= c (a slab's lower bound as -n . y <= -lo); f(r, y) = n . y - c.
-    struct row {
-        std::array<double, 3> n;
-        double c;
-        bool flip;
-    };
-    std::vector<row> rows;
-    for (const auto& hs : x.halfspaces) rows.push_back({hs.n, hs.offset, false});
-    for (const auto& sl : x.slabs) rows.push_back({sl.n, sl.hi, false}), rows.push_back({sl.n, sl.lo, true});
-    auto f = [](const row& r, const point& y) {
-        mpq_class e = r.n[0] * y[0] + r.n[1] * y[1] + r.n[2] * y[2] - r.c;
-        return r.flip ? mpq_class(-e) : e;
-    };
+    std::vector<std::pair<qpoint, mpq_class>> rows; // n . y <= c
+    for (const auto& b : bs->doubles) rows.emplace_back(rational(b.n), mpq_class(b.c));
+    for (const auto& b : bs->rationals) rows.emplace_back(b.n, b.c);
     if (v.points.size() == 1 && v.generators.size() == 1) { // p + t g, t within the generator's bounds
         const auto& g = v.generators[0];
         if (!finite(g.g) || (g.has_lo && !std::isfinite(g.lo)) || (g.has_hi && !std::isfinite(g.hi))) return std::nullopt;
         bool has_lo = g.has_lo, has_hi = g.has_hi;
         mpq_class lo(g.has_lo ? g.lo : 0.0), hi(g.has_hi ? g.hi : 0.0);
-        const point p = of(v.points[0]);
-        for (const auto& r : rows) { // f(r, p) + t n . g <= 0
-            const mpq_class at_p = f(r, p);
-            mpq_class a = r.n[0] * mpq_class(g.g[0]) + r.n[1] * mpq_class(g.g[1]) + r.n[2] * mpq_class(g.g[2]);
-            if (r.flip) a = -a;
+        const qpoint p = rational(v.points[0]), d = rational(g.g);
+        for (const auto& [n, c] : rows) { // n . p - c + t n . d <= 0
+            const mpq_class at_p = dot(n, p) - c, a = dot(n, d);
             if (sgn(a) == 0) {
                 if (sgn(at_p) > 0) return false;
                 continue;
@@ -185,19 +240,19 @@ std::optional<bool> clip_decide(const convex_set& x, const convex_set& v) {
         return !(has_lo && has_hi && lo > hi);
     }
     if (!v.generators.empty() || v.points.size() > 3) return std::nullopt;
-    std::vector<point> poly, next;
-    for (const auto& p : v.points) poly.push_back(of(p));
+    std::vector<qpoint> poly, next;
+    for (const auto& p : v.points) poly.push_back(rational(p));
     std::vector<mpq_class> d;
-    for (const auto& r : rows) { // keep the part with f <= 0: the closed polygon's vertices and edge crossings
+    for (const auto& [n, c] : rows) { // keep the part with n . y <= c: the closed polygon's vertices and edge crossings
         d.clear();
-        for (const auto& y : poly) d.push_back(f(r, y));
+        for (const auto& y : poly) d.push_back(dot(n, y) - c);
         next.clear();
         for (std::size_t i = 0; i < poly.size(); ++i) {
             const std::size_t j = (i + 1) % poly.size();
             if (sgn(d[i]) <= 0) next.push_back(poly[i]);
             if ((sgn(d[i]) < 0 && sgn(d[j]) > 0) || (sgn(d[i]) > 0 && sgn(d[j]) < 0)) {
                 const mpq_class t = d[i] / (d[i] - d[j]);
-                point y;
+                qpoint y;
                 for (unsigned k = 0; k < 3; ++k) y[k] = poly[i][k] + t * (poly[j][k] - poly[i][k]);
                 next.push_back(y);
             }

@@ -87,49 +87,7 @@ bool mesh_intersect(const mesh_data& m, const flat& x) {
 }
 
 namespace {
-// For x given by its slabs and half-spaces alone: -1 when the three points lie beyond one of its
-// bounds (the triangle misses x), +1 when one of them lies within all (it meets x), else 0.
-int rows_decide(const convex_set& x, const std::array<std::array<double, 3>, 3>& v) {
-    convex_set triangle;
-    triangle.points.assign(v.begin(), v.end());
-    return corners_decide(x, triangle);
-}
-// For x a parallelepiped c + sum s_i a_i, lo_i <= s_i <= hi_i (an OBB): with n_i = a_j x a_k and
-// D = n_i . a_i = det(a0, a1, a2), a point p of x has n_i . (p - c) = s_i D. So -1 when the three
-// points lie on one side beyond such a slab (the triangle misses x), +1 when D is not zero and
-// one of them lies within all three (it is in x), else 0; in exact rationals.
-int box_decide(const convex_set& x, const std::array<std::array<double, 3>, 3>& v) {
-    if (x.plane || x.points.size() != 1 || x.generators.size() != 3 || !x.slabs.empty() || !x.halfspaces.empty()) return 0;
-    for (const auto& g : x.generators)
-        if (!g.has_lo || !g.has_hi) return 0;
-    using V = std::array<mpq_class, 3>;
-    auto of = [](const std::array<double, 3>& p) { return V{mpq_class(p[0]), mpq_class(p[1]), mpq_class(p[2])}; };
-    auto cross = [](const V& a, const V& b) { return V{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; };
-    auto dot = [](const V& a, const V& b) -> mpq_class { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
-    const V a[3] = {of(x.generators[0].g), of(x.generators[1].g), of(x.generators[2].g)};
-    const V c = of(x.points[0]);
-    V rel[3];
-    for (unsigned j = 0; j < 3; ++j) {
-        const V p = of(v[j]);
-        rel[j] = V{p[0] - c[0], p[1] - c[1], p[2] - c[2]};
-    }
-    const mpq_class det = dot(cross(a[1], a[2]), a[0]);
-    std::array<bool, 3> inside{det != 0, det != 0, det != 0};
-    for (unsigned i = 0; i < 3; ++i) {
-        const V n = cross(a[(i + 1) % 3], a[(i + 2) % 3]);
-        mpq_class lo = mpq_class(x.generators[i].lo) * det, hi = mpq_class(x.generators[i].hi) * det;
-        if (det < 0) std::swap(lo, hi);
-        int below = 0, above = 0;
-        for (unsigned j = 0; j < 3; ++j) {
-            const mpq_class d = dot(n, rel[j]);
-            if (d < lo) ++below, inside[j] = false;
-            if (d > hi) ++above, inside[j] = false;
-        }
-        if (below == 3 || above == 3) return -1;
-    }
-    return inside[0] || inside[1] || inside[2] ? 1 : 0;
-}
-// Does a triangle of m meet the convex set x (the LP for each)?
+// Does a triangle of m meet the convex set x (for each: the exact certificates, else the LP)?
 bool triangles_meet(const mesh_data& m, const convex_set& x) {
     // A box around x (points plus bounded generators), widened by 2^-30 of its size and more than
     // any rounding in computing it: a triangle outside it cannot meet x, and skips its LP.
@@ -157,16 +115,7 @@ bool triangles_meet(const mesh_data& m, const convex_set& x) {
             }
             if (apart) continue;
         }
-        if (const int r = rows_decide(x, {m.v[t[0]], m.v[t[1]], m.v[t[2]]}); r != 0) {
-            if (r > 0) return true;
-            continue;
-        }
-        if (const int r = box_decide(x, {m.v[t[0]], m.v[t[1]], m.v[t[2]]}); r != 0) {
-            if (r > 0) return true;
-            continue;
-        }
-        const flat f = triangle_of(m, t);
-        if (lp_intersect(lp_set(f), x)) return true;
+        if (lp_intersect(lp_set(triangle_of(m, t)), x)) return true; // the certificates first, then the LP
     }
     return false;
 }
