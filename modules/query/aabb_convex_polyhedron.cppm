@@ -233,11 +233,10 @@ template <int D>
             for (int c = 0; c < D; ++c) s += r.a[c] * out.x[c];
             if (!(s > r.b)) continue;
             // the least point now lies on r's plane: x_e eliminated, |a_e| the largest
-            auto mag = [](double v) { return v < 0.0 ? -v : v; };
             int e = 0;
             for (int c = 1; c < D; ++c)
-                if (mag(r.a[static_cast<unsigned>(c)]) > mag(r.a[static_cast<unsigned>(e)])) e = c;
-            if (!(mag(r.a[static_cast<unsigned>(e)]) > 0.0)) {
+                if (arith::abs(r.a[static_cast<unsigned>(c)]) > arith::abs(r.a[static_cast<unsigned>(e)])) e = c;
+            if (!(arith::abs(r.a[static_cast<unsigned>(e)]) > 0.0)) {
                 out.feasible = false, out.why[0] = r.id, out.nwhy = 1;
                 return out;
             }
@@ -418,7 +417,6 @@ template <class K, class Rows>
         if (v = vertex_of_rows(k, rows, g.r[0], g.r[1], g.r[2]); v.found) return true;
         // more than three rows through the vertex (a k-DOP's corner), where the three the guess
         // ended on may be dependent: the triples of the rows through it, to rounding
-        auto mag = [](double x) { return x < 0.0 ? -x : x; };
         std::array<unsigned, 8> through{};
         unsigned m = 0;
         for (unsigned x = 0; x < rows.size() && m < through.size(); ++x) {
@@ -426,8 +424,8 @@ template <class K, class Rows>
             const auto n = rows.normal(arith::lift_double{}, x);
             const double c = rows.offset(arith::lift_double{}, x);
             const double gap = n.x * g.x[0] + n.y * g.x[1] + n.z * g.x[2] - c;
-            const double scale = mag(n.x * g.x[0]) + mag(n.y * g.x[1]) + mag(n.z * g.x[2]) + mag(c);
-            if (mag(gap) <= 0x1p-30 * scale) through[m++] = x;
+            const double scale = arith::abs(n.x * g.x[0]) + arith::abs(n.y * g.x[1]) + arith::abs(n.z * g.x[2]) + arith::abs(c);
+            if (arith::abs(gap) <= 0x1p-30 * scale) through[m++] = x;
         }
         for (unsigned a = 0; a < m; ++a)
             for (unsigned b = a + 1; b < m; ++b)

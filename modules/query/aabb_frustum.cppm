@@ -73,14 +73,13 @@ struct box_frame {
 };
 [[nodiscard]] constexpr bool box_frustum_sat(const box_frame& b, const frustum3& f, const point3 (&corner)[8]) {
     const plane3* pl = f.planes.data();
-    auto mag = [](double x) { return x < 0 ? -x : x; };
     auto separates = [&](vec3 w) {
         double lo = __builtin_huge_val(), hi = -__builtin_huge_val();
         for (const point3& x : corner) {
             const double t = dot(w, x - b.c);
             lo = t < lo ? t : lo, hi = t > hi ? t : hi;
         }
-        const double r = b.h[0] * mag(dot(w, b.a[0])) + b.h[1] * mag(dot(w, b.a[1])) + b.h[2] * mag(dot(w, b.a[2]));
+        const double r = b.h[0] * arith::abs(dot(w, b.a[0])) + b.h[1] * arith::abs(dot(w, b.a[1])) + b.h[2] * arith::abs(dot(w, b.a[2]));
         return lo > r || hi < -r;
     };
     for (unsigned j = 0; j < 3; ++j)

@@ -38,8 +38,7 @@ struct vertex_guesses {
     int n = 0;
 };
 [[nodiscard]] constexpr vertex_guesses vertices_guess(const plane3* planes, int m) {
-    auto mag = [](double x) { return x < 0 ? -x : x; };
-    auto norm1 = [mag](vec3 v) { return mag(v.x) + mag(v.y) + mag(v.z); };
+    auto norm1 = [](vec3 v) { return arith::abs(v.x) + arith::abs(v.y) + arith::abs(v.z); };
     vertex_guesses out;
     for (int i = 0; i < m; ++i)
         for (int j = i + 1; j < m; ++j)
@@ -47,14 +46,14 @@ struct vertex_guesses {
                 const plane3 a = planes[i], b = planes[j], c = planes[l];
                 const vec3 bc = cross(b.normal, c.normal), ca = cross(c.normal, a.normal), ab = cross(a.normal, b.normal);
                 const double d = dot(a.normal, bc);
-                if (!(mag(d) > 0x1p-30 * norm1(a.normal) * norm1(b.normal) * norm1(c.normal))) continue;
+                if (!(arith::abs(d) > 0x1p-30 * norm1(a.normal) * norm1(b.normal) * norm1(c.normal))) continue;
                 const vec3 v = (bc * a.offset + ca * b.offset + ab * c.offset) * (1.0 / d);
                 if (!finite(v)) continue;
-                const double size = mag(v.x) + mag(v.y) + mag(v.z);
+                const double size = arith::abs(v.x) + arith::abs(v.y) + arith::abs(v.z);
                 bool inside = true;
                 for (int r = 0; r < m && inside; ++r) {
                     if (r == i || r == j || r == l) continue;
-                    inside = dot(planes[r].normal, v) - planes[r].offset <= 0x1p-30 * (norm1(planes[r].normal) * size + mag(planes[r].offset));
+                    inside = dot(planes[r].normal, v) - planes[r].offset <= 0x1p-30 * (norm1(planes[r].normal) * size + arith::abs(planes[r].offset));
                 }
                 if (!inside) continue;
                 const auto u = static_cast<unsigned>(out.n++);

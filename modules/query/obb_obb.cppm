@@ -66,11 +66,10 @@ template <class K>
     const double t[3] = {dot(d, a.axes[0]), dot(d, a.axes[1]), dot(d, a.axes[2])};
     const auto& ha = a.half_extents;
     const auto& hb = b.half_extents;
-    auto mag = [](double x) { return x < 0 ? -x : x; };
     for (unsigned i = 0; i < 3; ++i)
-        if (mag(t[i]) > ha[i] + hb[0] * F[i][0] + hb[1] * F[i][1] + hb[2] * F[i][2]) return false;
+        if (arith::abs(t[i]) > ha[i] + hb[0] * F[i][0] + hb[1] * F[i][1] + hb[2] * F[i][2]) return false;
     for (unsigned j = 0; j < 3; ++j)
-        if (mag(t[0] * R[0][j] + t[1] * R[1][j] + t[2] * R[2][j]) > ha[0] * F[0][j] + ha[1] * F[1][j] + ha[2] * F[2][j] + hb[j])
+        if (arith::abs(t[0] * R[0][j] + t[1] * R[1][j] + t[2] * R[2][j]) > ha[0] * F[0][j] + ha[1] * F[1][j] + ha[2] * F[2][j] + hb[j])
             return false;
     for (unsigned i = 0; i < 3; ++i) {
         const unsigned i1 = (i + 1) % 3, i2 = (i + 2) % 3;
@@ -78,7 +77,7 @@ template <class K>
             const unsigned j1 = (j + 1) % 3, j2 = (j + 2) % 3;
             const double ra = ha[i1] * F[i2][j] + ha[i2] * F[i1][j];
             const double rb = hb[j1] * F[i][j2] + hb[j2] * F[i][j1];
-            if (mag(t[i2] * R[i1][j] - t[i1] * R[i2][j]) > ra + rb) return false;
+            if (arith::abs(t[i2] * R[i1][j] - t[i1] * R[i2][j]) > ra + rb) return false;
         }
     }
     return true;
