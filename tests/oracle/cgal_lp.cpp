@@ -3,8 +3,10 @@
 // given, never a computed one: a box is c + sum t_i a_i with |t_i| <= h_i, a segment or a
 // triangle the convex combinations of its vertices, a plane n . x = offset, a k-DOP its slabs
 // lo <= n . x <= hi (n the integer directions), a convex polyhedron or a frustum its half-spaces
-// n . x <= offset. Before the LP, a corner certificate (corners_decide) decides most cases exactly
-// when one set is a polytope given by its corners and the other slabs and half-spaces alone.
+// n . x <= offset. Before the LP, two exact stages decide most cases when one set has bounds
+// (slabs and half-spaces alone, or a box's six face planes in rationals): a corner certificate
+// (corners_decide) when the other is given by its corners, and clipping in rationals
+// (clip_decide) when the other is a point, segment, triangle, ray or line.
 #include "cgal_oracle.hpp"
 #include "cgal_lp_point.hpp"
 
@@ -267,7 +269,7 @@ std::optional<bool> lp_intersect_verified(const convex_set& a, const convex_set&
     // Independent of the LP below and exact: decides most random cases far faster.
     if (const int r = corners_decide(b, a)) return r > 0;
     if (const int r = corners_decide(a, b)) return r > 0;
-    // Exact clipping in rationals, for a point, segment, triangle, ray or line against slabs and half-spaces.
+    // Exact clipping in rationals, for a point, segment, triangle, ray or line against bounds.
     if (const auto r = clip_decide(b, a)) return r;
     if (const auto r = clip_decide(a, b)) return r;
     program lp(CGAL::EQUAL, false, 0.0, false, 0.0); // free variables unless bounded
