@@ -176,10 +176,15 @@ int corner_sign(const std::array<double, 3>& n, double c, const std::array<doubl
     }
     return sgn(e);
 }
-} // namespace
 
-int corners_decide(const convex_set& x, const convex_set& v) {
-    const auto bs = bounds_of(x);
+// The corner certificate, for x given by its bounds bs (bounds_of: x's slabs and half-spaces alone,
+// or a box's six faces) and v a polytope given by its corners (points, plus up to three generators
+// with both bounds: the corners are each point plus every choice of bounds): -1 when every corner
+// lies strictly beyond one bound of x (apart: v is the hull of its corners), +1 when one corner
+// lies within every bound (a common point), 0 when neither, or when x has no bounds or v has
+// another form or a value that is not finite. Every sign is exact (double when rounding cannot
+// reach it, else rationals).
+int corners_decide(const std::optional<bounds>& bs, const convex_set& v) {
     if (!bs || !finite_corners_only(v)) return 0;
     const unsigned per_point = 1U << v.generators.size();
     const std::size_t count = v.points.size() * per_point;
@@ -214,8 +219,11 @@ int corners_decide(const convex_set& x, const convex_set& v) {
     return 0;
 }
 
-std::optional<bool> clip_decide(const convex_set& x, const convex_set& v) {
-    const auto bs = bounds_of(x);
+// Exact clipping in GMP rationals, for x's bounds bs as in corners_decide and v a point, a segment or a
+// triangle (one to three points: the convex polygon of v cut by each bound in turn, Sutherland and
+// Hodgman 1974) or p + t g with one generator (a segment, ray or line: the interval of t cut by
+// each bound). Whether they meet; nothing when x or v has another form or a value that is not finite.
+std::optional<bool> clip_decide(const std::optional<bounds>& bs, const convex_set& v) {
     if (!bs || v.plane || !v.slabs.empty() || !v.halfspaces.empty() || v.points.empty()) return std::nullopt;
     for (const auto& p : v.points)
         if (!finite(p)) return std::nullopt;
@@ -264,14 +272,16 @@ std::optional<bool> clip_decide(const convex_set& x, const convex_set& v) {
     }
     return true;
 }
+} // namespace
 
 std::optional<bool> lp_intersect_verified(const convex_set& a, const convex_set& b) {
     // Independent of the LP below and exact: decides most random cases far faster.
-    if (const int r = corners_decide(b, a)) return r > 0;
-    if (const int r = corners_decide(a, b)) return r > 0;
+    const auto bounds_a = bounds_of(a), bounds_b = bounds_of(b);
+    if (const int r = corners_decide(bounds_b, a)) return r > 0;
+    if (const int r = corners_decide(bounds_a, b)) return r > 0;
     // Exact clipping in rationals, for a point, segment, triangle, ray or line against bounds.
-    if (const auto r = clip_decide(b, a)) return r;
-    if (const auto r = clip_decide(a, b)) return r;
+    if (const auto r = clip_decide(bounds_b, a)) return r;
+    if (const auto r = clip_decide(bounds_a, b)) return r;
     program lp(CGAL::EQUAL, false, 0.0, false, 0.0); // free variables unless bounded
     int var = 3, row = 0;
     add(lp, var, row, a);
