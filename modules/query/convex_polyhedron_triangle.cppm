@@ -12,7 +12,9 @@
 // V = c_i n_j x n + c_j n x n_i + (n . a) n_i x n_j. Such a v is tested in every half-space,
 // sign(c_l D - n_l . V) zero or sign(D) (degree 6), and in the triangle, sign(((q - p) x (V - p D))
 // . n) zero or sign(D) for its edges p q in turn (degree 8); each offset times a lifted 1, so every
-// sign is homogeneous. A filter-proven violated condition skips a pair before any sign is decided.
+// sign is homogeneous. A filter-proven violated half-space skips a pair before any sign is decided.
+// The first vertex of Q found decides: Q is connected and misses the triangle's edges, so it lies
+// inside the triangle or apart from it.
 // First, a plane of P with the three corners beyond it says no.
 // Source: Schrijver, Theory of Linear and Integer Programming, 1986, section 8.5 (a nonempty
 // pointed polyhedron has a vertex, where rank-many constraints are tight); Cyrus and Beck,
@@ -74,7 +76,7 @@ template <class K>
         return (a.x == 0 && a.y == 0 && a.z == 0) || (c.x == 0 && c.y == 0 && c.z == 0) || (a.x == c.x && a.y == c.y && a.z == c.z) ||
                (a.x == -c.x && a.y == -c.y && a.z == -c.z);
     };
-    std::array<sign, capacity + 3> s{};
+    std::array<sign, capacity> s{};
     for (int i = 0; i < m; ++i) {
         for (int j = i + 1; j < m; ++j) {
             if (parallel(i, j)) continue;
@@ -113,24 +115,28 @@ template <class K>
                     return arith::dot(arith::cross(arith::lift(L, q) - P, w), normal(L));
                 };
             };
-            auto probed = [&](int r) { return r < m ? arith::probe(k, in_plane(r)) : arith::probe(k, in_edge(r - m)); };
             // settled: a third plane through the point, or an ulp off it, is common (see first_row_vertex)
             auto decided = [&](int r) { return r < m ? settled(k, in_plane(r)) : settled(k, in_edge(r - m)); };
-            // a condition proven violated skips the pair; the proven ones are kept
+            // a half-space proven violated skips the pair; the proven ones are kept
             bool out = false;
-            for (int r = 0; r < m + 3 && !out; ++r) {
+            for (int r = 0; r < m && !out; ++r) {
                 if (r == i || r == j) continue;
-                s[static_cast<unsigned>(r)] = probed(r);
+                s[static_cast<unsigned>(r)] = arith::probe(k, in_plane(r));
                 out = s[static_cast<unsigned>(r)] == -d;
             }
             if (out) continue;
             bool inside = true;
-            for (int r = 0; r < m + 3 && inside; ++r) {
+            for (int r = 0; r < m && inside; ++r) {
                 if (r == i || r == j || s[static_cast<unsigned>(r)] == d) continue;
                 const sign x = decided(r);
                 inside = x == sign::zero || x == d;
             }
-            if (inside) return true;
+            if (!inside) continue;
+            // v is a vertex of Q, and the edges miss P, so Q lies inside the triangle or apart from
+            // it (Q is connected and does not meet the triangle's boundary): v decides
+            for (int r = m; r < m + 3; ++r)
+                if (const sign x = decided(r); x != sign::zero && x != d) return false;
+            return true;
         }
     }
     return false;
