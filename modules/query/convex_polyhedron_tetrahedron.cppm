@@ -5,7 +5,8 @@
 // tetrahedron (coplanar vertices: their hull; a non-finite vertex: no tetrahedron). Touching at a
 // vertex, an edge or a face counts. contains: the four vertices in the set (it is convex).
 // Method (exact tiers): the tetrahedron T meets the set P iff one of its four faces meets P (the
-// triangle test of convex_polyhedron_triangle.cppm) or P lies inside T. When no face meets P, the
+// triangle test of convex_polyhedron_triangle.cppm, its six edges once, then each face's section)
+// or P lies inside T. When no face meets P, the
 // convex P does not cross T's boundary, so it lies inside T or outside it; inside, it is bounded
 // and not empty, so it has a vertex (first_vertex of aabb_convex_polyhedron.cppm, v = V / D).
 // That vertex decides: it is in T iff for every face (p, q, r) with the remaining vertex s,
@@ -38,8 +39,16 @@ template <class K>
     if (!well_formed(planes, m, convex_polyhedron3::capacity) || !finite(t)) return false;
     const point3 v[4] = {t.a, t.b, t.c, t.d};
     if (beyond_one_plane(k, planes, m, [&](std::size_t j) { return v[j]; }, 4)) return false;
-    for (int f = 0; f < 4; ++f)
-        if (triangle_meets(k, t.face(f), planes, m)) return true;
+    // the six edges, then each face's section (section_meets: its edges miss the set), unless the
+    // face's corners lie beyond one plane
+    for (int x = 0; x < 3; ++x)
+        for (int y = x + 1; y < 4; ++y)
+            if (halfspaces<slab_extent::segment>(k, planes, m, v[x], vec3{0, 0, 0}, v[y])) return true;
+    for (int f = 0; f < 4; ++f) {
+        const triangle3 face = t.face(f);
+        const point3 corner[3] = {face.a, face.b, face.c};
+        if (!beyond_one_plane(k, planes, m, [&](std::size_t j) { return corner[j]; }, 3) && section_meets(k, face, planes, m)) return true;
+    }
     // face f is (p, q, r), the vertices other than v[f] in order; s = v[f]
     auto face_det = [=](int f, auto L, const auto& x) {
         const point3 p = v[f == 0 ? 1 : 0], q = v[f <= 1 ? 2 : 1], r = v[f <= 2 ? 3 : 2];

@@ -55,16 +55,12 @@ template <class K, class Points>
     return false;
 }
 
-// Does the solid triangle t meet the m <= convex_polyhedron3::capacity half-spaces n_i . x <= c_i?
+// Whether the section Q of the m <= convex_polyhedron3::capacity half-spaces n_i . x <= c_i by the
+// plane of the finite triangle t meets t, where the caller found that t's edges miss the set.
 template <class K>
-[[nodiscard]] constexpr bool triangle_meets(K& k, const triangle3& t, const plane3* planes, int m) {
+[[nodiscard]] constexpr bool section_meets(K& k, const triangle3& t, const plane3* planes, int m) {
     constexpr int capacity = convex_polyhedron3::capacity;
-    if (!well_formed(planes, m, capacity) || !finite(t)) return false;
     const point3 corner[3] = {t.a, t.b, t.c};
-    if (beyond_one_plane(k, planes, m, [&](std::size_t v) { return corner[v]; }, 3)) return false;
-    // the edges
-    for (int v = 0; v < 3; ++v)
-        if (halfspaces<slab_extent::segment>(k, planes, m, corner[v], vec3{0, 0, 0}, corner[(v + 1) % 3])) return true;
     // a degenerate triangle is its edges
     auto normal = [=](auto L) { return arith::cross(arith::lift(L, t.b) - arith::lift(L, t.a), arith::lift(L, t.c) - arith::lift(L, t.a)); };
     if (settled(k, [=](auto L) { return normal(L).x; }) == sign::zero && settled(k, [=](auto L) { return normal(L).y; }) == sign::zero &&
@@ -140,6 +136,18 @@ template <class K>
         }
     }
     return false;
+}
+
+// Does the solid triangle t meet the m <= convex_polyhedron3::capacity half-spaces n_i . x <= c_i?
+template <class K>
+[[nodiscard]] constexpr bool triangle_meets(K& k, const triangle3& t, const plane3* planes, int m) {
+    if (!well_formed(planes, m, convex_polyhedron3::capacity) || !finite(t)) return false;
+    const point3 corner[3] = {t.a, t.b, t.c};
+    if (beyond_one_plane(k, planes, m, [&](std::size_t v) { return corner[v]; }, 3)) return false;
+    // the edges
+    for (int v = 0; v < 3; ++v)
+        if (halfspaces<slab_extent::segment>(k, planes, m, corner[v], vec3{0, 0, 0}, corner[(v + 1) % 3])) return true;
+    return section_meets(k, t, planes, m);
 }
 
 } // namespace polyq
