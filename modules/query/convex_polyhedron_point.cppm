@@ -13,10 +13,9 @@
 // sets meet iff the largest lower bound is <= the smallest upper bound, both found in one pass by
 // sign((c_i - a_i) b_j - (c_j - a_j) b_i) (t_i - t_j times b_i b_j), and the upper bounds lie at
 // t >= 0 (ray, segment: c_j - a_j >= 0) and the lower ones at t <= 1 (segment:
-// c_i - n_i . e >= 0). Every sign is a
-// polynomial of degree <= 4 in the inputs, no quotient is rounded; each offset is multiplied by
-// a lifted 1 so every polynomial is homogeneous (degree 2 or 4), which lets the exact fallback
-// use expansions instead of big integers.
+// c_i - n_i . e >= 0). Every sign is a polynomial of degree <= 4 in the inputs, no quotient is
+// rounded; each offset is multiplied by a lifted 1 so every polynomial is homogeneous (degree 2
+// or 4), which lets the exact fallback use expansions instead of big integers.
 // Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
 // magnitudes lie in [2^-500, 2^500], wrong only when a deciding sign is within 2^-40 of its
 // permanent (tests/query/convex_polyhedron_point.cpp).
