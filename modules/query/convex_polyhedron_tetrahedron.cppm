@@ -6,9 +6,9 @@
 // vertex, an edge or a face counts. contains: the four vertices in the set (it is convex).
 // Method (exact tiers): the tetrahedron T meets the set P iff one of its four faces meets P (the
 // triangle test of convex_polyhedron_triangle.cppm, its six edges once, then each face's section)
-// or P lies inside T. When no face meets P, the
-// convex P does not cross T's boundary, so it lies inside T or outside it; inside, it is bounded
-// and not empty, so it has a vertex (first_vertex of aabb_convex_polyhedron.cppm, v = V / D).
+// or P lies inside T. When no face meets P, the convex P does not cross T's boundary, so it lies
+// inside T or outside it; inside, it is bounded and not empty, so it has a vertex (first_vertex
+// of aabb_convex_polyhedron.cppm, v = V / D).
 // That vertex decides: it is in T iff for every face (p, q, r) with the remaining vertex s,
 // sign(det(q - p, r - p, V - p D)) is zero or sign(D) sign(det(q - p, r - p, s - p)) (degree 6).
 // A flat tetrahedron is its faces. First, a plane of P with the four vertices beyond it says no.
