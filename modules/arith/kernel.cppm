@@ -133,6 +133,41 @@ struct lift_exact_double {
         return {x, fin, fin};
     }
 };
+// Zeros by structure: a node is exactly zero (for finite inputs) when it is a zero input, a
+// difference of two equal inputs (a sum of two opposite ones), a sum or difference of two such
+// zeros, or a product with such a factor. Coplanar and axis-aligned inputs (equal coordinates, zero
+// direction components) make whole terms zero this way, which no error bound can prove; a zero by
+// cancellation of nonzero terms is not seen (exact_double settles those it can). Only compares:
+// much cheaper than exact_double's error-free operations.
+struct zero_input {
+    double x;
+};
+struct zero_node {
+    bool z;
+};
+template <class T>
+concept zero_operand = __is_same(T, zero_input) || __is_same(T, zero_node);
+[[nodiscard, gnu::always_inline]] constexpr bool is_zero_node(zero_input a) { return a.x == 0.0; }
+[[nodiscard, gnu::always_inline]] constexpr bool is_zero_node(zero_node a) { return a.z; }
+[[nodiscard, gnu::always_inline]] constexpr zero_node operator-(zero_input a, zero_input b) { return {a.x == b.x}; }
+[[nodiscard, gnu::always_inline]] constexpr zero_node operator+(zero_input a, zero_input b) { return {a.x == -b.x}; }
+template <zero_operand A, zero_operand B>
+[[nodiscard, gnu::always_inline]] constexpr zero_node operator+(A a, B b) { return {is_zero_node(a) && is_zero_node(b)}; }
+template <zero_operand A, zero_operand B>
+[[nodiscard, gnu::always_inline]] constexpr zero_node operator-(A a, B b) { return {is_zero_node(a) && is_zero_node(b)}; }
+template <zero_operand A, zero_operand B>
+[[nodiscard, gnu::always_inline]] constexpr zero_node operator*(A a, B b) { return {is_zero_node(a) || is_zero_node(b)}; }
+[[nodiscard, gnu::always_inline]] constexpr zero_input operator-(zero_input a) { return {-a.x}; }
+[[nodiscard, gnu::always_inline]] constexpr zero_node operator-(zero_node a) { return a; }
+[[nodiscard, gnu::always_inline]] constexpr zero_input abs(zero_input a) { return {abs(a.x)}; }
+[[nodiscard, gnu::always_inline]] constexpr zero_node abs(zero_node a) { return a; }
+struct lift_zero {
+    [[nodiscard]] constexpr zero_input operator()(double x) const { return {x}; }
+};
+// Whether f is zero by structure. Sound only where its inputs are finite (finite_zero below).
+template <class F>
+[[nodiscard, gnu::always_inline]] constexpr bool zero_by_structure(const F& f) { return is_zero_node(f(lift_zero{})); }
+
 struct lift_dyadic {
     [[nodiscard]] constexpr dyadic operator()(double x) const { return to_dyadic(x); }
 };
@@ -247,6 +282,17 @@ template <class F>
 template <int K>
 [[nodiscard]] constexpr bool in_trusted_range(filtered<K> v) { return in_trusted_range(v.p); }
 
+// Whether the filter's value is zero, which says that every input it read was finite, so that a
+// zero by structure (zero_by_structure) is an exact zero there: an infinite or NaN input makes
+// every value computed from it infinite or NaN (inf + -inf and 0 * inf are NaN, and no operation
+// turns either into a finite number). In constant evaluation an overflowed operand gives the value
+// 0 with an infinite permanent instead (filtered.cppm's poisoned), so there the permanent must be
+// finite too.
+template <int K>
+[[nodiscard]] constexpr bool finite_zero(filtered<K> v) {
+    return v.v == 0.0 && (!__builtin_is_constant_evaluated() || v.p < infinity);
+}
+
 // Largest expansion capacity evaluated on the stack; larger predicates go to the dyadic path.
 inline constexpr int max_expansion_capacity = 2048;
 
@@ -264,18 +310,21 @@ template <class F>
     // Stage 1: semi-static filter.
     const auto v = f(lift_filter{});
     if (const int s = proven_sign(v); s != 0) return to_sign(s);
-    return exact_sign_fallback(f, valid, in_trusted_range(v), v.v == 0.0);
+    return exact_sign_fallback(f, valid, in_trusted_range(v), finite_zero(v));
 }
 
 template <class F>
 [[nodiscard, gnu::noinline]] constexpr sign exact_sign_fallback(F f, bool& valid, bool in_range, bool rounded_zero) {
-    // Stage 1a: every operation exact in double (exactly touching inputs: an exact zero, which no
-    // filter can prove, is the commonest reason to be here). Only where the filter's value, the
-    // same expression in plain double, is zero (rounded_zero): where this stage succeeds, that
-    // value is the exact one, so it can settle a zero only there; a nonzero sign it would settle,
-    // the stages below settle as well (skipping it is always sound, never wrong).
-    if (rounded_zero)
+    // Stage 1a: a zero by structure, then every operation exact in double (exactly touching
+    // inputs: an exact zero, which no filter can prove, is the commonest reason to be here). Only
+    // where the filter's value, the same expression in plain double, is zero (rounded_zero, from
+    // finite_zero, which also vouches for the inputs' finiteness): where this stage succeeds, that value is the exact
+    // one, so it can settle a zero only there; a nonzero sign it would settle, the stages below
+    // settle as well (skipping it is always sound, never wrong).
+    if (rounded_zero) {
+        if (zero_by_structure(f)) return sign::zero;
         if (const exact_double x = f(lift_exact_double{}); x.exact) return sign_of_double(x.v);
+    }
     // Stage 1b, where the filter's permanent left its trusted range (in_range false): the filter
     // on inputs scaled by a power of two (scaled_filter_sign). Then 1c: the double-double filter,
     // which decides configurations a few ulps off the boundary (on the inputs scaled as in 1b, or
@@ -363,9 +412,27 @@ struct filter_kernel {
     [[nodiscard, gnu::always_inline]] constexpr sign settled_sgn(const F& f) {
         const auto v = f(lift_filter{});
         if (const int s = proven_sign(v); s != 0) return to_sign(s);
-        if (const int s = settle_cheaply(f, 1.0, v.v == 0.0); s != 2) return to_sign(s);
+        if (const int s = settle_cheaply(f, 1.0, finite_zero(v)); s != 2) return to_sign(s);
         unproven = v.p;
         return sign::zero;
+    }
+    // sgn and zero for a sign that coplanar or axis-aligned inputs make zero by structure: the
+    // filter, then in place (a few compares, only where the rounded value is zero) the structure,
+    // before the sign counts as unproven. Nothing more: a sign near zero but not zero by structure
+    // is left to the exact pass, as by sgn.
+    template <class F>
+    [[nodiscard, gnu::always_inline]] constexpr sign structural_sgn(const F& f) {
+        const auto v = f(lift_filter{});
+        const int s = proven_sign(v);
+        if (s == 0 && !(finite_zero(v) && zero_by_structure(f))) unproven = v.p;
+        return to_sign(s);
+    }
+    template <class F>
+    [[nodiscard, gnu::always_inline]] constexpr bool structural_zero(const F& f) {
+        const auto v = f(lift_filter{});
+        if (proven_nonzero(v)) return false;
+        if (!(finite_zero(v) && zero_by_structure(f))) unproven = v.p;
+        return true;
     }
     // A sign for a check whose failure decides nothing (a candidate witness point): zero when the
     // filter cannot prove it, and the query's certainty is untouched.
@@ -404,11 +471,16 @@ template <class K>
 struct settling_filter_kernel : filter_kernel {
     template <class F>
     [[nodiscard, gnu::always_inline]] constexpr sign sgn(const F& f) { return settled_sgn(f); }
+    // Every sign here is settled (exact_double settles a zero by structure too).
+    template <class F>
+    [[nodiscard, gnu::always_inline]] constexpr sign structural_sgn(const F& f) { return sgn(f); }
+    template <class F>
+    [[nodiscard, gnu::always_inline]] constexpr bool structural_zero(const F& f) { return zero(f); }
     template <class F>
     [[nodiscard, gnu::always_inline]] constexpr bool zero(const F& f) {
         const auto v = f(lift_filter{});
         if (proven_nonzero(v)) return false;
-        if (const int s = settle_cheaply(f, 1.0, v.v == 0.0); s != 2) return s == 0;
+        if (const int s = settle_cheaply(f, 1.0, finite_zero(v)); s != 2) return s == 0;
         unproven = v.p;
         return true;
     }
@@ -439,7 +511,7 @@ struct scaled_filter_kernel {
             const auto v = f(lift_scaled_filter{factor});
             if (const int s = proven_sign(v); s != 0) return s;
             // not where a NaN permanent says an input was not exact
-            return v.p == v.p ? settle_cheaply(f, factor, v.v == 0.0) : 2;
+            return v.p == v.p ? settle_cheaply(f, factor, finite_zero(v)) : 2;
         } else {
             const int s = proven_sign(f(lift_filter{}));
             return s != 0 ? s : 2;
@@ -480,7 +552,7 @@ struct exact_kernel {
     [[nodiscard, gnu::always_inline]] constexpr bool zero(const F& f) {
         const auto v = f(lift_filter{});
         if (proven_nonzero(v)) return false;
-        return exact_sign_fallback(f, valid, in_trusted_range(v), v.v == 0.0) == sign::zero;
+        return exact_sign_fallback(f, valid, in_trusted_range(v), finite_zero(v)) == sign::zero;
     }
     // A check whose failure decides nothing (see probe below) needs no exact sign: the filter,
     // and the scaled filter where the scene's scale defeated it.
@@ -556,6 +628,22 @@ template <class K, class F>
         if (s != sign::zero) return s;
         return k.sgn(f);
     }
+}
+
+// k.sgn(f) and is_zero(k, f) for a sign that is often zero by structure (coplanar inputs in one
+// plane z = c: equal coordinates, zero direction components): a filter kernel proves such a zero
+// in place (filter_kernel::structural_sgn, structural_zero) instead of failing its pass, after
+// which the exact pass would run the whole query again; the exact kernel's fallback tries the
+// structure first anyway.
+template <class K, class F>
+[[nodiscard, gnu::always_inline]] constexpr sign structural_sgn(K& k, const F& f) {
+    if constexpr (__is_base_of(filter_kernel, K)) return k.structural_sgn(f);
+    else return k.sgn(f);
+}
+template <class K, class F>
+[[nodiscard, gnu::always_inline]] constexpr bool structural_zero(K& k, const F& f) {
+    if constexpr (__is_base_of(filter_kernel, K)) return k.structural_zero(f);
+    else return is_zero(k, f);
 }
 
 // The exact sign of a polynomial that is often exactly zero at a point that decides the query
