@@ -24,9 +24,10 @@ template <class K>
     if (d.x == 0.0 && d.y == 0.0 && d.z == 0.0)
         return arith::compare(k, p.x, o.x) == sign::zero && arith::compare(k, p.y, o.y) == sign::zero &&
                arith::compare(k, p.z, o.z) == sign::zero;
-    // component i of (p - o) x d: (p - o)_j d_l - (p - o)_l d_j, (i, j, l) cyclic
-    if (!arith::is_zero(k, [=](auto L) { return (L(p.y) - L(o.y)) * L(d.z) - (L(p.z) - L(o.z)) * L(d.y); })) return false;
-    if (!arith::is_zero(k, [=](auto L) { return (L(p.z) - L(o.z)) * L(d.x) - (L(p.x) - L(o.x)) * L(d.z); })) return false;
+    // component i of (p - o) x d: (p - o)_j d_l - (p - o)_l d_j, (i, j, l) cyclic; a line and a
+    // point in one plane z = c make the first two zero by structure (arith::structural_zero)
+    if (!arith::structural_zero(k, [=](auto L) { return (L(p.y) - L(o.y)) * L(d.z) - (L(p.z) - L(o.z)) * L(d.y); })) return false;
+    if (!arith::structural_zero(k, [=](auto L) { return (L(p.z) - L(o.z)) * L(d.x) - (L(p.x) - L(o.x)) * L(d.z); })) return false;
     return arith::is_zero(k, [=](auto L) { return (L(p.x) - L(o.x)) * L(d.y) - (L(p.y) - L(o.y)) * L(d.x); });
 }
 

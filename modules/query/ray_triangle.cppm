@@ -44,6 +44,8 @@ export namespace incidence::pair {
 
 template <class K>
 [[nodiscard]] constexpr bool point_in_triangle(K& k, point3 x, const triangle3& t);
+template <class K>
+[[nodiscard]] constexpr bool in_projected_triangle(K& k, point3 x, const triangle3& t, int axis, sign na);
 
 template <class K>
 [[nodiscard]] constexpr bool linear_triangle(K& k, const linear3& s, const triangle3& t) {
@@ -53,7 +55,9 @@ template <class K>
         const auto A = arith::lift(L, a);
         return arith::cross(arith::lift(L, b) - A, arith::lift(L, c) - A);
     };
-    const sign nd = k.sgn([=](auto L) { return arith::dot(n_of(L), s.D(L)); });
+    // nd, the normal's components and num are zero for a line in the triangle's plane, by
+    // structure in one plane z = c (arith::structural_sgn; see linear_linear).
+    const sign nd = arith::structural_sgn(k, [=](auto L) { return arith::dot(n_of(L), s.D(L)); });
     if (nd != sign::zero) {
         auto w = [&](point3 u, point3 v) {
             return k.sgn([=](auto L) {
@@ -70,12 +74,11 @@ template <class K>
         return over != -nd; // t <= 1
     }
     for (int axis = 0; axis < 3; ++axis) {
-        const sign na = k.sgn([=](auto L) { return pick(n_of(L), axis); });
+        const sign na = arith::structural_sgn(k, [=](auto L) { return pick(n_of(L), axis); });
         if (na == sign::zero) continue;
         // Non-degenerate triangle, line parallel to its plane: coplanar iff the origin is in it.
-        const sign num = k.sgn([=](auto L) { return arith::dot(n_of(L), arith::lift(L, a) - s.O(L)); });
-        if (num != sign::zero) return false;
-        if (point_in_triangle(k, s.o, t)) return true;
+        if (!arith::structural_zero(k, [=](auto L) { return arith::dot(n_of(L), arith::lift(L, a) - s.O(L)); })) return false;
+        if (in_projected_triangle(k, s.o, t, axis, na)) return true; // s.o is in the plane
         return linear_linear_2d(k, s, as_linear(segment3{a, b}), axis) || linear_linear_2d(k, s, as_linear(segment3{b, c}), axis) ||
                linear_linear_2d(k, s, as_linear(segment3{c, a}), axis);
     }
@@ -84,25 +87,32 @@ template <class K>
            linear_linear(k, s, as_linear(segment3{c, a}));
 }
 
+// A point x in the plane of a non-degenerate triangle lies in it iff its projection along axis
+// lies in the projected triangle, whose orientation is na, the sign of the normal's component
+// along axis (nonzero).
+template <class K>
+[[nodiscard]] constexpr bool in_projected_triangle(K& k, point3 x, const triangle3& t, int axis, sign na) {
+    auto side = [&](point3 u, point3 v) {
+        return k.sgn([=](auto L) {
+            const auto U = arith::lift(L, u);
+            return arith::cross(drop_axis(arith::lift(L, v) - U, axis), drop_axis(arith::lift(L, x) - U, axis));
+        });
+    };
+    return side(t.a, t.b) != -na && side(t.b, t.c) != -na && side(t.c, t.a) != -na;
+}
+
 // Closed triangle (or its hull when degenerate) contains the point x.
 template <class K>
 [[nodiscard]] constexpr bool point_in_triangle(K& k, point3 x, const triangle3& t) {
     const point3 a = t.a, b = t.b, c = t.c;
-    if (!arith::is_zero(k, [=](auto L) { return poly::orient3d(L, a, b, c, x); })) return false;
+    if (!arith::structural_zero(k, [=](auto L) { return poly::orient3d(L, a, b, c, x); })) return false; // see linear_triangle
     for (int axis = 0; axis < 3; ++axis) {
-        const sign na = k.sgn([=](auto L) {
+        const sign na = arith::structural_sgn(k, [=](auto L) {
             const auto A = arith::lift(L, a);
             return pick(arith::cross(arith::lift(L, b) - A, arith::lift(L, c) - A), axis);
         });
         if (na == sign::zero) continue;
-        auto side = [&](point3 u, point3 v) {
-            return k.sgn([=](auto L) {
-                const auto U = arith::lift(L, u);
-                return arith::cross(drop_axis(arith::lift(L, v) - U, axis), drop_axis(arith::lift(L, x) - U, axis));
-            });
-        };
-        const sign s = na; // the projected triangle's orientation equals the sign of n_axis
-        return side(a, b) != -s && side(b, c) != -s && side(c, a) != -s;
+        return in_projected_triangle(k, x, t, axis, na);
     }
     // Degenerate: x on one of the edges (a zero-length segment is its point).
     const linear3 px{x, vec3{0, 0, 0}, x, extent::segment};

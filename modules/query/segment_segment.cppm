@@ -295,16 +295,18 @@ template <class K>
                arith::is_zero(k, [&](auto L) { return L(a.y) - L(b.y); }) &&
                arith::is_zero(k, [&](auto L) { return L(a.z) - L(b.z); });
     }
+    // These signs are zero for coplanar objects, by structure in one plane z = c: the filter pass
+    // proves those zeros (arith::structural_sgn, structural_zero), so such a pair needs no exact pass.
     if (!r.is_point()) {
-        if (!arith::is_zero(k, [&](auto L) { return arith::det3(s.D(L), r.D(L), r.O(L) - s.O(L)); })) return false; // skew
+        if (!arith::structural_zero(k, [&](auto L) { return arith::det3(s.D(L), r.D(L), r.O(L) - s.O(L)); })) return false; // skew
         for (int axis = 0; axis < 3; ++axis) {
-            const sign c = k.sgn([&](auto L) { return pick(arith::cross(s.D(L), r.D(L)), axis); });
+            const sign c = arith::structural_sgn(k, [&](auto L) { return pick(arith::cross(s.D(L), r.D(L)), axis); });
             if (c != sign::zero) return crossing_2d(k, s, r, axis, c);
         }
     }
     // Parallel, or r a point: r must lie on s's line.
     for (int axis = 0; axis < 3; ++axis)
-        if (!arith::is_zero(k, [&](auto L) { return pick(arith::cross(s.D(L), r.O(L) - s.O(L)), axis); })) return false;
+        if (!arith::structural_zero(k, [&](auto L) { return pick(arith::cross(s.D(L), r.O(L) - s.O(L)), axis); })) return false;
     return collinear_overlap(k, s, r);
 }
 
