@@ -32,6 +32,16 @@ double random_double(support::rng& r) {
         if (std::isfinite(x)) return r.integer(0, 3) == 0 ? x : std::ldexp(r.uniform(-1, 1), r.integer(-60, 60));
     }
 }
+// The sign of det[p0 - p3; p1 - p3; p2 - p3] in rationals.
+sign exact_orientation(const point3 (&p)[4]) {
+    auto diff = [&](int k, int axis) { return Q(axis == 0 ? p[k].x : (axis == 1 ? p[k].y : p[k].z)) - Q(axis == 0 ? p[3].x : (axis == 1 ? p[3].y : p[3].z)); };
+    rational m[3][3];
+    for (int k = 0; k < 3; ++k)
+        for (int j = 0; j < 3; ++j) m[k][j] = diff(k, j);
+    const rational v = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                       m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    return v > 0 ? sign::positive : (v < 0 ? sign::negative : sign::zero);
+}
 } // namespace
 
 TEST_CASE("arith: two_sum, two_diff and two_product are error-free", "[arith]") {
@@ -129,13 +139,7 @@ TEST_CASE("arith: the settling filter kernel settles exact zeros, never wrongly"
             const auto o = arith::lift(L, p[3]);
             return arith::det3(arith::lift(L, p[0]) - o, arith::lift(L, p[1]) - o, arith::lift(L, p[2]) - o);
         };
-        auto diff = [&](int k, int axis) { return Q(axis == 0 ? p[k].x : (axis == 1 ? p[k].y : p[k].z)) - Q(axis == 0 ? p[3].x : (axis == 1 ? p[3].y : p[3].z)); };
-        rational m[3][3];
-        for (int k = 0; k < 3; ++k)
-            for (int j = 0; j < 3; ++j) m[k][j] = diff(k, j);
-        const rational v = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-                           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-        const sign want = v > 0 ? sign::positive : (v < 0 ? sign::negative : sign::zero);
+        const sign want = exact_orientation(p);
         arith::settling_filter_kernel k;
         arith::filter_kernel plain;
         const sign s = k.sgn(f);
@@ -186,13 +190,7 @@ TEST_CASE("arith: zeros by structure are proven exactly, never for a nonzero or 
             if (e.valid) ++claimed_non_finite;
             continue;
         }
-        auto diff = [&](int j, int axis) { return Q(axis == 0 ? p[j].x : (axis == 1 ? p[j].y : p[j].z)) - Q(axis == 0 ? p[3].x : (axis == 1 ? p[3].y : p[3].z)); };
-        rational m[3][3];
-        for (int j = 0; j < 3; ++j)
-            for (int a = 0; a < 3; ++a) m[j][a] = diff(j, a);
-        const rational v = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-                           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-        const sign want = v > 0 ? sign::positive : (v < 0 ? sign::negative : sign::zero);
+        const sign want = exact_orientation(p);
         if (x != want) ++wrong;
         if (want == sign::zero) ++zeros;
         if (k.failed()) continue;
