@@ -318,9 +318,9 @@ template <class F>
     // Stage 1a: a zero by structure, then every operation exact in double (exactly touching
     // inputs: an exact zero, which no filter can prove, is the commonest reason to be here). Only
     // where the filter's value, the same expression in plain double, is zero (rounded_zero, from
-    // finite_zero, which also vouches for the inputs' finiteness): where this stage succeeds, that value is the exact
-    // one, so it can settle a zero only there; a nonzero sign it would settle, the stages below
-    // settle as well (skipping it is always sound, never wrong).
+    // finite_zero, which also vouches for the inputs' finiteness): where this stage succeeds,
+    // that value is the exact one, so it can settle a zero only there; a nonzero sign it would
+    // settle, the stages below settle as well (skipping it is always sound, never wrong).
     if (rounded_zero) {
         if (zero_by_structure(f)) return sign::zero;
         if (const exact_double x = f(lift_exact_double{}); x.exact) return sign_of_double(x.v);
