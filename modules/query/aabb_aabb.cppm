@@ -12,6 +12,9 @@ import incidence.shapes;
 
 export namespace incidence::pair {
 
+// Comparisons alone decide it, in every tier: query.cppm's decide_pair runs the body once, with
+// no filter pass around it (by_comparisons).
+[[nodiscard]] consteval bool decided_by_comparisons(const aabb3*, const aabb3*) { return true; }
 template <class K>
 [[nodiscard]] constexpr bool intersects(K&, const aabb3& a, const aabb3& b) {
     return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y &&

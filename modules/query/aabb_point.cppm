@@ -14,6 +14,9 @@ import incidence.shapes;
 
 export namespace incidence::pair {
 
+// Comparisons alone decide it, in every tier: query.cppm's decide_pair runs the body once, with
+// no filter pass around it (by_comparisons).
+[[nodiscard]] consteval bool decided_by_comparisons(const aabb3*, const point3*) { return true; }
 template <class K>
 [[nodiscard]] constexpr bool intersects(K&, const aabb3& b, const point3& p) {
     return b.min.x <= p.x && p.x <= b.max.x && b.min.y <= p.y && p.y <= b.max.y && b.min.z <= p.z &&

@@ -13,6 +13,9 @@ import :segment_segment;
 
 export namespace incidence::pair {
 
+// Comparisons alone decide it, in every tier: query.cppm's decide_pair runs the body once, with
+// no filter pass around it (by_comparisons).
+[[nodiscard]] consteval bool decided_by_comparisons(const point2*, const point2*) { return true; }
 template <class K>
 [[nodiscard]] constexpr bool intersects(K&, const point2& p, const point2& q) {
     return finite(p) && p.x == q.x && p.y == q.y; // an infinite point is no shape
