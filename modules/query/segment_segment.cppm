@@ -300,7 +300,13 @@ template <class K>
     if (!r.is_point()) {
         if (!arith::structural_zero(k, [&](auto L) { return arith::det3(s.D(L), r.D(L), r.O(L) - s.O(L)); })) return false; // skew
         for (int axis = 0; axis < 3; ++axis) {
-            const sign c = arith::structural_sgn(k, [&](auto L) { return pick(arith::cross(s.D(L), r.D(L)), axis); });
+            const auto component = [&](auto L) { return pick(arith::cross(s.D(L), r.D(L)), axis); };
+            // In a filter pass the structure first (compares only): the skew test's zero above
+            // was proven by structure or settled exactly (so both directions are finite), or the
+            // pass has failed already and its answer is not used. Random lines never get here.
+            if constexpr (__is_base_of(arith::filter_kernel, K))
+                if (arith::zero_by_structure(component)) continue;
+            const sign c = arith::structural_sgn(k, component);
             if (c != sign::zero) return crossing_2d(k, s, r, axis, c);
         }
     }
