@@ -2,6 +2,32 @@
 #include "bench.hpp"
 
 namespace bench {
+namespace {
+// orient3d(a, b, c, d) = det[a - d; b - d; c - d] behind the semi-static filter with CGAL's error
+// constant (5.1107127829973299e-15 times the largest |difference| of each coordinate, trusted
+// while those lie in [1e-97, 1e102]: Pion's static filters, CGAL's Filtered_kernel
+// Static_filters/Orientation_3.h), the exact tier where it is not certain. The cheapest published
+// rigorous filter for orient3d: what any filter costs beside plain double, measured in one run
+// with exact/ and approximate/orient3d.
+[[gnu::always_inline]] inline sign orient3d_static_filter(point3 a, point3 b, point3 c, point3 d) {
+    const double u[3] = {a.x - d.x, a.y - d.y, a.z - d.z}, v[3] = {b.x - d.x, b.y - d.y, b.z - d.z},
+                 w[3] = {c.x - d.x, c.y - d.y, c.z - d.z};
+    double m[3];
+    for (int k = 0; k < 3; ++k) {
+        const double x = std::abs(u[k]), y = std::abs(v[k]), z = std::abs(w[k]);
+        m[k] = x < y ? (y < z ? z : y) : (x < z ? z : x);
+    }
+    const double det = u[0] * (v[1] * w[2] - v[2] * w[1]) + u[1] * (v[2] * w[0] - v[0] * w[2]) + u[2] * (v[0] * w[1] - v[1] * w[0]);
+    const double eps = 5.1107127829973299e-15 * m[0] * m[1] * m[2];
+    const double lo = std::min({m[0], m[1], m[2]}), hi = std::max({m[0], m[1], m[2]});
+    if (lo >= 1e-97 && hi < 1e102) {
+        if (det > eps) return sign::positive;
+        if (det < -eps) return sign::negative;
+    }
+    return orient3d(a, b, c, d);
+}
+} // namespace
+
 void register_classic_rays(bool near) {
     const std::string dist = near ? "near_degenerate" : "random";
     {
@@ -65,6 +91,8 @@ void register_classic_rays(bool near) {
         reg("exact/orient3d/points/" + dist, cs, t, check::exact, [](const o3& c) { return orient3d(c.a, c.b, c.c, c.d) == sign::positive; });
         reg("approximate/orient3d/points/" + dist, cs, t, check::approximate,
             [](const o3& c) { return orient3d<approximate>(c.a, c.b, c.c, c.d) == sign::positive; });
+        reg("static_filter_double/orient3d/points/" + dist, cs, t, check::exact,
+            [](const o3& c) { return orient3d_static_filter(c.a, c.b, c.c, c.d) == sign::positive; });
         reg("cgal_epick/orient3d/points/" + dist, cs, t, check::exact, [](const o3& c) {
             double a[3], b[3], cc[3], d[3];
             arr(c.a, a); arr(c.b, b); arr(c.c, cc); arr(c.d, d);
