@@ -19,9 +19,9 @@
 // face planes rounded, each value widened by a proven error bound (tetra::rounded_locate; for a
 // triangle, its own plane and the tetrahedron's edges through it come before them:
 // rounded_triangle_side), then looks for an edge clearly through a face (rounded_crossing) and a
-// clearly separating edge axis (rounded_edge_axes_apart); the signs decide what that leaves. A line or a ray has its own stage
-// (rounded_line_meets: its side of each edge). (For a lone point, as in
-// point_tetrahedron and contains, the stage measured slower than the signs alone.)
+// clearly separating edge axis (rounded_edge_axes_apart); the signs decide what that leaves. A
+// line or a ray has its own stage (rounded_line_meets: its side of each edge). (For a lone point,
+// as in point_tetrahedron and contains, the stage measured slower than the signs alone.)
 // Source: Shewchuk, "Adaptive precision floating-point arithmetic and fast robust geometric
 // predicates" (1997) for orient3d; Ericson, Real-Time Collision Detection (2005), section 5.4.2
 // (point in tetrahedron by the four face orientations); CGAL's Tetrahedron_3 do_intersect
@@ -170,6 +170,15 @@ struct rounded_located {
     for (int j = 0; j < n; ++j) r.status[j] = inside[j] ? 1 : r.status[j];
     r.crossings = largest <= 0x1p500;
     return r;
+}
+
+// What rounded_locate's table decides alone for the points' hull (n points): 0 apart (every point
+// clearly beyond one face plane), 1 meets (a point clearly inside t), -1 neither.
+[[nodiscard]] constexpr int rounded_verdict(const rounded_located& r, int n) {
+    if (r.apart) return 0;
+    for (int j = 0; j < n; ++j)
+        if (r.status[j] == 1) return 1;
+    return -1;
 }
 
 // Does the segment from point p to point q of rounded_locate's table clearly cross t's boundary
@@ -422,9 +431,7 @@ template <class K, class Meets>
         if (n == 3)
             if (const int s = rounded_triangle_side(pts, t); s >= 0) return s == 1;
         const rounded_located r = rounded_locate(t, pts, n);
-        if (r.apart) return false;
-        for (int j = 0; j < n; ++j)
-            if (r.status[j] == 1) return true;
+        if (const int d = rounded_verdict(r, n); d >= 0) return d == 1;
         // x is convex: the segment between two of its points lies in it
         if (n <= 4) {
             for (int p = 0; p < n; ++p)

@@ -39,16 +39,10 @@ template <class K>
     const point3 vs[4] = {s.a, s.b, s.c, s.d}, vt[4] = {t.a, t.b, t.c, t.d};
     if (arith::rounded_stage_applies<K>()) { // the rounded face planes of each, first
         // t's vertices against s's planes decide alone often enough that t's planes wait for them
-        auto decides = [](const tetra::rounded_located& r) {
-            if (r.apart) return 0;
-            for (int j = 0; j < 4; ++j)
-                if (r.status[j] == 1) return 1;
-            return -1;
-        };
         const tetra::rounded_located in_s = tetra::rounded_locate(s, vt, 4);
-        if (const int d = decides(in_s); d >= 0) return d == 1;
+        if (const int d = tetra::rounded_verdict(in_s, 4); d >= 0) return d == 1;
         const tetra::rounded_located in_t = tetra::rounded_locate(t, vs, 4);
-        if (const int d = decides(in_t); d >= 0) return d == 1;
+        if (const int d = tetra::rounded_verdict(in_t, 4); d >= 0) return d == 1;
         for (int p = 0; p < 4; ++p) // an edge of one clearly through a face of the other
             for (int q = p + 1; q < 4; ++q)
                 if (tetra::rounded_crossing(in_s, p, q) || tetra::rounded_crossing(in_t, p, q)) return true;
