@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 import incidence;
+import incidence.detail;
 #include "../tests/support/testing.hpp"
 #include "../tests/support/obb_cases.hpp"
 #include "../tests/support/flat_cases.hpp"

@@ -45,7 +45,7 @@ void register_classic_rays(bool near) {
             [](const rt& c) { return method::ray_triangle_moller_trumbore(c.r, c.t).has_value(); });
         reg("sign_algorithm_double/intersects/ray_triangle/" + dist, cs, t, check::approximate, [](const rt& c) {
             arith::approx_kernel k;
-            return pair::intersects(k, c.r, c.t);
+            return detail::intersects(k, c.r, c.t);
         });
         reg("exact/intersection/ray_triangle/" + dist, cs, t, check::exact, [](const rt& c) { return intersection(c.r, c.t).has_value(); });
         // Epick builds Ray_3(point, vector) by rounding point + vector: not exact for such rays.
@@ -69,7 +69,7 @@ void register_classic_rays(bool near) {
         reg("woo/intersects/aabb_ray/" + dist, cs, t, check::approximate, [](const ab& c) { return method::aabb_ray_woo(c.b, c.r); });
         reg("sign_algorithm_double/intersects/aabb_ray/" + dist, cs, t, check::approximate, [](const ab& c) {
             arith::approx_kernel k;
-            return pair::intersects(k, c.b, c.r);
+            return detail::intersects(k, c.b, c.r);
         });
         reg("cgal_epick/intersects/aabb_ray/" + dist, cs, t, check::approximate, [](const ab& c) {
             double o[3], d[3], mn[3], mx[3];

@@ -79,7 +79,7 @@ void register_classic_sat(bool near) {
         for (const auto& c : cs) t.push_back(truth(c));
         reg("sign_algorithm_double/intersects/aabb_triangle/" + dist, cs, t, check::approximate, [](const bt& c) {
             arith::approx_kernel k;
-            return pair::intersects(k, c.b, c.t);
+            return detail::intersects(k, c.b, c.t);
         });
         reg("cgal_epick/intersects/aabb_triangle/" + dist, cs, t, check::approximate, [](const bt& c) {
             double mn[3], mx[3], a[3], b[3], cc[3];

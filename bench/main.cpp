@@ -13,6 +13,7 @@ void register_halfspace(bool near);
 void register_classic_rays(bool near);
 void register_classic_sat(bool near);
 void register_contains(bool near);
+void register_intersection(bool near);
 } // namespace bench
 
 int main(int argc, char** argv) {
@@ -26,6 +27,7 @@ int main(int argc, char** argv) {
         bench::register_classic_rays(near);
         bench::register_classic_sat(near);
         bench::register_contains(near);
+        bench::register_intersection(near);
     }
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;

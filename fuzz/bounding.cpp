@@ -13,6 +13,7 @@
 #include <span>
 #include <vector>
 import incidence;
+import incidence.detail;
 
 using namespace incidence;
 

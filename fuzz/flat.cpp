@@ -31,6 +31,7 @@
 #include <cstring>
 #include <stdexcept>
 import incidence;
+import incidence.detail;
 #include "contracts.hpp"
 #include "partners.hpp"
 #include "../tests/support/testing.hpp"

@@ -23,6 +23,7 @@
 #include <cstdlib>
 #include <cstring>
 import incidence;
+import incidence.detail;
 #include "contracts.hpp"
 #include "../tests/support/lp_shapes.hpp"
 

@@ -27,6 +27,7 @@
 #include <optional>
 #include <stdexcept>
 import incidence;
+import incidence.detail;
 #include "contracts.hpp"
 #include "partners.hpp"
 #include "../tests/support/testing.hpp"

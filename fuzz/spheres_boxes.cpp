@@ -73,7 +73,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         contracts(ray, a, oracle::ray_ball(P, Q, C, a.radius));
         if (const auto h = intersection(box, ray); h && !oracle::is_rounded_ray_box_t(P, Q, mn, mx, h->t_enter, h->t_exit))
             std::abort();
-        if (const auto h = intersection(ray, a); h && !oracle::is_rounded_ray_ball_t(P, Q, C, a.radius, h->t)) std::abort();
+        if (const auto h = intersection(ray, a); h && !oracle::is_rounded_ray_ball_t(P, Q, C, a.radius, h->t_enter)) std::abort();
     }
     return 0;
 }

@@ -25,10 +25,14 @@ import incidence.core;
 import :eft;
 import :expansion;
 import :filtered;
-import :filtered2;
+import :filtered_dd;
 import :dyadic;
 
 export namespace incidence::arith {
+
+// What a kernel makes of a query's values (value.cppm): plain double, an enclosing interval, or
+// the correctly rounded double.
+enum class value_mode : unsigned char { plain, enclosure, rounded };
 
 // --- generic small vector algebra over any number type --------------------------------------
 template <class T>
@@ -65,6 +69,11 @@ template <class A, class B>
     using T = decltype(a.y * b.z - a.z * b.y);
     return v3<T>{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
+// The vector a times the scalar s.
+template <class A, class S>
+[[nodiscard]] constexpr auto scaled(const v3<A>& a, const S& s) {
+    return v3<decltype(a.x * s)>{a.x * s, a.y * s, a.z * s};
+}
 // det[a; b; c] = a . (b x c)
 template <class A, class B, class C>
 [[nodiscard]] constexpr auto det3(const v3<A>& a, const v3<B>& b, const v3<C>& c) {
@@ -86,8 +95,8 @@ struct lift_double {
 struct lift_filter {
     [[nodiscard]] constexpr filtered<0> operator()(double x) const { return lift_filtered(x); }
 };
-struct lift_filter2 {
-    [[nodiscard]] constexpr filtered2<0> operator()(double x) const { return lift_filtered2(x); }
+struct lift_filter_dd {
+    [[nodiscard]] constexpr filtered_dd<0> operator()(double x) const { return lift_filtered_dd(x); }
 };
 struct lift_expansion {
     int shift = 0; // inputs are scaled by 2^shift (exact inside the safe window)
@@ -337,7 +346,7 @@ template <class F>
         if (shift != 0)
             if (const int s = scaled_filter_sign(f, shift); s != 0) return to_sign(s);
     }
-    if (const int s = proven_sign(f(lift_scaled<lift_filter2>{power_of_two(shift)})); s != 0) return to_sign(s);
+    if (const int s = proven_sign(f(lift_scaled<lift_filter_dd>{power_of_two(shift)})); s != 0) return to_sign(s);
     if (in_range) r = f(lift_range{});
     if (!r.finite) {
         valid = false;
@@ -365,6 +374,7 @@ template <class F>
 
 // --- kernels ---------------------------------------------------------------------------------
 struct approx_kernel {
+    static constexpr value_mode values = value_mode::plain;
     template <class F>
     [[nodiscard, gnu::always_inline]] constexpr sign sgn(const F& f) { return sign_of_double(f(lift_double{})); }
     template <class F>
@@ -380,10 +390,11 @@ template <class F>
 [[nodiscard, gnu::noinline]] constexpr int settle_cheaply(F f, double factor, bool rounded_zero) {
     if (rounded_zero)
         if (const exact_double x = f(lift_scaled<lift_exact_double>{factor}); x.exact) return x.v > 0.0 ? 1 : (x.v < 0.0 ? -1 : 0);
-    if (const int s = proven_sign(f(lift_scaled<lift_filter2>{factor})); s != 0) return s;
+    if (const int s = proven_sign(f(lift_scaled<lift_filter_dd>{factor})); s != 0) return s;
     return 2;
 }
 struct filter_kernel {
+    static constexpr value_mode values = value_mode::enclosure;
     // The permanent of the last sign the filter could not prove (0 or more, or NaN), -1 while
     // every sign is proven. One store where a flag took one, so the certain path is unchanged;
     // it tells whether scaling the inputs could help (in_trusted_range).
@@ -486,6 +497,14 @@ struct settling_filter_kernel : filter_kernel {
     }
 };
 
+// The exact tier's filter pass for a query with values: the signs of filter kernel Base, the values
+// correctly rounded (value.cppm); a sign it cannot prove sends the query to the exact kernel, as in
+// a yes/no query.
+template <class Base>
+struct rounding_kernel : Base {
+    static constexpr value_mode values = value_mode::rounded;
+};
+
 // The filter on every input times one power of two, for a whole query whose scene lies far from
 // scale 1 (near 2^-500 or 2^500 the filter's permanents leave its trusted range, whatever the
 // configuration). A homogeneous predicate of degree d only changes by the factor 2^(d s), so its
@@ -502,6 +521,7 @@ struct lift_scaled_filter {
     }
 };
 struct scaled_filter_kernel {
+    static constexpr value_mode values = value_mode::enclosure;
     double factor;          // 2^s
     double unproven = -1.0; // as in filter_kernel
     [[nodiscard]] constexpr bool failed() const { return !(unproven < 0.0); }
@@ -545,6 +565,7 @@ template <class F>
 }
 
 struct exact_kernel {
+    static constexpr value_mode values = value_mode::rounded;
     bool valid = true; // false when a predicate saw a NaN or infinite input
     template <class F>
     [[nodiscard, gnu::always_inline]] constexpr sign sgn(const F& f) { return exact_sign(f, valid); }

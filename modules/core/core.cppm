@@ -3,3 +3,4 @@ export module incidence.core;
 export import :vec;
 export import :tier;
 export import :error;
+export import :hits;

@@ -1,5 +1,6 @@
 // Signs, certainties and the four precision tiers (DESIGN.md section 1).
 export module incidence.core:tier;
+import :vec;
 
 export namespace incidence {
 
@@ -28,10 +29,21 @@ concept tier = __is_same(T, exact) || __is_same(T, conservative) || __is_same(T,
                __is_same(T, approximate);
 
 // A closed interval [lo, hi] that contains the true value: what the conservative and
-// aggressive tiers return for a computed quantity (a distance, a parameter t).
+// aggressive tiers return for a computed quantity (a distance, a parameter t). An end may be
+// infinite (a parameter whose line lies in a plane, a denominator not proven nonzero).
 struct interval {
     double lo, hi;
     [[nodiscard]] constexpr bool contains(double x) const { return lo <= x && x <= hi; }
+    [[nodiscard]] constexpr double width() const { return hi - lo; }
+    friend constexpr bool operator==(const interval&, const interval&) = default;
+};
+// Three intervals: the box that contains a computed point or vector (a hit point, a normal) in
+// the conservative and aggressive tiers.
+struct interval3 {
+    interval x, y, z;
+    [[nodiscard]] constexpr bool contains(point3 p) const { return x.contains(p.x) && y.contains(p.y) && z.contains(p.z); }
+    [[nodiscard]] constexpr bool contains(vec3 v) const { return x.contains(v.x) && y.contains(v.y) && z.contains(v.z); }
+    friend constexpr bool operator==(const interval3&, const interval3&) = default;
 };
 
 // Kleene three-valued logic on certainties.

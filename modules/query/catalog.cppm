@@ -12,6 +12,7 @@ import incidence.core;
 import incidence.arith;
 import incidence.shapes;
 import incidence.query;
+import incidence.detail;
 
 export namespace incidence::catalog {
 
@@ -35,7 +36,7 @@ struct family {
 template <class A, class B>
 [[nodiscard]] constexpr bool signs_in_double(const A& a, const B& b) {
     arith::approx_kernel k;
-    return pair::intersects(k, a, b);
+    return detail::intersects(k, a, b);
 }
 
 inline constexpr std::tuple families{

@@ -5,6 +5,7 @@
 #include <limits>
 #include <utility>
 import incidence;
+import incidence.detail;
 #include "../support/testing.hpp"
 
 namespace test_arith_arith { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
@@ -317,7 +318,7 @@ TEST_CASE("arith: the double-double filter never claims a wrong sign, near cance
         const double a = std::ldexp(r.uniform(0.5, 1), r.integer(-300, 300)), b = std::ldexp(r.uniform(0.5, 1), r.integer(-300, 300));
         const double x[4] = {a, support::nudge(a * b / b, r.integer(-3, 3)), support::nudge(b, r.integer(-2, 2)), b};
         const auto f = [&](auto L) { return L(x[0]) * L(x[2]) - L(x[1]) * L(x[3]) + (L(x[0]) - L(x[1])) * (L(x[2]) - L(x[3])); };
-        const int fs = arith::proven_sign(f(arith::lift_filter2{}));
+        const int fs = arith::proven_sign(f(arith::lift_filter_dd{}));
         const rational v = Q(x[0]) * Q(x[2]) - Q(x[1]) * Q(x[3]) + (Q(x[0]) - Q(x[1])) * (Q(x[2]) - Q(x[3]));
         const int t = v > 0 ? 1 : (v < 0 ? -1 : 0);
         ++n;

@@ -2,6 +2,7 @@
 #include <catch2/catch_test_macros.hpp>
 #include <span>
 import incidence;
+import incidence.detail;
 #include "../support/testing.hpp"
 #include "../support/point_sets.hpp"
 

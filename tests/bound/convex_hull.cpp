@@ -8,6 +8,7 @@
 #include <span>
 #include "../oracle/cgal_oracle.hpp"
 import incidence;
+import incidence.detail;
 #include "../support/testing.hpp"
 #include "../support/point_sets.hpp"
 

@@ -5,6 +5,7 @@
 #include <span>
 #include "../oracle/cgal_oracle.hpp"
 import incidence;
+import incidence.detail;
 #include "../support/testing.hpp"
 #include "../support/point_sets.hpp"
 #include "../support/box_checks.hpp"

@@ -208,6 +208,24 @@ bool is_rounded_segment_triangle_t(const double p[3], const double q[3], const d
     return first_contact_rounded(CGAL::intersection(K::Segment_3(P(p), P(q)), K::Triangle_3(P(a), P(b), P(c))), P(p),
                                  P(q) - P(p), t);
 }
+namespace {
+FT point_box_sqdist(const double p[3], const double mn[3], const double mx[3], bool farthest) {
+    FT s = 0;
+    for (int i = 0; i < 3; ++i) {
+        const FT pi(p[i]), lo(mn[i]), hi(mx[i]);
+        FT g = 0;
+        if (farthest) g = CGAL::max(CGAL::abs(pi - lo), CGAL::abs(hi - pi));
+        else if (pi < lo) g = lo - pi;
+        else if (pi > hi) g = pi - hi;
+        s += g * g;
+    }
+    return s;
+}
+} // namespace
+bool interval_contains_point_box_sqdist(const double p[3], const double mn[3], const double mx[3], bool farthest, double lo, double hi) {
+    const FT s = point_box_sqdist(p, mn, mx, farthest);
+    return FT(lo) <= s && s <= FT(hi);
+}
 bool is_rounded_point_box_sqdist(const double p[3], const double mn[3], const double mx[3], bool farthest, double x) {
     FT s = 0;
     for (int i = 0; i < 3; ++i) {

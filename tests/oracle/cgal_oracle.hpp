@@ -4,6 +4,8 @@
 // Balls, not spheres: CGAL's Sphere_3 is a surface, so ball tests use exact squared distances.
 #pragma once
 #include <array>
+#include <cstddef>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -186,6 +188,7 @@ bool is_rounded_ray_triangle_t(const double o[3], const double d[3], const doubl
 // Same for a segment p -> q: t = (x - p).(q - p) / |q - p|^2 of the first contact.
 bool is_rounded_segment_triangle_t(const double p[3], const double q[3], const double a[3], const double b[3],
                                    const double c[3], double t);
+bool interval_contains_point_box_sqdist(const double p[3], const double mn[3], const double mx[3], bool farthest, double lo, double hi);
 bool is_rounded_point_box_sqdist(const double p[3], const double mn[3], const double mx[3], bool farthest, double x);
 bool is_rounded_ray_box_t(const double o[3], const double d[3], const double mn[3], const double mx[3], double t_enter,
                           double t_exit);
@@ -254,5 +257,57 @@ bool triangle_triangle_epick(const double a[3], const double b[3], const double 
 bool box_box_epick(const double amn[3], const double amx[3], const double bmn[3], const double bmx[3]);
 bool point_in_box_epick(const double p[3], const double mn[3], const double mx[3]);
 int orient3d_epick(const double a[3], const double b[3], const double c[3], const double d[3]);
+
+// The exact values of intersection() (cgal_values.cpp): where a line, a ray or a segment (o and d:
+// a ray's or line's origin and direction, a segment's end points) meets a set, over Epeck by other
+// methods than the library's. exact_hit answers, for each quantity it has: is a double its nearest
+// double (ties to even), does an interval contain it. A span's quantities: t_enter, t_exit and the
+// point at t_enter (where t_enter is -infinity, at the span's parameter nearest 0); a first contact's
+// (triangle, polygon, mesh): t_enter and the point; a triangle's also its barycentrics and normal.
+// `declined` names why a case was not computed (an oriented box with dependent axes).
+struct linear_object {
+    enum kind_t { ray, segment, line } kind;
+    double o[3], d[3];
+};
+enum class quantity : int { t_enter, t_exit, x, y, z, u, v, w, nx, ny, nz };
+class exact_hit {
+  public:
+    exact_hit();
+    ~exact_hit();
+    exact_hit(exact_hit&&) noexcept;
+    exact_hit& operator=(exact_hit&&) noexcept;
+    [[nodiscard]] bool exists() const;
+    [[nodiscard]] bool has(quantity) const;
+    [[nodiscard]] bool rounds_to(quantity, double x) const;
+    [[nodiscard]] bool within(quantity, double lo, double hi) const;
+    [[nodiscard]] double nearest(quantity) const; // approximately, for messages and bounds
+    // mesh: is i a triangle at the first contact (or, for i = -1, does the object start inside)?
+    [[nodiscard]] bool first_triangle_ok(std::size_t i) const;
+    const char* declined = nullptr;
+    struct impl;
+
+  private:
+    [[nodiscard]] bool rounds_to_value(int i, double x) const;
+    std::unique_ptr<impl> p;
+    friend exact_hit exact_plane(const linear_object&, const double[3], double);
+    friend exact_hit exact_halfspaces(const linear_object&, const std::vector<std::array<double, 4>>&);
+    friend exact_hit exact_kdop(const linear_object&, const std::vector<std::array<double, 3>>&, const double*, const double*);
+    friend exact_hit exact_obb(const linear_object&, const double[3], const double[9], const double[3]);
+    friend exact_hit exact_tetrahedron(const linear_object&, const double[12]);
+    friend exact_hit exact_ball(const linear_object&, const double[3], double);
+    friend exact_hit exact_triangle(const linear_object&, const double[3], const double[3], const double[3]);
+    friend exact_hit exact_polygon(const linear_object&, const polygon3_data&);
+    friend exact_hit exact_mesh(const linear_object&, const mesh_data&);
+};
+exact_hit exact_plane(const linear_object& x, const double n[3], double c); // n . p = c
+exact_hit exact_halfspaces(const linear_object& x, const std::vector<std::array<double, 4>>& planes); // n . p <= c each
+exact_hit exact_box(const linear_object& x, const double mn[3], const double mx[3]);
+exact_hit exact_kdop(const linear_object& x, const std::vector<std::array<double, 3>>& dirs, const double* mn, const double* mx);
+exact_hit exact_obb(const linear_object& x, const double c[3], const double axes[9], const double h[3]);
+exact_hit exact_tetrahedron(const linear_object& x, const double v[12]);
+exact_hit exact_ball(const linear_object& x, const double c[3], double r);
+exact_hit exact_triangle(const linear_object& x, const double a[3], const double b[3], const double c[3]);
+exact_hit exact_polygon(const linear_object& x, const polygon3_data& g);
+exact_hit exact_mesh(const linear_object& x, const mesh_data& m);
 
 } // namespace oracle

@@ -25,6 +25,7 @@
 #include <vector>
 #include "../oracle/cgal_oracle.hpp"
 import incidence;
+import incidence.detail;
 #include "../support/testing.hpp"
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
@@ -179,7 +180,7 @@ TEST_CASE("aabb_mesh: contains in blocks glued, overlapping or nested, against t
         [](const mesh3& m, const aabb3& b) {
             for (std::size_t j = 0; j < m.triangles.size(); ++j) {
                 arith::exact_kernel k;
-                if (pair::meets_interior(k, b, m.triangle(j)) && pair::meshq::normal_axis(k, m.triangle(j)) >= 0) return true;
+                if (detail::meets_interior(k, b, m.triangle(j)) && detail::solid_mesh::normal_axis(k, m.triangle(j)) >= 0) return true;
             }
             return false;
         });

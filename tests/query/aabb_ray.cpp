@@ -4,6 +4,7 @@
 #include <catch2/catch_test_macros.hpp>
 #include "../oracle/cgal_oracle.hpp"
 import incidence;
+import incidence.detail;
 #include "../support/testing.hpp"
 #include "../support/check.hpp"
 
@@ -110,7 +111,7 @@ TEST_CASE("aabb_ray: Woo's method against the oracle (independent second algorit
             // point is compared with the face bounds), so its stated margin includes the
             // ray's relative distance to each of the 12 edge lines: det(d, p - o, q - o).
             support_margin::margin_kernel mk;
-            (void)pair::intersects(mk, b, ray);
+            (void)detail::intersects(mk, b, ray);
             const double lo[3] = {b.min.x, b.min.y, b.min.z}, hi[3] = {b.max.x, b.max.y, b.max.z};
             for (int axis = 0; axis < 3; ++axis)
                 for (int corner = 0; corner < 4; ++corner) {
@@ -150,7 +151,7 @@ vec3 stretched(support::rng& r, vec3 d) {
 }
 } // namespace
 
-// The rounded slab parameters (pair::slab_parameters_decide) decide a case only as the exact signs
+// The rounded slab parameters (detail::slab_parameters_decide) decide a case only as the exact signs
 // do, for rays, segments and lines, on the oracle tests' random and near-degenerate cases with
 // directions stretched to 2^+-900 or the subnormal range and a few non-finite coordinates; and they
 // decide most random cases (else the signs would run everywhere).
@@ -164,10 +165,10 @@ TEST_CASE("aabb_ray: the rounded slab parameters never decide against the signs"
         point3 o = ray.origin;
         if (r.integer(0, 99) == 0) o.y = r.coin() ? std::nan("") : (r.coin() ? 1.0 : -1.0) * INFINITY;
         const point3 e{o.x + d.x, o.y + d.y, o.z + d.z};
-        auto check = [&]<pair::slab_extent X>(std::integral_constant<pair::slab_extent, X>) {
-            const int fast = pair::slab_parameters_decide<X>(b, o, d, e);
+        auto check = [&]<detail::slab_extent X>(std::integral_constant<detail::slab_extent, X>) {
+            const int fast = detail::slab_parameters_decide<X>(b, o, d, e);
             arith::exact_kernel k;
-            const bool want = pair::slab_signs<X>(k, b, o, d, e) && k.valid;
+            const bool want = detail::slab_signs<X>(k, b, o, d, e) && k.valid;
             ++n;
             if (!near) ++random_n;
             if (fast < 0) return;
@@ -175,9 +176,9 @@ TEST_CASE("aabb_ray: the rounded slab parameters never decide against the signs"
             if (!near) ++random_decided;
             if ((fast == 1) != want) ++wrong;
         };
-        check(std::integral_constant<pair::slab_extent, pair::slab_extent::ray>{});
-        check(std::integral_constant<pair::slab_extent, pair::slab_extent::segment>{});
-        check(std::integral_constant<pair::slab_extent, pair::slab_extent::line>{});
+        check(std::integral_constant<detail::slab_extent, detail::slab_extent::ray>{});
+        check(std::integral_constant<detail::slab_extent, detail::slab_extent::segment>{});
+        check(std::integral_constant<detail::slab_extent, detail::slab_extent::line>{});
     }
     std::printf("[cases] aabb slab parameters: %ld checks, %ld decided (%ld of %ld random), wrong %ld\n", n, decided, random_decided,
                 random_n, wrong);

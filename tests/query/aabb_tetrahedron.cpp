@@ -10,6 +10,7 @@
 #include <cmath>
 #include "../oracle/cgal_oracle.hpp"
 import incidence;
+import incidence.detail;
 #include "../support/testing.hpp"
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
@@ -63,7 +64,7 @@ TEST_CASE("aabb_tetrahedron: the rounded axes never decide against the oracle", 
         const bool finite_input = r.integer(0, 199) != 0;
         if (!finite_input) t.c.y = r.coin() ? std::nan("") : (r.coin() ? 1.0 : -1.0) * INFINITY;
         const point3 v[4] = {t.a, t.b, t.c, t.d};
-        const int fast = pair::box_triangle_detail::rounded_hull_axes_decide(b, v, edges, faces);
+        const int fast = detail::box_triangle::rounded_hull_axes_decide(b, v, edges, faces);
         ++n;
         one_n += kind == 1;
         if (fast < 0) continue;

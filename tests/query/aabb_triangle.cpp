@@ -9,6 +9,7 @@
 #include <cmath>
 #include "../oracle/cgal_oracle.hpp"
 import incidence;
+import incidence.detail;
 #include "../support/testing.hpp"
 #include "../support/check.hpp"
 #include "../support/obb_cases.hpp"
@@ -189,7 +190,7 @@ TEST_CASE("aabb_triangle: the rounded axes never decide against the oracle", "[a
         }();
         if (r.integer(0, 199) == 0) t.b.z = r.coin() ? std::nan("") : (r.coin() ? 1.0 : -1.0) * INFINITY;
         const point3 v[3] = {t.a, t.b, t.c};
-        const int fast = pair::box_triangle_detail::rounded_axes_decide(b, v);
+        const int fast = detail::box_triangle::rounded_axes_decide(b, v);
         ++n;
         one_n += kind == 1;
         if (fast < 0) continue;

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <limits>
 import incidence;
+import incidence.detail;
 #include "../support/testing.hpp"
 #include "../support/mesh_fixtures.hpp"
 #include "../support/polygon_fixtures.hpp"

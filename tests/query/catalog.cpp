@@ -8,6 +8,7 @@
 #include <tuple>
 #include <string>
 import incidence;
+import incidence.detail;
 #include "../support/testing.hpp"
 #include "../../tools/audit/generators.hpp"
 

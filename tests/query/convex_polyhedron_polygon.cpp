@@ -10,6 +10,7 @@
 #include <cmath>
 #include "../oracle/cgal_oracle.hpp"
 import incidence;
+import incidence.detail;
 #include "../support/testing.hpp"
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"

@@ -11,6 +11,7 @@
 #include <limits>
 #include "../oracle/cgal_oracle.hpp"
 import incidence;
+import incidence.detail;
 #include "../support/testing.hpp"
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
@@ -34,14 +35,14 @@ constexpr kdop<14> near_corner(double b) { return kdop<14>{{b, b, b, -5, -5, -5,
 } // namespace
 
 TEST_CASE("kdop_kdop: the positive circuits of the normals", "[kdop_kdop]") {
-    STATIC_REQUIRE(pair::kdopq::circuits<6>.size() == 3);
-    STATIC_REQUIRE(pair::kdopq::circuits<14>.size() == 41);
-    STATIC_REQUIRE(pair::kdopq::circuits<18>.size() == 119);
-    STATIC_REQUIRE(pair::kdopq::circuits<26>.size() == 777);
+    STATIC_REQUIRE(detail::kdop_slabs::circuits<6>.size() == 3);
+    STATIC_REQUIRE(detail::kdop_slabs::circuits<14>.size() == 41);
+    STATIC_REQUIRE(detail::kdop_slabs::circuits<18>.size() == 119);
+    STATIC_REQUIRE(detail::kdop_slabs::circuits<26>.size() == 777);
     // every certificate combines its normals to zero
     auto zero_sum = []<int K>() {
         const auto d = kdop<K>::directions();
-        for (const auto& c : pair::kdopq::circuits<K>) {
+        for (const auto& c : detail::kdop_slabs::circuits<K>) {
             long long s[3] = {0, 0, 0};
             for (unsigned t = 0; t < static_cast<unsigned>(c.n); ++t) {
                 const int sg = c.upper[t] ? 1 : -1;

@@ -9,6 +9,7 @@
 #include <catch2/catch_test_macros.hpp>
 #include "../oracle/cgal_oracle.hpp"
 import incidence;
+import incidence.detail;
 #include "../support/testing.hpp"
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
@@ -62,7 +63,7 @@ TEST_CASE("line_tetrahedron: the rounded stage never claims what the oracle deni
                                : grid();
         };
         auto [l, t] = ray ? drawn(static_cast<ray3*>(nullptr)) : drawn(static_cast<line3*>(nullptr));
-        const int got = pair::tetra::rounded_line_meets(t, l.origin, l.direction, ray);
+        const int got = detail::tetra::rounded_line_meets(t, l.origin, l.direction, ray);
         ++n;
         one_n += kind == 1;
         if (got < 0) continue;

@@ -5,12 +5,13 @@
 // and 20,000 near-degenerate cases (support/polygon3_cases.hpp: exactly planar star polygons with
 // holes at scales 2^-500..2^500, the other shape at a vertex, an edge point or inside, along the edge,
 // in the plane or across it, nudged by ulps or not); both argument orders, rotated and reversed rings,
-// rewritten partners, exact translations; the rounded crossing stage (planeq::rounded_crossing, for
+// rewritten partners, exact translations; the rounded crossing stage (polygon3d::rounded_crossing, for
 // segments, rays and lines across the plane) against the oracle.
 #include <catch2/catch_test_macros.hpp>
 #include <cmath>
 #include "../oracle/cgal_oracle.hpp"
 import incidence;
+import incidence.detail;
 #include "../support/testing.hpp"
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
@@ -68,7 +69,7 @@ TEST_CASE("point_polygon: oracle, random and near-degenerate", "[point_polygon][
     support::polygon3_oracle<point3>("point_polygon", support::cases(20000), approx_bound);
 }
 TEST_CASE("point_polygon: the rounded crossing stage never claims what the oracle denies", "[point_polygon][polygon_segment][oracle]") {
-    // planeq::rounded_crossing, the filter pass's stage of every pair that crosses a polygon's
+    // polygon3d::rounded_crossing, the filter pass's stage of every pair that crosses a polygon's
     // plane with a segment, ray or line (crossing_inside, linear_meets): for random cases at every
     // scale and at scale 1 and near-degenerate ones (through a vertex or an edge point, inside or
     // just outside, nudged by ulps), each that crosses the plane within its range (plane_contact,
@@ -82,13 +83,13 @@ TEST_CASE("point_polygon: the rounded crossing stage never claims what the oracl
         const auto b = kind == 2 ? support::polygon3_near<B>(r, g, other, unused) : support::polygon3_random<B>(r, g, other, unused);
         r.at_scale_one = false;
         if (!b || !support::finite_partner(*b)) return;
-        const pair::linear3 x = pair::as_linear(*b);
+        const detail::linear3 x = detail::as_linear(*b);
         arith::exact_kernel k;
         sign w = sign::zero;
-        if (!pair::planeq::usable(k, g.g) || pair::planeq::plane_contact(k, g.g, x, w) != pair::planeq::contact::crosses) return;
+        if (!detail::polygon3d::usable(k, g.g) || detail::polygon3d::plane_contact(k, g.g, x, w) != detail::polygon3d::contact::crosses) return;
         ++n;
         one_n += kind == 1;
-        const int got = pair::planeq::rounded_crossing(g.g, x);
+        const int got = detail::polygon3d::rounded_crossing(g.g, x);
         if (got < 0) return;
         ++claimed;
         one_claimed += kind == 1;

@@ -12,6 +12,7 @@
 #include <vector>
 #include "../oracle/cgal_oracle.hpp"
 import incidence;
+import incidence.detail;
 #include "../support/testing.hpp"
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
@@ -105,18 +106,18 @@ TEST_CASE("point_tetrahedron: the rounded stage never claims what the exact sign
             t = tetrahedron3{p(), p(), p(), p()};
             pts = {p(), p(), p()};
         }
-        const auto got = pair::tetra::rounded_locate(t, pts.data(), int(pts.size()));
+        const auto got = detail::tetra::rounded_locate(t, pts.data(), int(pts.size()));
         // An edge between two of the points clearly through a face: that segment meets t.
         for (std::size_t p = 0; p < pts.size(); ++p)
             for (std::size_t q = p + 1; q < pts.size(); ++q)
-                if (pair::tetra::rounded_crossing(got, int(p), int(q))) {
+                if (detail::tetra::rounded_crossing(got, int(p), int(q))) {
                     ++crossing;
                     if (!support::flat_truth(segment3{pts[p], pts[q]}, t) && ++crossing_wrong <= 5)
                         std::printf("  rounded crossing wrong: %s\n", support::shape_str(t).c_str());
                 }
         // A clearly separating edge axis: the points' hull misses t.
         const point3 tv[4] = {t.a, t.b, t.c, t.d};
-        if (pair::tetra::rounded_edge_axes_apart(pts.data(), int(pts.size()), tv, 4)) {
+        if (detail::tetra::rounded_edge_axes_apart(pts.data(), int(pts.size()), tv, 4)) {
             ++axes;
             const std::size_t m = pts.size();
             const bool meets = m == 1   ? support::flat_truth(pts[0], t)
@@ -182,7 +183,7 @@ TEST_CASE("point_tetrahedron: the rounded stage never claims what the exact sign
         const point3 tv[4] = {a, b, c, d};
         const point3 ov[4] = {point3{x.x - u.x, x.y - u.y, x.z - u.z}, point3{x.x + u.x, x.y + u.y, x.z + u.z}, f3, f4};
         ++touching;
-        if (pair::tetra::rounded_edge_axes_apart(ov, 4, tv, 4)) {
+        if (detail::tetra::rounded_edge_axes_apart(ov, 4, tv, 4)) {
             ++axes;
             if (++axes_wrong <= 5) std::printf("  rounded edge axes wrong on touching edges\n");
         }

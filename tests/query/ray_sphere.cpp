@@ -5,6 +5,7 @@
 #include <catch2/catch_test_macros.hpp>
 #include "../oracle/cgal_oracle.hpp"
 import incidence;
+import incidence.detail;
 #include "../support/testing.hpp"
 #include "../support/check.hpp"
 #include "../support/sphere_points.hpp"
@@ -68,13 +69,16 @@ TEST_CASE("ray_sphere: fixtures (solid ball, tangent counts)", "[ray_sphere]") {
     CHECK(intersects(ray3{{1, 0, 0}, {1, 0, 0}}, S));       // origin on the surface, leaving
     const auto h = intersection(ray3{{-5, 0, 0}, {2, 0, 0}}, S);
     REQUIRE(h);
-    CHECK(h->t == 2.0);
+    CHECK(h->t_enter == 2.0);
+    CHECK(h->t_exit == 3.0);
     CHECK(h->point == point3{-1, 0, 0});
     const auto tangent = intersection(ray3{{-5, 1, 0}, {1, 0, 0}}, S);
     REQUIRE(tangent);
-    CHECK(tangent->t == 5.0);
+    CHECK(tangent->t_enter == 5.0);
+    CHECK(tangent->t_exit == 5.0);
     CHECK(tangent->point == point3{0, 1, 0});
-    CHECK(intersection(ray3{{0.5, 0, 0}, {1, 0, 0}}, S)->t == 0.0);
+    CHECK(intersection(ray3{{0.5, 0, 0}, {1, 0, 0}}, S)->t_enter == 0.0);
+    CHECK(intersection(ray3{{0.5, 0, 0}, {1, 0, 0}}, S)->t_exit == 0.5);
 }
 TEST_CASE("ray_sphere: oracle, random", "[ray_sphere][oracle]") {
     support::run_oracle("ray_sphere random", support::cases(100000), approx_bound, random_case, truth, skip, describe);
@@ -92,7 +96,7 @@ TEST_CASE("ray_sphere: exact first hit is correctly rounded; algebraic method ag
         if (method::ray_sphere_algebraic(ray, s).has_value() != t) {
             ++algebraic_wrong;
             support_margin::margin_kernel mk;
-            (void)pair::intersects(mk, ray, s);
+            (void)detail::intersects(mk, ray, s);
             if (mk.min_rel > approx_bound) ++algebraic_outside;
         }
         const auto h = intersection(ray, s);
@@ -100,8 +104,8 @@ TEST_CASE("ray_sphere: exact first hit is correctly rounded; algebraic method ag
         double o[3], d[3], c[3];
         arr(ray.origin, o); arr(ray.direction, d); arr(s.center, c);
         ++checked;
-        if (!oracle::is_rounded_ray_ball_t(o, d, c, s.radius, h->t) && ++bad <= 5)
-            std::printf("  t %a not correctly rounded: %s\n", h->t, describe(ray, s).c_str());
+        if (!oracle::is_rounded_ray_ball_t(o, d, c, s.radius, h->t_enter) && ++bad <= 5)
+            std::printf("  t %a not correctly rounded: %s\n", h->t_enter, describe(ray, s).c_str());
     }
     std::printf("[cases] ray_sphere exact t: %ld hits checked, %ld not correctly rounded; algebraic method wrong %ld, outside bound %ld\n",
                 checked, bad, algebraic_wrong, algebraic_outside);

@@ -8,12 +8,13 @@
 #include <cstdint>
 #include <vector>
 import incidence;
+import incidence.detail;
 #include "../support/testing.hpp"
 
 namespace test_query_scene_scale { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 
 using namespace incidence;
-namespace scene = incidence::pair::scene;
+namespace scene = incidence::detail::scene;
 
 namespace {
 // A copy with every length times 2^k (exact for the generators below: every length is a normal
@@ -80,7 +81,7 @@ void check(tally& t, const A& a, const B& b, const A& as, const B& bs) {
     if (c == certainty::uncertain) return;
     ++t.cases;
     arith::filter_kernel f;
-    (void)pair::intersects(f, as, bs);
+    (void)detail::intersects(f, as, bs);
     t.first_pass_failed += f.failed();
     const bool yes = c == certainty::yes;
     if (classify(as, bs) != c || intersects(as, bs) != yes || intersects<conservative>(as, bs) != yes ||
@@ -141,7 +142,7 @@ TEST_CASE("scene_scale: classify decides a scene far from scale 1 as at scale 1"
     // Signs of degree 3 in the lengths (orient3d of four vertices) leave the filter's range there:
     // the retry is what decides most of these three. Shapes whose bounding boxes lie apart are
     // decided by comparisons before any sign, so the scenes here are drawn with boxes that meet.
-    auto boxes_meet = [](const auto& a, const auto& b) { return pair::boxes_meet(pair::bounds(a), pair::bounds(b)); };
+    auto boxes_meet = [](const auto& a, const auto& b) { return detail::boxes_meet(detail::bounds(a), detail::bounds(b)); };
     const tally degree3[] = {
         run("triangle_triangle",
             [&](support::rng& r, tally& t, int k) {

@@ -8,12 +8,13 @@
 #include <utility>
 #include <vector>
 import incidence;
+import incidence.detail;
 #include "../support/testing.hpp"
 
 namespace test_query_segment_pieces { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 
 using namespace incidence;
-namespace pieces = incidence::pair::pieces;
+namespace pieces = incidence::detail::pieces;
 
 namespace {
 // t = n / d (negated both when flip), homogeneous of degree 1 over degree 1

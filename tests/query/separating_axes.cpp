@@ -4,31 +4,32 @@
 #include <catch2/catch_test_macros.hpp>
 #include "../oracle/cgal_oracle.hpp"
 import incidence;
+import incidence.detail;
 #include "../support/testing.hpp"
 #include "../support/obb_cases.hpp"
 
 namespace test_query_separating_axes { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 
 using namespace incidence;
-namespace sat = incidence::pair::sat;
+namespace sat = incidence::detail::sat;
 
 TEST_CASE("separating_axes: the box-box fast pass agrees with the general path", "[separating_axes]") {
     support::rng r(support::seed() + 7);
     long decided = 0, bad = 0, n = 0;
     for (long i = 0; i < support::cases(20000); ++i) {
         const auto [a, b] = (i % 2) ? support::obb_case<obb3, obb3>::near(r) : support::obb_case<obb3, obb3>::random(r);
-        const auto za = sat::of(a), zb = sat::of(b);
+        const auto za = sat::zonotope_of(a), zb = sat::zonotope_of(b);
         arith::filter_kernel f;
         const int fast = sat::box_box_fast(f, za, zb);
         arith::exact_kernel e;
-        const bool general = pair::intersects(e, a, b); // exact: the LP-checked answer of tests/query/obb_obb.cpp
+        const bool general = detail::intersects(e, a, b); // exact: the LP-checked answer of tests/query/obb_obb.cpp
         ++n;
         if (fast >= 0) {
             ++decided;
             if ((fast == 1) != general) ++bad;
         }
         arith::approx_kernel k; // in the order the approximate tier takes (its rounding depends on it)
-        const int approx = pair::obb_before(a, b) ? sat::box_box_fast(k, za, zb) : sat::box_box_fast(k, zb, za);
+        const int approx = detail::obb_before(a, b) ? sat::box_box_fast(k, za, zb) : sat::box_box_fast(k, zb, za);
         if (approx >= 0 && (approx == 1) != intersects<approximate>(a, b)) ++bad;
     }
     std::printf("[cases] separating_axes fast pass: %ld cases, %ld decided by the filter pass, %ld differ\n", n, decided, bad);

@@ -4,6 +4,7 @@
 #include <catch2/catch_test_macros.hpp>
 #include "../oracle/cgal_oracle.hpp"
 import incidence;
+import incidence.detail;
 #include "../support/testing.hpp"
 #include "../support/check.hpp"
 #include "../support/sphere_points.hpp"
@@ -78,7 +79,7 @@ TEST_CASE("sphere_sphere: contains, every tier against the oracle", "[sphere_sph
         if (contains<approximate>(a, b) != truth_) {
             ++t.approx_wrong;
             support_margin::margin_kernel mk;
-            (void)pair::contains(mk, a, b);
+            (void)detail::contains(mk, a, b);
             if (mk.min_rel > approx_bound) ++t.approx_outside_bound;
         }
     }

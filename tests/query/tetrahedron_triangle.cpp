@@ -9,6 +9,7 @@
 #include <catch2/catch_test_macros.hpp>
 #include "../oracle/cgal_oracle.hpp"
 import incidence;
+import incidence.detail;
 #include "../support/testing.hpp"
 #include "../support/check.hpp"
 #include "../support/flat_checks.hpp"
@@ -59,7 +60,7 @@ TEST_CASE("tetrahedron_triangle: the rounded triangle-side stage never claims wh
                             : kind == 2 ? support::flat_near<tetrahedron3, triangle3>(r)
                                         : grid();
         const point3 fv[3] = {f.a, f.b, f.c};
-        const int got = pair::tetra::rounded_triangle_side(fv, t);
+        const int got = detail::tetra::rounded_triangle_side(fv, t);
         ++n;
         if (got < 0) continue;
         ++claimed;
@@ -82,7 +83,7 @@ TEST_CASE("tetrahedron_triangle: the rounded triangle-side stage never claims wh
         const tetrahedron3 t{point3{m.x - u.x, m.y - u.y, m.z - u.z}, q, d, e};
         const triangle3 f{a, b, c};
         const point3 fv[3] = {f.a, f.b, f.c};
-        const int got = pair::tetra::rounded_triangle_side(fv, t);
+        const int got = detail::tetra::rounded_triangle_side(fv, t);
         ++n, ++beside;
         if (got < 0) continue;
         ++claimed;

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstddef>
 import incidence;
+import incidence.detail;
 #include "../support/mesh_fixtures.hpp"
 #include "../support/polygon_fixtures.hpp"
 #include "../support/kdop_fixtures.hpp"
@@ -116,7 +117,7 @@ static_assert(orient3d(point3{0.1, 0.2, 0.3}, point3{0.2, 0.4, 0.6}, point3{0.3,
 static_assert(orient2d(point2{0.5, 0.5}, point2{12, 12}, point2{24, 24}) == sign::zero);
 static_assert(incircle(point2{0, 0}, point2{1, 0}, point2{0, 1}, point2{1, 1}) == sign::zero);
 // exact values computed at compile time
-static_assert(intersection(ray3{{-5, 0, 0}, {2, 0, 0}}, S)->t == 2.0);
+static_assert(intersection(ray3{{-5, 0, 0}, {2, 0, 0}}, S)->t_enter == 2.0);
 static_assert(intersection(ray3{{0.25, 0.25, 1}, {0, 0, -3}}, T)->t == 1.0 / 3.0);
 static_assert(intersection(B, ray3{{-1, 0.5, 0.5}, {2, 0, 0}})->t_exit == 1.0);
 

@@ -43,8 +43,8 @@ void check_pair(tally& t, const A& a, const B& b, bool truth, double bound, cons
     if (intersects<approximate>(a, b) != truth) {
         ++t.approx_wrong;
         support_margin::margin_kernel mk;
-        if constexpr (requires { pair::intersects(mk, a, b); }) (void)pair::intersects(mk, a, b);
-        else (void)pair::intersects(mk, b, a); // the pair is written in the other order
+        if constexpr (requires { detail::intersects(mk, a, b); }) (void)detail::intersects(mk, a, b);
+        else (void)detail::intersects(mk, b, a); // the pair is written in the other order
         if (mk.min_rel > bound) {
             if (++t.approx_outside_bound <= 5)
                 std::printf("  approximate wrong at margin %g: %s\n", mk.min_rel, describe().c_str());
@@ -116,7 +116,7 @@ void check_contains(tally& t, const A& a, const B& b, bool truth, double bound, 
     if (contains<approximate>(a, b) != truth) {
         ++t.approx_wrong;
         support_margin::margin_kernel mk;
-        (void)pair::contains(mk, a, b);
+        (void)detail::contains(mk, a, b);
         if (mk.min_rel > bound) say("approximate wrong outside its bound", t.approx_outside_bound);
     }
 }

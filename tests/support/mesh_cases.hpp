@@ -220,7 +220,7 @@ inline auto random_mesh_and_box_points(rng& r, mesh_store& store) {
     using namespace incidence;
     mesh_store other;
     (void)mesh_random<point3>(r, store, other);
-    const aabb3 box = incidence::pair::meshq::bounds(store.view());
+    const aabb3 box = incidence::detail::solid_mesh::bounds(store.view());
     return [&r, box] {
         return point3{box.min.x + (box.max.x - box.min.x) * r.uniform(0, 1), box.min.y + (box.max.y - box.min.y) * r.uniform(0, 1),
                       box.min.z + (box.max.z - box.min.z) * r.uniform(0, 1)};
@@ -330,7 +330,7 @@ inline incidence::aabb3 box_in_mesh_near(rng& r, mesh_store& store) {
     case 2: {
         const auto& f = store.t[static_cast<std::size_t>(r.integer(0, static_cast<int>(store.t.size()) - 1))];
         const point3 v[3] = {store.v[f[0]], store.v[f[1]], store.v[f[2]]};
-        b = incidence::pair::meshq::bounds(v, 3);
+        b = incidence::detail::solid_mesh::bounds(v, 3);
         const int axis = r.integer(0, 2);
         double* lo = axis == 0 ? &b.min.x : (axis == 1 ? &b.min.y : &b.min.z);
         double* hi = axis == 0 ? &b.max.x : (axis == 1 ? &b.max.y : &b.max.z);
@@ -432,7 +432,7 @@ inline incidence::aabb3 box_in_blocks(rng& r, mesh_store& store) {
     using namespace incidence;
     const std::array<int, 3> s1 = glued_blocks(r, store);
     aabb3 b{};
-    const aabb3 all = incidence::pair::meshq::bounds(store.view());
+    const aabb3 all = incidence::detail::solid_mesh::bounds(store.view());
     switch (r.integer(0, 3)) {
     case 0: b = aabb3{{0, 0, 0}, {double(s1[0]), double(s1[1]), double(s1[2])}}; break;
     case 1: b = all; break;
@@ -448,7 +448,7 @@ inline incidence::aabb3 box_in_blocks(rng& r, mesh_store& store) {
 inline incidence::triangle3 triangle_in_blocks(rng& r, mesh_store& store) {
     using namespace incidence;
     (void)glued_blocks(r, store);
-    const aabb3 all = incidence::pair::meshq::bounds(store.view());
+    const aabb3 all = incidence::detail::solid_mesh::bounds(store.view());
     triangle3 t{half_point(r, all), half_point(r, all), half_point(r, all)};
     if (r.coin()) { // in a plane x = const, y = const or z = const
         const int axis = r.integer(0, 2);

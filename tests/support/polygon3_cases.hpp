@@ -212,7 +212,7 @@ inline std::optional<std::array<incidence::point3, 3>> points_in_polygon3(rng& r
         auto grid = [&] { return std::ldexp(double(r.integer(-(1 << 20), 1 << 20)), -20); };
         star_polygon(r, r.integer(1, 3), point2{grid(), grid()}, 0.125, flat);
         f = small_frame(r, false);
-        const auto box = pair::polyq::bounds(flat.view());
+        const auto box = detail::polygon2d::bounds(flat.view());
         auto at = [&] {
             const double u = box.min.x + (box.max.x - box.min.x) * r.uniform(0, 1), v = box.min.y + (box.max.y - box.min.y) * r.uniform(0, 1);
             return point2{std::ldexp(std::round(std::ldexp(u, 24)), -24), std::ldexp(std::round(std::ldexp(v, 24)), -24)}; // exact in the plane

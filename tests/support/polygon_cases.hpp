@@ -160,7 +160,7 @@ inline incidence::segment2 segment_in_polygon_random(rng& r, polygon_store& stor
     star_polygon(r, r.integer(1, 3), point2{r.uniform(-1, 1), r.uniform(-1, 1)}, 0.125, store);
     transform tr = random_transform(r, false, true);
     realise_polygon(store, tr);
-    const auto box = pair::polyq::bounds(store.view());
+    const auto box = detail::polygon2d::bounds(store.view());
     auto at = [&] { return point2{box.min.x + (box.max.x - box.min.x) * r.uniform(0, 1), box.min.y + (box.max.y - box.min.y) * r.uniform(0, 1)}; };
     const point2 a = at(), b = at();
     return r.coin() ? segment2{a, b} : segment2{a, a + 0.125 * (b - a)};

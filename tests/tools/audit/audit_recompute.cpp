@@ -10,6 +10,7 @@
 #include <type_traits>
 #include <vector>
 import incidence;
+import incidence.detail;
 #include "../../../tools/audit/generators.hpp"
 #include "../../../tools/audit/methods.hpp"
 #include "../../support/lp_shapes.hpp"

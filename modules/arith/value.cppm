@@ -1,0 +1,408 @@
+// Values in every tier (docs/DESIGN.md, "Values"). A number a query returns (a ray parameter, a
+// coordinate of a hit point, a barycentric, a squared distance) is a quotient P / S of two
+// polynomials in the inputs, written once as a generic lambda f(L) -> ratio{P, S} (or f(L) -> P for
+// a polynomial), lifted like a predicate (kernel.cppm). The kernel a query body runs in decides
+// what the number becomes:
+//   plain      approx_kernel           P / S in plain double;
+//   enclosure  the filter kernels      an interval that contains the exact P / S: P and S with the
+//                                      filter's rigorous bounds (filtered.cppm), divided with
+//                                      outward rounding;
+//   rounded    exact_kernel, and the   P / S correctly rounded to nearest (ties to even): P and S in
+//              exact tier's filter     the double-double filter (filtered_dd.cppm), a candidate c near
+//              pass (rounding_kernel)  P / S, and c is the answer when the signs of P - m S at the
+//                                      two midpoints m next to c are proven (Ziv's rounding test,
+//                                      IEEE Trans. Computers 40(4), 1991); otherwise every operation
+//                                      exact in double, then exact dyadic bracketing.
+// The midpoint test: the nearest double to x is c iff pred-mid(c) < x < succ-mid(c) (Muller et al.,
+// Handbook of Floating-Point Arithmetic, 2018, section 2.2); each midpoint is the double-double
+// c + h with h half a gap, exact, so P - m S composes in the double-double filter with a proven
+// bound, and a tie (x on a midpoint) is left to the exact stage, which rounds it to even.
+module;
+#include <optional>
+#include <type_traits>
+export module incidence.arith:value;
+import incidence.core;
+import :eft;
+import :filtered;
+import :filtered_dd;
+import :dyadic;
+import :rounding;
+import :kernel;
+
+export namespace incidence::arith {
+
+template <class P, class S>
+struct ratio {
+    P num;
+    S den;
+};
+template <class P, class S>
+ratio(P, S) -> ratio<P, S>;
+
+template <class T>
+inline constexpr bool is_ratio = false;
+template <class P, class S>
+inline constexpr bool is_ratio<ratio<P, S>> = true;
+
+// A polynomial value read as P / 1 (the 1 lifted, so it has the lift's number type).
+template <class L, class E>
+[[nodiscard]] constexpr auto as_ratio(L l, const E& e) {
+    if constexpr (is_ratio<E>) return e;
+    else return ratio{e, l(1.0)};
+}
+template <class F, class L>
+[[nodiscard]] constexpr auto ratio_of(const F& f, L l) { return as_ratio(l, f(l)); }
+
+// What a kernel's values are (kernel.cppm declares value_mode): a kernel without a mode of its own
+// (a test's observing kernel) computes plain values.
+template <class K>
+[[nodiscard]] consteval value_mode value_mode_of() {
+    if constexpr (requires { K::values; }) return K::values;
+    else return value_mode::plain;
+}
+template <class K>
+inline constexpr bool encloses = value_mode_of<K>() == value_mode::enclosure;
+template <class K>
+using value_t = std::conditional_t<encloses<K>, interval, double>;
+template <class K>
+using point_value_t = std::conditional_t<encloses<K>, interval3, point3>;
+template <class K>
+using vec_value_t = std::conditional_t<encloses<K>, interval3, vec3>;
+
+// --- intervals, rounded outward ----------------------------------------------------------------
+// Every operation below returns an interval that contains every exact result for operands in its
+// operand intervals: each end point is computed in round-to-nearest (error <= half an ulp, or
+// 2^-1075 when subnormal) and moved one double outward.
+[[nodiscard]] constexpr interval outward(double lo, double hi) { return {next_down(lo), next_up(hi)}; }
+[[nodiscard]] constexpr interval point_interval(double x) { return {x, x}; }
+inline constexpr interval whole_line{-__builtin_huge_val(), __builtin_huge_val()};
+[[nodiscard]] constexpr double min_of(double a, double b) { return b < a ? b : a; }
+[[nodiscard]] constexpr double max_of(double a, double b) { return a < b ? b : a; }
+[[nodiscard]] constexpr interval add(interval a, interval b) { return outward(a.lo + b.lo, a.hi + b.hi); }
+[[nodiscard]] constexpr interval negate(interval a) { return {-a.hi, -a.lo}; }
+[[nodiscard]] constexpr interval sub(interval a, interval b) { return add(a, negate(b)); }
+[[nodiscard]] constexpr interval mul(interval a, interval b) {
+    if ((a.lo == 0.0 && a.hi == 0.0) || (b.lo == 0.0 && b.hi == 0.0)) return {0.0, 0.0}; // 0 * inf
+    const double p[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
+    double lo = p[0], hi = p[0];
+    for (double x : p) {
+        if (x != x) return whole_line; // 0 * inf of an unbounded operand
+        lo = min_of(lo, x);
+        hi = max_of(hi, x);
+    }
+    return outward(lo, hi);
+}
+// a / b; the whole line when b contains 0 (a parameter whose denominator is not proven nonzero).
+[[nodiscard]] constexpr interval divide(interval a, interval b) {
+    if (!(b.lo > 0.0 || b.hi < 0.0)) return whole_line;
+    const double p[4] = {a.lo / b.lo, a.lo / b.hi, a.hi / b.lo, a.hi / b.hi};
+    double lo = p[0], hi = p[0];
+    for (double x : p) {
+        if (x != x) return whole_line;
+        lo = min_of(lo, x);
+        hi = max_of(hi, x);
+    }
+    return outward(lo, hi);
+}
+// sqrt of the non-negative part (sqrt is correctly rounded in IEEE arithmetic).
+[[nodiscard]] constexpr interval square_root(interval a) {
+    const double lo = a.lo > 0.0 ? next_down(sqrt(a.lo)) : 0.0;
+    return {lo > 0.0 ? lo : 0.0, a.hi > 0.0 ? next_up(sqrt(a.hi)) : 0.0};
+}
+[[nodiscard]] constexpr interval max_of(interval a, interval b) { return {max_of(a.lo, b.lo), max_of(a.hi, b.hi)}; }
+[[nodiscard]] constexpr interval min_of(interval a, interval b) { return {min_of(a.lo, b.lo), min_of(a.hi, b.hi)}; }
+[[nodiscard]] constexpr interval hull(interval a, interval b) { return {min_of(a.lo, b.lo), max_of(a.hi, b.hi)}; }
+[[nodiscard]] constexpr interval intersected(interval a, interval b) { return {max_of(a.lo, b.lo), min_of(a.hi, b.hi)}; }
+
+// The enclosure of a filtered value: |v - x| <= error_bound (filtered.cppm, invariant I1, for every
+// finite permanent: a product's permanent carries 2^-1020 for its own underflow), plus 2^-1074 for
+// the rounding of the bound itself where it is subnormal; an infinite or NaN permanent (an
+// overflow) encloses nothing, so the whole line.
+template <int K>
+[[nodiscard]] constexpr interval enclose(filtered<K> a) {
+    if (!(a.p <= 0x1.fffffffffffffp1023) || a.v != a.v) return whole_line;
+    const double e = error_bound(a) + 0x1p-1074;
+    return outward(a.v - e, a.v + e);
+}
+
+// --- rounded: the double-double fast path --------------------------------------------------------
+// A double-double constant lifted into the filter exactly: c + h, |h| <= u |c|.
+[[nodiscard]] constexpr filtered_dd<0> lift_filtered_dd(double c, double h) { return {c, h, abs(c) + abs(h)}; }
+
+// The nearest double to x, given cmp(m) = sign(x - m) for a double-double m (+1, -1, or 0 when
+// not proven, a tie included) and a guess near x; nullopt when a sign is not proven, or the
+// candidate leaves [2^-1021, 2^1023) in magnitude (half a gap is then not a double, or the next
+// double is infinite), or it moves more than three times.
+template <class Cmp>
+[[nodiscard]] constexpr std::optional<double> round_by_midpoints(double guess, const Cmp& cmp) {
+    double c = guess;
+    for (int step = 0; step < 4; ++step) {
+        if (!(abs(c) >= 0x1p-1021 && abs(c) < 0x1p1023)) return std::nullopt;
+        const double up = next_up(c), down = next_down(c);
+        const int above = cmp(lift_filtered_dd(c, (up - c) * 0.5)); // x - (c + half the gap above)
+        if (above == 0) return std::nullopt;
+        if (above > 0) {
+            c = up;
+            continue;
+        }
+        const int below = cmp(lift_filtered_dd(c, (down - c) * 0.5));
+        if (below == 0) return std::nullopt;
+        if (below < 0) {
+            c = down;
+            continue;
+        }
+        return c;
+    }
+    return std::nullopt;
+}
+
+// P / S correctly rounded from the double-double filter's P and S, or nullopt (S not proven
+// nonzero, a sign near a midpoint, a magnitude out of the filter's range).
+template <int A, int B>
+[[nodiscard]] constexpr std::optional<double> rounded_quotient(const filtered_dd<A>& p, const filtered_dd<B>& s) {
+    const int ss = proven_sign(s);
+    if (ss == 0) return std::nullopt;
+    const double guess = p.hi / s.hi;
+    return round_by_midpoints(guess, [&](const filtered_dd<0>& m) { return proven_sign(p - m * s) * ss; });
+}
+
+// The exact stages, out of line: every operation exact in double (exact inputs such as small
+// integers, and exact zeros), then dyadic big integers with bracketing (rounding.cppm).
+template <class F>
+[[nodiscard, gnu::noinline]] constexpr double rounded_value_exactly(F f) {
+    const auto x = ratio_of(f, lift_exact_double{});
+    if (x.num.exact && x.den.exact && x.den.v != 0.0) return x.num.v / x.den.v; // IEEE division rounds correctly
+    const auto d = ratio_of(f, lift_dyadic{});
+    if (sign_of(d.den) == 0) return __builtin_nan("");
+    return quotient(d.num, d.den);
+}
+
+template <class F>
+[[nodiscard]] constexpr double rounded_value(const F& f) {
+    if (!__builtin_is_constant_evaluated()) { // the filter's NaN and infinities are run-time only
+        const auto r = ratio_of(f, lift_filter_dd{});
+        if (const auto v = rounded_quotient(r.num, r.den)) return *v;
+    }
+    return rounded_value_exactly(f);
+}
+
+// --- one value, in the kernel's mode ---------------------------------------------------------------
+template <class F>
+[[nodiscard]] constexpr double plain_value(const F& f) {
+    const auto r = ratio_of(f, lift_double{});
+    return r.num / r.den;
+}
+template <class F>
+[[nodiscard]] constexpr interval enclosed_value(const F& f) {
+    const auto r = ratio_of(f, lift_filter{});
+    return divide(enclose(r.num), enclose(r.den));
+}
+
+// The value f (a ratio or a polynomial) as kernel K computes values.
+template <class K, class F>
+[[nodiscard]] constexpr value_t<K> value(K&, const F& f) {
+    if constexpr (value_mode_of<K>() == value_mode::enclosure) return enclosed_value(f);
+    else if constexpr (value_mode_of<K>() == value_mode::rounded) return rounded_value(f);
+    else return plain_value(f);
+}
+// An exact double (a bound of the parameter's domain, an input coordinate) as a value of K.
+template <class K>
+[[nodiscard]] constexpr value_t<K> exact_value(K&, double x) {
+    if constexpr (encloses<K>) return point_interval(x);
+    else return x;
+}
+template <class K>
+[[nodiscard]] constexpr point_value_t<K> exact_point(K&, point3 p) {
+    if constexpr (encloses<K>) return interval3{point_interval(p.x), point_interval(p.y), point_interval(p.z)};
+    else return p;
+}
+
+// The point a + t b of a parameter t = P / S (f(L) -> ratio{P, S}) on the line a(L) + t b(L)
+// (lifted points and vectors: b = q - a exactly for a segment), each coordinate
+// (a_i S + P b_i) / S from one evaluation of P and S. Plain: a + fl(P / S) b, as a user would write it.
+template <class K, class F, class A, class B>
+[[nodiscard]] constexpr point_value_t<K> point_at(K& k, const F& f, const A& a, const B& b) {
+    constexpr value_mode mode = value_mode_of<K>();
+    if constexpr (mode == value_mode::plain) {
+        const double t = plain_value(f);
+        const auto o = a(lift_double{});
+        const auto d = b(lift_double{});
+        return point3{o.x + t * d.x, o.y + t * d.y, o.z + t * d.z};
+    } else if constexpr (mode == value_mode::enclosure) {
+        const auto r = ratio_of(f, lift_filter{});
+        const auto o = a(lift_filter{});
+        const auto d = b(lift_filter{});
+        const interval s = enclose(r.den);
+        return interval3{divide(enclose(o.x * r.den + r.num * d.x), s), divide(enclose(o.y * r.den + r.num * d.y), s),
+                         divide(enclose(o.z * r.den + r.num * d.z), s)};
+    } else {
+        auto coordinate = [&](auto pick) {
+            return value(k, [=](auto L) {
+                const auto r = ratio_of(f, L);
+                return ratio{pick(a(L)) * r.den + r.num * pick(b(L)), r.den};
+            });
+        };
+        if (!__builtin_is_constant_evaluated()) {
+            const auto r = ratio_of(f, lift_filter_dd{});
+            const auto o = a(lift_filter_dd{});
+            const auto d = b(lift_filter_dd{});
+            const auto x = rounded_quotient(o.x * r.den + r.num * d.x, r.den);
+            const auto y = rounded_quotient(o.y * r.den + r.num * d.y, r.den);
+            const auto z = rounded_quotient(o.z * r.den + r.num * d.z, r.den);
+            if (x && y && z) return point3{*x, *y, *z};
+            return point3{x ? *x : coordinate([](const auto& v) { return v.x; }), y ? *y : coordinate([](const auto& v) { return v.y; }),
+                          z ? *z : coordinate([](const auto& v) { return v.z; })};
+        }
+        return point3{coordinate([](const auto& v) { return v.x; }), coordinate([](const auto& v) { return v.y; }),
+                      coordinate([](const auto& v) { return v.z; })};
+    }
+}
+
+
+// --- roots of a quadratic --------------------------------------------------------------------------
+// The roots t1 <= t2 of a t^2 + 2 b t + c, for a > 0 and b^2 - a c >= 0 (a caller that has proven
+// both), each coefficient a polynomial in the inputs: f(L) -> quadratic{a, b, c}. A parameter where
+// a line meets a sphere is one (a = d . d, b = m . d, c = m . m - r^2). Rounded, t is bracketed by
+// the signs of q^2 f(p / q) = a p^2 + 2 b p q + c q^2 and of a p + b q (which side of the vertex
+// -b / a the point p / q lies on) at the two midpoints around a candidate; enclosed, by interval
+// arithmetic on the enclosures of a, b, c and b^2 - a c, with the root written so that nothing
+// cancels (t1 = c / (-b + sqrt(disc)) when b < 0, (-b - sqrt(disc)) / a when b > 0).
+template <class A, class B, class C>
+struct quadratic {
+    A a;
+    B b;
+    C c;
+};
+template <class A, class B, class C>
+quadratic(A, B, C) -> quadratic<A, B, C>;
+enum class root : unsigned char { smaller, larger };
+
+// sign(t - p / q) for the root t (q > 0): +1, -1, 0 when equal; 2 when sgn, which returns 0 for a
+// sign it cannot prove (decides_zero false), left a needed sign open.
+template <bool decides_zero, class Sgn>
+[[nodiscard]] constexpr int root_minus(root r, const auto& a, const auto& b, const auto& c, const auto& p, const auto& q, const Sgn& sgn) {
+    const int f = sgn(a * p * p + (b * p * q + b * p * q) + c * q * q);
+    if (f == 0 && !decides_zero) return 2;
+    const int v = sgn(a * p + b * q);
+    if (f != 0 && v == 0 && !decides_zero) return 2;
+    if (r == root::smaller) {
+        if (f < 0) return -1;
+        if (f > 0) return v < 0 ? 1 : -1;
+        return v <= 0 ? 0 : -1;
+    }
+    if (f < 0) return 1;
+    if (f > 0) return v < 0 ? 1 : -1;
+    return v >= 0 ? 0 : 1;
+}
+
+// The root in plain double, written so that nothing cancels.
+[[nodiscard]] constexpr double plain_root(root r, double a, double b, double c) {
+    const double disc = b * b - a * c;
+    const double s = sqrt(disc > 0.0 ? disc : 0.0);
+    if (b < 0.0) return r == root::smaller ? c / (-b + s) : (-b + s) / a;
+    return r == root::smaller ? (-b - s) / a : c / (-b - s);
+}
+[[nodiscard]] constexpr interval enclosed_root(root r, interval a, interval b, interval c, interval disc) {
+    const interval s = square_root(disc);
+    if (b.hi < 0.0) return r == root::smaller ? divide(c, add(negate(b), s)) : divide(add(negate(b), s), a);
+    if (b.lo > 0.0) return r == root::smaller ? divide(sub(negate(b), s), a) : divide(c, sub(negate(b), s));
+    return r == root::smaller ? divide(sub(negate(b), s), a) : divide(add(negate(b), s), a);
+}
+template <class F>
+[[nodiscard]] constexpr interval enclosed_root_of(const F& f, root r) {
+    const auto q = f(lift_filter{});
+    return enclosed_root(r, enclose(q.a), enclose(q.b), enclose(q.c), enclose(q.b * q.b - q.a * q.c));
+}
+
+// The exact stage: dyadic coefficients, bracketing on exact signs.
+template <class F>
+[[nodiscard, gnu::noinline]] constexpr double rounded_root_exactly(F f, root r, double guess) {
+    const auto q = f(lift_dyadic{});
+    const dyadic one = to_dyadic(1.0);
+    auto sgn = [](const dyadic& x) { return sign_of(x); };
+    auto le = [&](const dyadic& y) { return root_minus<true>(r, q.a, q.b, q.c, y, one, sgn) <= 0; };
+    auto lt = [&](const dyadic& y) { return root_minus<true>(r, q.a, q.b, q.c, y, one, sgn) < 0; };
+    return correctly_round(le, lt, guess);
+}
+template <class F>
+[[nodiscard]] constexpr double rounded_root(const F& f, root r) {
+    const auto qd = f(lift_double{});
+    const double guess = plain_root(r, qd.a, qd.b, qd.c);
+    if (!__builtin_is_constant_evaluated()) {
+        const auto q = f(lift_filter_dd{});
+        const filtered_dd<0> one = lift_filtered_dd(1.0);
+        auto sgn = [](const auto& x) { return proven_sign(x); };
+        if (const auto v = round_by_midpoints(guess, [&](const filtered_dd<0>& m) {
+                const int s = root_minus<false>(r, q.a, q.b, q.c, m, one, sgn);
+                return s == 2 ? 0 : s;
+            }))
+            return *v;
+    }
+    return rounded_root_exactly(f, r, is_finite(guess) ? guess : 0.0);
+}
+
+// The root as kernel K computes values.
+template <class K, class F>
+[[nodiscard]] constexpr value_t<K> root_value(K&, const F& f, root r) {
+    if constexpr (value_mode_of<K>() == value_mode::enclosure) return enclosed_root_of(f, r);
+    else if constexpr (value_mode_of<K>() == value_mode::rounded) return rounded_root(f, r);
+    else {
+        const auto q = f(lift_double{});
+        return plain_root(r, q.a, q.b, q.c);
+    }
+}
+
+// The point a + t b at the root t (a(L), b(L) lifted points and vectors, as in point_at; each b_i
+// an input or the difference of two inputs, whose sign in double is exact): each
+// coordinate a_i + t b_i is on the side of a midpoint m that t is of y = (m - a_i) / b_i (times the
+// sign of b_i), so it is bracketed as the root is, with p = +-(m - a_i) and q = |b_i|.
+template <class K, class F, class A, class B>
+[[nodiscard]] constexpr point_value_t<K> point_at_root(K& k, const F& f, root r, const A& a, const B& b) {
+    constexpr value_mode mode = value_mode_of<K>();
+    if constexpr (mode == value_mode::plain) {
+        const double t = root_value(k, f, r);
+        const auto o = a(lift_double{});
+        const auto d = b(lift_double{});
+        return point3{o.x + t * d.x, o.y + t * d.y, o.z + t * d.z};
+    } else if constexpr (mode == value_mode::enclosure) {
+        const interval t = enclosed_root_of(f, r);
+        const auto o = a(lift_filter{});
+        const auto d = b(lift_filter{});
+        auto coordinate = [&](const auto& oi, const auto& di) { return add(enclose(oi), mul(t, enclose(di))); };
+        return interval3{coordinate(o.x, d.x), coordinate(o.y, d.y), coordinate(o.z, d.z)};
+    } else {
+        const auto qd = f(lift_double{});
+        const double tg = plain_root(r, qd.a, qd.b, qd.c);
+        const auto od = a(lift_double{});
+        const auto dd = b(lift_double{});
+        auto coordinate = [&](auto pick, double guess) -> double {
+            const int sb = sign_of_double(pick(b(lift_double{}))) == sign::positive ? 1 : (sign_of_double(pick(b(lift_double{}))) == sign::negative ? -1 : 0);
+            if (sb == 0) return pick(a(lift_double{})); // b_i == 0: the coordinate is a_i, an input
+            if (!__builtin_is_constant_evaluated()) {
+                const auto q = f(lift_filter_dd{});
+                const auto ai = pick(a(lift_filter_dd{}));
+                const auto di = pick(b(lift_filter_dd{}));
+                auto sgn = [](const auto& x) { return proven_sign(x); };
+                const auto v = round_by_midpoints(guess, [&](const filtered_dd<0>& m) {
+                    const int s = sb > 0 ? root_minus<false>(r, q.a, q.b, q.c, m - ai, di, sgn) : root_minus<false>(r, q.a, q.b, q.c, ai - m, -di, sgn);
+                    return s == 2 ? 0 : sb * s;
+                });
+                if (v) return *v;
+            }
+            const auto q = f(lift_dyadic{});
+            const dyadic ai = pick(a(lift_dyadic{}));
+            const dyadic di = pick(b(lift_dyadic{}));
+            auto sgn = [](const dyadic& x) { return sign_of(x); };
+            auto side = [&](const dyadic& y) { // sign(a_i + t b_i - y)
+                const int s = sb > 0 ? root_minus<true>(r, q.a, q.b, q.c, y - ai, di, sgn) : root_minus<true>(r, q.a, q.b, q.c, ai - y, -di, sgn);
+                return sb * s;
+            };
+            return correctly_round([&](const dyadic& y) { return side(y) <= 0; }, [&](const dyadic& y) { return side(y) < 0; },
+                                   is_finite(guess) ? guess : 0.0);
+        };
+        return point3{coordinate([](const auto& v) { return v.x; }, od.x + tg * dd.x), coordinate([](const auto& v) { return v.y; }, od.y + tg * dd.y),
+                      coordinate([](const auto& v) { return v.z; }, od.z + tg * dd.z)};
+    }
+}
+
+} // namespace incidence::arith

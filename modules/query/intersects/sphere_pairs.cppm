@@ -1,0 +1,99 @@
+// intersects: sphere_pairs
+module;
+#include <optional>
+export module incidence.detail:intersects.sphere_pairs;
+import incidence.core;
+import incidence.arith;
+import incidence.shapes;
+import :engines.sphere;
+
+export namespace incidence::detail {
+
+// aabb3 against sphere3 (closed box, closed ball): intersects, contains(aabb3, sphere3) and
+// contains(sphere3, aabb3).
+// Semantics: touching counts; a box contains a ball it touches from inside. Unchecked negative
+// radii act as |r| (as in point_sphere); inverted, infinite or NaN input meets and holds nothing.
+
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const aabb3& b, const sphere3& s) {
+    if (!ball::usable(b) || !ball::usable(s)) return false;
+    const double c[3] = {s.center.x, s.center.y, s.center.z};
+    const double mn[3] = {b.min.x, b.min.y, b.min.z}, mx[3] = {b.max.x, b.max.y, b.max.z};
+    // the nearest point's gap on each axis: from the centre up to min, from max up to the centre, or none
+    double lo[3], hi[3];
+    for (int i = 0; i < 3; ++i) {
+        if (c[i] < mn[i]) lo[i] = c[i], hi[i] = mn[i];
+        else if (c[i] > mx[i]) lo[i] = mx[i], hi[i] = c[i];
+        else lo[i] = hi[i] = 0.0;
+    }
+    const double r = s.radius;
+    return k.sgn([=](auto L) {
+        auto g = [&](int i) { return L(hi[i]) - L(lo[i]); };
+        const auto g0 = g(0), g1 = g(1), g2 = g(2);
+        return L(r) * L(r) - (g0 * g0 + g1 * g1 + g2 * g2);
+    }) != sign::negative;
+}
+
+// point3 against sphere3 (the closed ball).
+// Semantics: the point intersects the ball iff |p - c| <= r (on the sphere counts).
+
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const point3& p, const sphere3& s) {
+    return k.sgn([=](auto L) {
+        const auto d = arith::lift(L, p) - arith::lift(L, s.center);
+        const auto r = L(s.radius);
+        return r * r - arith::dot(d, d);
+    }) != sign::negative;
+}
+
+// ray3 against sphere3 (closed ball): intersects, and intersection = the first point with t >= 0.
+// Semantics: a ray that starts inside or on the ball hits at t = 0; a ray tangent to the sphere
+// hits at the tangent point; a zero direction is the point `origin`.
+
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const ray3& r, const sphere3& s) {
+    const auto m_of = [=](auto L) { return arith::lift(L, r.origin) - arith::lift(L, s.center); };
+    const sign c = k.sgn([=](auto L) {
+        const auto m = m_of(L);
+        const auto rr = L(s.radius);
+        return arith::dot(m, m) - rr * rr;
+    });
+    if (c != sign::positive) return true;
+    const sign b = k.sgn([=](auto L) { return arith::dot(m_of(L), arith::lift(L, r.direction)); });
+    if (b != sign::negative) return false;
+    return k.sgn([=](auto L) {
+               const auto m = m_of(L);
+               const auto d = arith::lift(L, r.direction);
+               const auto rr = L(s.radius);
+               const auto bb = arith::dot(m, d);
+               return bb * bb - arith::dot(d, d) * (arith::dot(m, m) - rr * rr);
+           }) != sign::negative;
+}
+// The approximate tier of intersects(ray3, sphere3) is the optimized geometric method.
+[[nodiscard]] constexpr bool intersects_approximate(const ray3& r, const sphere3& s) {
+    return ray_sphere_geometric(r, s).has_value();
+}
+
+// sphere3 against sphere3 (closed balls).
+// Semantics: intersects iff |c1 - c2| <= r1 + r2 (tangent balls intersect);
+// contains(a, b) iff ball b lies inside ball a: r_a >= r_b and |ca - cb| <= r_a - r_b
+// (internally tangent counts; equal balls contain each other).
+
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const sphere3& a, const sphere3& b) {
+    return k.sgn([=](auto L) {
+        const auto d = arith::lift(L, a.center) - arith::lift(L, b.center);
+        const auto r = L(a.radius) + L(b.radius);
+        return r * r - arith::dot(d, d);
+    }) != sign::negative;
+}
+
+} // namespace incidence::detail
+
+// The exact tier's fallback, compiled once in the library (CMakeLists.txt generates the definitions).
+namespace incidence::detail {
+extern template bool intersects(arith::exact_kernel&, const aabb3&, const sphere3&);
+extern template bool intersects(arith::exact_kernel&, const point3&, const sphere3&);
+extern template bool intersects(arith::exact_kernel&, const ray3&, const sphere3&);
+extern template bool intersects(arith::exact_kernel&, const sphere3&, const sphere3&);
+} // namespace incidence::detail
