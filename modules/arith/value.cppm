@@ -20,6 +20,7 @@
 module;
 #include <optional>
 #include <type_traits>
+#include <utility>
 export module incidence.arith:value;
 import incidence.core;
 import :eft;
@@ -129,24 +130,28 @@ template <int K>
 // A double-double constant lifted into the filter exactly: c + h, |h| <= u |c|.
 [[nodiscard]] constexpr filtered_dd<0> lift_filtered_dd(double c, double h) { return {c, h, abs(c) + abs(h)}; }
 
-// The nearest double to x, given cmp(m) = sign(x - m) for a double-double m (+1, -1, or 0 when
-// not proven, a tie included) and a guess near x; nullopt when a sign is not proven, or the
+// The nearest double to x (ties to even), given cmp(c, h) = sign(x - (c + h)) at the midpoints
+// c + h next to a candidate c (h half a gap: exact), and a guess near x: +1 or -1, 0 when x is that
+// midpoint (a tie: the even neighbour), 2 when cmp cannot tell. nullopt when it cannot, or the
 // candidate leaves [2^-1021, 2^1023) in magnitude (half a gap is then not a double, or the next
-// double is infinite), or it moves more than three times.
+// double is infinite), or it moves more than seven times.
+[[nodiscard]] constexpr double even_of(double a, double b) { return (__builtin_bit_cast(unsigned long long, a) & 1u) != 0 ? b : a; }
 template <class Cmp>
-[[nodiscard]] constexpr std::optional<double> round_by_midpoints(double guess, const Cmp& cmp) {
+[[nodiscard]] constexpr std::optional<double> round_at_midpoints(double guess, const Cmp& cmp) {
     double c = guess;
-    for (int step = 0; step < 4; ++step) {
+    for (int step = 0; step < 8; ++step) {
         if (!(abs(c) >= 0x1p-1021 && abs(c) < 0x1p1023)) return std::nullopt;
         const double up = next_up(c), down = next_down(c);
-        const int above = cmp(lift_filtered_dd(c, (up - c) * 0.5)); // x - (c + half the gap above)
-        if (above == 0) return std::nullopt;
+        const int above = cmp(c, (up - c) * 0.5); // x - (c + half the gap above)
+        if (above == 2) return std::nullopt;
+        if (above == 0) return even_of(c, up);
         if (above > 0) {
             c = up;
             continue;
         }
-        const int below = cmp(lift_filtered_dd(c, (down - c) * 0.5));
-        if (below == 0) return std::nullopt;
+        const int below = cmp(c, (down - c) * 0.5);
+        if (below == 2) return std::nullopt;
+        if (below == 0) return even_of(c, down);
         if (below < 0) {
             c = down;
             continue;
@@ -154,6 +159,12 @@ template <class Cmp>
         return c;
     }
     return std::nullopt;
+}
+// The double-double filter's sign as such a comparison: 2 where it proves none (a tie included).
+template <int K>
+[[nodiscard]] constexpr int dd_side(const filtered_dd<K>& x) {
+    const int s = proven_sign(x);
+    return s == 0 ? 2 : s;
 }
 
 // P / S correctly rounded from the double-double filter's P and S, or nullopt (S not proven
@@ -163,35 +174,63 @@ template <int A, int B>
     const int ss = proven_sign(s);
     if (ss == 0) return std::nullopt;
     const double guess = p.hi / s.hi;
-    return round_by_midpoints(guess, [&](const filtered_dd<0>& m) { return proven_sign(p - m * s) * ss; });
+    return round_at_midpoints(guess, [&](double c, double h) {
+        const int d = dd_side(p - lift_filtered_dd(c, h) * s);
+        return d == 2 ? 2 : d * ss;
+    });
 }
 
-// The exact stages, out of line: every operation exact in double (exact inputs such as small
-// integers, and exact zeros), then dyadic big integers with bracketing (rounding.cppm).
-template <class F>
-[[nodiscard, gnu::noinline]] constexpr double rounded_value_exactly(F f) {
-    const auto x = ratio_of(f, lift_exact_double{});
-    if (x.num.exact && x.den.exact && x.den.v != 0.0) return x.num.v / x.den.v; // IEEE division rounds correctly
-    const auto d = ratio_of(f, lift_dyadic{});
-    if (sign_of(d.den) == 0) return __builtin_nan("");
-    return quotient(d.num, d.den);
-}
-
-template <class F>
-[[nodiscard]] constexpr double rounded_value(const F& f) {
-    if (!__builtin_is_constant_evaluated()) { // the filter's NaN and infinities are run-time only
-        const auto r = ratio_of(f, lift_filter_dd{});
-        if (const auto v = rounded_quotient(r.num, r.den)) return *v;
-    }
-    return rounded_value_exactly(f);
-}
-
-// --- one value, in the kernel's mode ---------------------------------------------------------------
 template <class F>
 [[nodiscard]] constexpr double plain_value(const F& f) {
     const auto r = ratio_of(f, lift_double{});
     return r.num / r.den;
 }
+
+// Whether a ratio's numerator has the degree of its denominator (a parameter), so that P 1 - m S is
+// homogeneous with m and the 1 lifted (for a coordinate, P is one degree higher: P - m S).
+template <class F>
+inline constexpr bool same_degree = [] {
+    using R = decltype(ratio_of(std::declval<const F&>(), lift_degree{}));
+    return decltype(R::num)::hi == decltype(R::den)::hi;
+}();
+
+// The exact stages, out of line. An exact zero first (arith's exact sign of P: its structural,
+// exact-double, double-double, expansion and dyadic stages), then the midpoint test on exact signs of
+// P - m S, then, for a result below the normal range or beyond the largest double, dyadic
+// bracketing (rounding.cppm).
+template <class F>
+[[nodiscard, gnu::noinline]] constexpr double rounded_value_exactly(F f, double guess) {
+    bool valid = true;
+    const sign ss = exact_sign([=](auto L) { return ratio_of(f, L).den; }, valid);
+    if (!valid || ss == sign::zero) return __builtin_nan("");
+    if (exact_sign([=](auto L) { return ratio_of(f, L).num; }, valid) == sign::zero) return 0.0;
+    if (!is_finite(guess) || guess == 0.0) guess = plain_value(f);
+    if (is_finite(guess) && guess != 0.0)
+        if (const auto v = round_at_midpoints(guess, [&](double c, double h) {
+                const sign d = exact_sign([=](auto L) {
+                    const auto r = ratio_of(f, L);
+                    if constexpr (same_degree<F>) return r.num * L(1.0) - (L(c) + L(h)) * r.den;
+                    else return r.num - (L(c) + L(h)) * r.den;
+                }, valid);
+                return static_cast<int>(d * ss);
+            }))
+            return *v;
+    const auto d = ratio_of(f, lift_dyadic{});
+    return quotient(d.num, d.den);
+}
+
+template <class F>
+[[nodiscard]] constexpr double rounded_value(const F& f) {
+    double guess = 0.0;
+    if (!__builtin_is_constant_evaluated()) { // the filter's NaN and infinities are run-time only
+        const auto r = ratio_of(f, lift_filter_dd{});
+        if (const auto v = rounded_quotient(r.num, r.den)) return *v;
+        guess = r.num.hi / r.den.hi;
+    }
+    return rounded_value_exactly(f, guess);
+}
+
+// --- one value, in the kernel's mode ---------------------------------------------------------------
 template <class F>
 [[nodiscard]] constexpr interval enclosed_value(const F& f) {
     const auto r = ratio_of(f, lift_filter{});
@@ -277,14 +316,10 @@ template <class A, class B, class C>
 quadratic(A, B, C) -> quadratic<A, B, C>;
 enum class root : unsigned char { smaller, larger };
 
-// sign(t - p / q) for the root t (q > 0): +1, -1, 0 when equal; 2 when sgn, which returns 0 for a
-// sign it cannot prove (decides_zero false), left a needed sign open.
-template <bool decides_zero, class Sgn>
-[[nodiscard]] constexpr int root_minus(root r, const auto& a, const auto& b, const auto& c, const auto& p, const auto& q, const Sgn& sgn) {
-    const int f = sgn(a * p * p + (b * p * q + b * p * q) + c * q * q);
-    if (f == 0 && !decides_zero) return 2;
-    const int v = sgn(a * p + b * q);
-    if (f != 0 && v == 0 && !decides_zero) return 2;
+// sign(t - y) for the root t of f, from the signs of f(y) (times q^2) and of the vertex test a y + b
+// (times q) at y = p / q, q > 0: +1, -1, 0 when t = y; 2 when a needed sign is 2 (not proven).
+[[nodiscard]] constexpr int root_side(root r, int f, int v) {
+    if (f == 2 || (f != 0 && v == 2) || (f == 0 && v == 2)) return 2;
     if (r == root::smaller) {
         if (f < 0) return -1;
         if (f > 0) return v < 0 ? 1 : -1;
@@ -294,6 +329,11 @@ template <bool decides_zero, class Sgn>
     if (f > 0) return v < 0 ? 1 : -1;
     return v >= 0 ? 0 : 1;
 }
+// The two polynomials of that test: q^2 f(p / q) and q (a p / q + b).
+template <class Q, class P, class D>
+[[nodiscard]] constexpr auto root_f(const Q& e, const P& p, const D& q) { return e.a * p * p + (e.b * p * q + e.b * p * q) + e.c * q * q; }
+template <class Q, class P, class D>
+[[nodiscard]] constexpr auto root_v(const Q& e, const P& p, const D& q) { return e.a * p + e.b * q; }
 
 // The root in plain double, written so that nothing cancels.
 [[nodiscard]] constexpr double plain_root(root r, double a, double b, double c) {
@@ -314,31 +354,58 @@ template <class F>
     return enclosed_root(r, enclose(q.a), enclose(q.b), enclose(q.c), enclose(q.b * q.b - q.a * q.c));
 }
 
-// The exact stage: dyadic coefficients, bracketing on exact signs.
+// sign(t - y) by exact signs (kernel.cppm's exact_sign) for y = p(L) / q(L), q > 0.
+template <class F, class P, class D>
+[[nodiscard]] constexpr int exact_root_side(const F& f, root r, const P& p, const D& q) {
+    bool valid = true;
+    const sign fs = exact_sign([=](auto L) { return root_f(f(L), p(L), q(L)); }, valid);
+    const sign vs = exact_sign([=](auto L) { return root_v(f(L), p(L), q(L)); }, valid);
+    return root_side(r, static_cast<int>(fs), static_cast<int>(vs));
+}
+// The exact stages: the midpoint test on exact signs, then dyadic bracketing for a result below the
+// normal range or beyond the largest double.
 template <class F>
 [[nodiscard, gnu::noinline]] constexpr double rounded_root_exactly(F f, root r, double guess) {
+    if (is_finite(guess) && guess != 0.0)
+        if (const auto v = round_at_midpoints(guess, [&](double c, double h) {
+                return exact_root_side(f, r, [=](auto L) { return L(c) + L(h); }, [](auto L) { return L(1.0); });
+            }))
+            return *v;
     const auto q = f(lift_dyadic{});
     const dyadic one = to_dyadic(1.0);
-    auto sgn = [](const dyadic& x) { return sign_of(x); };
-    auto le = [&](const dyadic& y) { return root_minus<true>(r, q.a, q.b, q.c, y, one, sgn) <= 0; };
-    auto lt = [&](const dyadic& y) { return root_minus<true>(r, q.a, q.b, q.c, y, one, sgn) < 0; };
-    return correctly_round(le, lt, guess);
+    auto side = [&](const dyadic& y) {
+        return root_side(r, sign_of(root_f(q, y, one)), sign_of(root_v(q, y, one)));
+    };
+    return correctly_round([&](const dyadic& y) { return side(y) <= 0; }, [&](const dyadic& y) { return side(y) < 0; }, is_finite(guess) ? guess : 0.0);
+}
+// One Newton step from g on the double-double coefficients: the root to about twice the
+// precision of g, as g - delta (delta small beside g): the guess for a coordinate a_i + t b_i that
+// cancels, where the rounded t alone is not near enough.
+template <class Q>
+[[nodiscard]] constexpr double newton_step(const Q& q, double g) {
+    const filtered_dd<0> x = lift_filtered_dd(g), one = lift_filtered_dd(1.0);
+    const auto f = root_f(q, x, one);
+    const auto fp = root_v(q, x, one); // f'(g) / 2
+    const double d = fp.hi + fp.hi;
+    if (!(abs(d) > 0.0)) return 0.0;
+    const double delta = (f.hi + f.lo) / d;
+    return is_finite(delta) ? delta : 0.0;
 }
 template <class F>
 [[nodiscard]] constexpr double rounded_root(const F& f, root r) {
     const auto qd = f(lift_double{});
-    const double guess = plain_root(r, qd.a, qd.b, qd.c);
+    double guess = plain_root(r, qd.a, qd.b, qd.c);
     if (!__builtin_is_constant_evaluated()) {
         const auto q = f(lift_filter_dd{});
         const filtered_dd<0> one = lift_filtered_dd(1.0);
-        auto sgn = [](const auto& x) { return proven_sign(x); };
-        if (const auto v = round_by_midpoints(guess, [&](const filtered_dd<0>& m) {
-                const int s = root_minus<false>(r, q.a, q.b, q.c, m, one, sgn);
-                return s == 2 ? 0 : s;
+        if (is_finite(guess)) guess -= newton_step(q, guess);
+        if (const auto v = round_at_midpoints(guess, [&](double c, double h) {
+                const auto m = lift_filtered_dd(c, h);
+                return root_side(r, dd_side(root_f(q, m, one)), dd_side(root_v(q, m, one)));
             }))
             return *v;
     }
-    return rounded_root_exactly(f, r, is_finite(guess) ? guess : 0.0);
+    return rounded_root_exactly(f, r, guess);
 }
 
 // The root as kernel K computes values.
@@ -350,6 +417,26 @@ template <class K, class F>
         const auto q = f(lift_double{});
         return plain_root(r, q.a, q.b, q.c);
     }
+}
+
+// A coordinate a_i + t b_i at the root, by exact signs, then dyadic bracketing.
+template <class F, class A, class B>
+[[nodiscard, gnu::noinline]] constexpr double rounded_root_coordinate(F f, root r, A ai, B bi, int sb, double guess) {
+    if (is_finite(guess) && guess != 0.0)
+        if (const auto v = round_at_midpoints(guess, [&](double c, double h) {
+                const int s = sb > 0 ? exact_root_side(f, r, [=](auto L) { return (L(c) + L(h)) - ai(L); }, [=](auto L) { return bi(L); })
+                                     : exact_root_side(f, r, [=](auto L) { return ai(L) - (L(c) + L(h)); }, [=](auto L) { return -bi(L); });
+                return s == 2 ? 2 : sb * s;
+            }))
+            return *v;
+    const auto q = f(lift_dyadic{});
+    const dyadic a = ai(lift_dyadic{}), d = bi(lift_dyadic{});
+    auto side = [&](const dyadic& y) {
+        const int s = sb > 0 ? root_side(r, sign_of(root_f(q, y - a, d)), sign_of(root_v(q, y - a, d)))
+                             : root_side(r, sign_of(root_f(q, a - y, -d)), sign_of(root_v(q, a - y, -d)));
+        return sb * s;
+    };
+    return correctly_round([&](const dyadic& y) { return side(y) <= 0; }, [&](const dyadic& y) { return side(y) < 0; }, is_finite(guess) ? guess : 0.0);
 }
 
 // The point a + t b at the root t (a(L), b(L) lifted points and vectors, as in point_at; each b_i
@@ -371,37 +458,35 @@ template <class K, class F, class A, class B>
         auto coordinate = [&](const auto& oi, const auto& di) { return add(enclose(oi), mul(t, enclose(di))); };
         return interval3{coordinate(o.x, d.x), coordinate(o.y, d.y), coordinate(o.z, d.z)};
     } else {
-        const auto qd = f(lift_double{});
-        const double tg = plain_root(r, qd.a, qd.b, qd.c);
-        const auto od = a(lift_double{});
-        const auto dd = b(lift_double{});
-        auto coordinate = [&](auto pick, double guess) -> double {
-            const int sb = sign_of_double(pick(b(lift_double{}))) == sign::positive ? 1 : (sign_of_double(pick(b(lift_double{}))) == sign::negative ? -1 : 0);
+        // the rounded t and one Newton step give t to about twice double's precision, and so a guess
+        // for each coordinate that stays within an ulp where a_i + t b_i cancels
+        const double t = rounded_root(f, r);
+        double delta = 0.0;
+        if (!__builtin_is_constant_evaluated()) delta = newton_step(f(lift_filter_dd{}), t);
+        auto coordinate = [&](auto pick) -> double {
+            const double bi = pick(b(lift_double{}));
+            const int sb = bi > 0.0 ? 1 : (bi < 0.0 ? -1 : 0);
             if (sb == 0) return pick(a(lift_double{})); // b_i == 0: the coordinate is a_i, an input
+            double guess = pick(a(lift_double{})) + t * bi;
+            // sign(a_i + t b_i - m) = sign(b_i) sign(t - y), y = p / q = sign(b_i) (m - a_i) / |b_i|
             if (!__builtin_is_constant_evaluated()) {
                 const auto q = f(lift_filter_dd{});
                 const auto ai = pick(a(lift_filter_dd{}));
                 const auto di = pick(b(lift_filter_dd{}));
-                auto sgn = [](const auto& x) { return proven_sign(x); };
-                const auto v = round_by_midpoints(guess, [&](const filtered_dd<0>& m) {
-                    const int s = sb > 0 ? root_minus<false>(r, q.a, q.b, q.c, m - ai, di, sgn) : root_minus<false>(r, q.a, q.b, q.c, ai - m, -di, sgn);
-                    return s == 2 ? 0 : sb * s;
+                const auto g = ai + lift_filtered_dd(t, -delta) * di;
+                guess = g.hi + g.lo;
+                const auto v = round_at_midpoints(guess, [&](double c, double h) {
+                    const auto m = lift_filtered_dd(c, h);
+                    const int s = sb > 0 ? root_side(r, dd_side(root_f(q, m - ai, di)), dd_side(root_v(q, m - ai, di)))
+                                         : root_side(r, dd_side(root_f(q, ai - m, -di)), dd_side(root_v(q, ai - m, -di)));
+                    return s == 2 ? 2 : sb * s;
                 });
                 if (v) return *v;
             }
-            const auto q = f(lift_dyadic{});
-            const dyadic ai = pick(a(lift_dyadic{}));
-            const dyadic di = pick(b(lift_dyadic{}));
-            auto sgn = [](const dyadic& x) { return sign_of(x); };
-            auto side = [&](const dyadic& y) { // sign(a_i + t b_i - y)
-                const int s = sb > 0 ? root_minus<true>(r, q.a, q.b, q.c, y - ai, di, sgn) : root_minus<true>(r, q.a, q.b, q.c, ai - y, -di, sgn);
-                return sb * s;
-            };
-            return correctly_round([&](const dyadic& y) { return side(y) <= 0; }, [&](const dyadic& y) { return side(y) < 0; },
-                                   is_finite(guess) ? guess : 0.0);
+            return rounded_root_coordinate(f, r, [=](auto L) { return pick(a(L)); }, [=](auto L) { return pick(b(L)); }, sb, guess);
         };
-        return point3{coordinate([](const auto& v) { return v.x; }, od.x + tg * dd.x), coordinate([](const auto& v) { return v.y; }, od.y + tg * dd.y),
-                      coordinate([](const auto& v) { return v.z; }, od.z + tg * dd.z)};
+        return point3{coordinate([](const auto& v) { return v.x; }), coordinate([](const auto& v) { return v.y; }),
+                      coordinate([](const auto& v) { return v.z; })};
     }
 }
 

@@ -102,6 +102,26 @@ template <class K, class Con>
     return r;
 }
 
+// The object's part in the plane A + t B = 0 (one equality, con(0, L)): where B != 0 the single
+// parameter t = -A / B, if the object's range holds it (t >= 0 iff A and B differ in sign or A = 0;
+// t <= 1 iff A + B and B do not differ); where B = 0, the whole range if A = 0. (As two half-spaces,
+// the clip above would compare the plane's bound with itself: a zero no filter proves.)
+template <class K, class Con>
+[[nodiscard]] constexpr std::optional<clipped> clip_equality(K& k, const Con& con, extent x) {
+    const sign sb = arith::structural_sgn(k, [=](auto L) { return con(0, L).b; });
+    if (sb == sign::zero) {
+        if (!arith::structural_zero(k, [=](auto L) { return con(0, L).a; })) return std::nullopt;
+        return clipped{};
+    }
+    if (x != extent::line && k.sgn([=](auto L) { return con(0, L).a; }) == sb) return std::nullopt; // t < 0
+    if (x == extent::segment && k.sgn([=](auto L) {
+            const auto g = con(0, L);
+            return g.a + g.b;
+        }) == -sb)
+        return std::nullopt; // t > 1
+    return clipped{0, 0};
+}
+
 // The parameter -A_i / B_i of constraint i as a ratio.
 template <class Con>
 [[nodiscard]] constexpr auto bound_parameter(const Con& con, int i) {
@@ -221,13 +241,11 @@ template <class K, class... Con>
         return affine{L(planes[i].offset) * L(1.0) - arith::dot(n, s.O(L)), -arith::dot(n, s.D(L))};
     };
 }
-// The plane n . x = c as two half-spaces.
-[[nodiscard]] constexpr auto plane_constraints(const plane3& p, const linear3& s) {
-    return [=](int i, auto L) {
+// The plane n . x = c as one equality: A = c 1 - n . o, B = -n . D (degree 2).
+[[nodiscard]] constexpr auto plane_constraint(const plane3& p, const linear3& s) {
+    return [=](int, auto L) {
         const auto n = arith::lift(L, p.normal);
-        const auto a = L(p.offset) * L(1.0) - arith::dot(n, s.O(L));
-        const auto b = -arith::dot(n, s.D(L));
-        return i == 0 ? affine{a, b} : affine{-a, -b};
+        return affine{L(p.offset) * L(1.0) - arith::dot(n, s.O(L)), -arith::dot(n, s.D(L))};
     };
 }
 [[nodiscard]] constexpr double component(point3 p, int axis) { return axis == 0 ? p.x : (axis == 1 ? p.y : p.z); }

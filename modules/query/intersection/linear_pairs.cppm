@@ -55,7 +55,10 @@ template <class K, linear_shape S>
 [[nodiscard]] constexpr span_of<K> intersection(K& k, const plane3& p, const S& x) {
     if (!finite(p.normal) || !finite(p.offset) || !finite(x)) return std::nullopt;
     const linear3 s = as_linear(x);
-    return clip_span(k, plane_constraints(p, s), 2, s);
+    const auto con = plane_constraint(p, s);
+    const auto r = clip_equality(k, con, s.kind);
+    if (!r) return std::nullopt;
+    return clipped_values(k, con, *r, s);
 }
 
 template <class K, linear_shape S>
