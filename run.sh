@@ -105,7 +105,7 @@ test)
     echo "== debug build (-O0) with AddressSanitizer + UndefinedBehaviorSanitizer: the tests (the oracle tests of"
     echo "   one pair per shared body, on a twentieth of the cases), then each libFuzzer harness: corpus"
     echo "   replay and a fixed-time run"
-    build debug -DINCIDENCE_ORACLE_ARCHIVE="$(pwd)/build/release/tests/oracle/libincidence_oracle.a" # the same uninstrumented oracle, built once
+    build debug -DINCIDENCE_ORACLE_ARCHIVE="$(pwd)/build/release/testkit/oracle/libincidence_oracle.a" # the same uninstrumented oracle, built once
     ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 run_tests debug -E consumer_from_install
     echo "== all suites passed in $(( $(date +%s) - start )) s"
     echo "$total_passed passed, $total_failed failed"

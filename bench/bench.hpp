@@ -6,7 +6,7 @@
 // otherwise); approximate methods report their wrong answers as the counter `wrong_pct`.
 #pragma once
 #include <benchmark/benchmark.h>
-#include "../tests/oracle/cgal_oracle.hpp"
+#include "testkit/oracle/cgal_oracle.hpp"
 #include "fcl_peer.hpp"
 #include <cmath>
 #include <cstdlib>
@@ -17,15 +17,15 @@
 #include <vector>
 import incidence;
 import incidence.detail;
-#include "../tests/support/testing.hpp"
-#include "../tests/support/obb_cases.hpp"
-#include "../tests/support/flat_cases.hpp"
-#include "../tests/support/mesh_cases.hpp"
-#include "../tests/support/polygon_cases.hpp"
-#include "../tests/support/kdop_cases.hpp"
-#include "../tests/support/lp_shapes.hpp"
-#include "../tests/support/polyhedron_cases.hpp"
-#include "../tests/support/polygon3_cases.hpp"
+#include "testkit/testing.hpp"
+#include "testkit/obb_cases.hpp"
+#include "testkit/flat_cases.hpp"
+#include "testkit/mesh_cases.hpp"
+#include "testkit/polygon_cases.hpp"
+#include "testkit/kdop_cases.hpp"
+#include "testkit/lp_shapes.hpp"
+#include "testkit/polyhedron_cases.hpp"
+#include "testkit/polygon3_cases.hpp"
 
 using namespace incidence;
 

@@ -3,7 +3,7 @@
 // area relative to the convex hull, cost of one overlap test, exact containment of every vertex;
 // CGAL's minimum sphere and convex hull side by side. Writes DIR/bv-table.md and DIR/bv-table.json.
 //   incidence-bv-table [--out DIR] [--reps N] [MESH ...]   (default: the meshes run.sh unpacks)
-#include "../tests/oracle/cgal_oracle.hpp"
+#include "testkit/oracle/cgal_oracle.hpp"
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 import incidence;
-#include "../tools/audit/bounding.hpp"
-#include "../tools/audit/json.hpp"
-#include "../tools/audit/mesh_io.hpp"
+#include "testkit/bounding.hpp"
+#include "testkit/json.hpp"
+#include "testkit/mesh_io.hpp"
 
 int main(int argc, char** argv) {
     std::string out = "bv-table";

@@ -7,7 +7,7 @@
 #include "bench.hpp"
 #include <optional>
 #include <stdexcept>
-#include "../tests/support/contain_cases.hpp"
+#include "testkit/contain_cases.hpp"
 
 namespace bench {
 namespace {

@@ -4,7 +4,7 @@
 // the ratio of the two exact times is what a value costs beside the answer. Before timing, the
 // exact tier's hits are checked against the exact yes/no answer of the oracle.
 #include "bench.hpp"
-#include "../tests/support/box_linear_cases.hpp"
+#include "testkit/box_linear_cases.hpp"
 
 namespace bench {
 namespace {

@@ -3,7 +3,7 @@
 // rational check), sphere_welzl's squared radius is CGAL Min_sphere_d's exact minimum, correctly
 // rounded, and equal to plain move-to-front's; convex_hull's vertices are CGAL's extreme points (Epeck), and all three OBBs contain every
 // point (exact rationals). Any finding aborts.
-#include "../tests/oracle/cgal_oracle.hpp"
+#include "testkit/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <cmath>
 #include <cstdlib>

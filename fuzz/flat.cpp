@@ -24,7 +24,7 @@
 // (18), a 14-DOP (14), a mesh of octahedron topology (18, maybe self-intersecting) or a second
 // polygon3 (13, its plane's coordinate (byte 1 / 8) % 3); the triangles go against it by
 // oracle::flat, the exact LP or the mesh oracle (support::polygon3_truth). Any finding aborts.
-#include "../tests/oracle/cgal_oracle.hpp"
+#include "testkit/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <cmath>
 #include <cstdlib>
@@ -34,12 +34,12 @@ import incidence;
 import incidence.detail;
 #include "contracts.hpp"
 #include "partners.hpp"
-#include "../tests/support/testing.hpp"
-#include "../tests/support/flat_cases.hpp"
-#include "../tests/support/flat_shapes.hpp"
-#include "../tests/support/lp_shapes.hpp"
-#include "../tests/support/mesh_cases.hpp"
-#include "../tests/support/polygon3_cases.hpp"
+#include "testkit/testing.hpp"
+#include "testkit/flat_cases.hpp"
+#include "testkit/flat_shapes.hpp"
+#include "testkit/lp_shapes.hpp"
+#include "testkit/mesh_cases.hpp"
+#include "testkit/polygon3_cases.hpp"
 #include <array>
 #include <cstdint>
 #include <span>

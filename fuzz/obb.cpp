@@ -16,7 +16,7 @@
 // contains(., point | segment | triangle | tetrahedron | box | oriented box)), against the LP with the half-spaces as rows
 // (an oriented box's containment: its corners in exact rationals). Any finding
 // aborts.
-#include "../tests/oracle/cgal_oracle.hpp"
+#include "testkit/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <array>
 #include <cmath>
@@ -25,7 +25,7 @@
 import incidence;
 import incidence.detail;
 #include "contracts.hpp"
-#include "../tests/support/lp_shapes.hpp"
+#include "testkit/lp_shapes.hpp"
 
 using namespace incidence;
 

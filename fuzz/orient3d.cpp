@@ -2,7 +2,7 @@
 // reach it), plus the filter's promise (a proven sign is the exact sign), the approximate tier
 // on well-scaled inputs, and the symmetries orient3d(a,b,c,d) = -orient3d(b,a,c,d) =
 // orient3d(b,c,a,d). Any disagreement aborts.
-#include "../tests/oracle/cgal_oracle.hpp"
+#include "testkit/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <cmath>
 #include <cstdlib>

@@ -4,7 +4,7 @@
 // Epeck for the exact tier; conservative never misses, aggressive never lies, classify is never
 // wrong; both argument orders agree; every tier and intersection() survive raw bit patterns
 // (NaN, infinities, subnormals, zero directions, degenerate triangles). Any finding aborts.
-#include "../tests/oracle/cgal_oracle.hpp"
+#include "testkit/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <cmath>
 #include <cstdlib>

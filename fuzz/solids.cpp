@@ -19,7 +19,7 @@
 // triangle), or for 6, 5, 4 a convex polyhedron of 1 to 4 planes, a frustum or a 14-DOP from 18
 // doubles (the LP per triangle, then crossing parity from the LP's exact point of the set). Any
 // finding aborts.
-#include "../tests/oracle/cgal_oracle.hpp"
+#include "testkit/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <cmath>
 #include <cstdlib>
@@ -30,9 +30,9 @@ import incidence;
 import incidence.detail;
 #include "contracts.hpp"
 #include "partners.hpp"
-#include "../tests/support/testing.hpp"
-#include "../tests/support/flat_cases.hpp"
-#include "../tests/support/mesh_cases.hpp"
+#include "testkit/testing.hpp"
+#include "testkit/flat_cases.hpp"
+#include "testkit/mesh_cases.hpp"
 #include <array>
 #include <cstdint>
 #include <span>

@@ -3,7 +3,7 @@
 // differential against CGAL Epeck (the line against exact rational slabs) on raw bit patterns. Exact answers must match; conservative/aggressive/classify keep
 // their contracts; both argument orders agree; exact t values of ray hits are correctly
 // rounded. Every call must survive NaN, infinities and subnormals. Any finding aborts.
-#include "../tests/oracle/cgal_oracle.hpp"
+#include "testkit/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <cmath>
 #include <cstdlib>

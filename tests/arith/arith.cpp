@@ -6,7 +6,7 @@
 #include <utility>
 import incidence;
 import incidence.detail;
-#include "../support/testing.hpp"
+#include "testkit/testing.hpp"
 
 namespace test_arith_arith { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 

@@ -3,8 +3,8 @@
 #include <span>
 import incidence;
 import incidence.detail;
-#include "../support/testing.hpp"
-#include "../support/point_sets.hpp"
+#include "testkit/testing.hpp"
+#include "testkit/point_sets.hpp"
 
 namespace test_bound_aabb_of { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 

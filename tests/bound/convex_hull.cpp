@@ -6,11 +6,11 @@
 #include <algorithm>
 #include <map>
 #include <span>
-#include "../oracle/cgal_oracle.hpp"
+#include "testkit/oracle/cgal_oracle.hpp"
 import incidence;
 import incidence.detail;
-#include "../support/testing.hpp"
-#include "../support/point_sets.hpp"
+#include "testkit/testing.hpp"
+#include "testkit/point_sets.hpp"
 
 namespace test_bound_convex_hull { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 

@@ -4,8 +4,8 @@
 #include <span>
 import incidence;
 import incidence.detail;
-#include "../support/testing.hpp"
-#include "../support/point_sets.hpp"
+#include "testkit/testing.hpp"
+#include "testkit/point_sets.hpp"
 
 namespace test_bound_kdop_of { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 

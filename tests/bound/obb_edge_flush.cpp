@@ -7,12 +7,12 @@
 #include <cmath>
 #include <span>
 #include <vector>
-#include "../oracle/cgal_oracle.hpp"
+#include "testkit/oracle/cgal_oracle.hpp"
 import incidence;
 import incidence.detail;
-#include "../support/testing.hpp"
-#include "../support/point_sets.hpp"
-#include "../support/box_checks.hpp"
+#include "testkit/testing.hpp"
+#include "testkit/point_sets.hpp"
+#include "testkit/box_checks.hpp"
 
 namespace test_bound_obb_edge_flush { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 

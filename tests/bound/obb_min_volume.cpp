@@ -3,12 +3,12 @@
 // point sets; the volume against CGAL's oriented_bounding_box on the real meshes (printed).
 #include <catch2/catch_test_macros.hpp>
 #include <span>
-#include "../oracle/cgal_oracle.hpp"
+#include "testkit/oracle/cgal_oracle.hpp"
 import incidence;
 import incidence.detail;
-#include "../support/testing.hpp"
-#include "../support/point_sets.hpp"
-#include "../support/box_checks.hpp"
+#include "testkit/testing.hpp"
+#include "testkit/point_sets.hpp"
+#include "testkit/box_checks.hpp"
 
 namespace test_bound_obb_min_volume { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 

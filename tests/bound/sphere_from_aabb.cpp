@@ -3,12 +3,12 @@
 // first, the second never larger than the first, clear errors.
 #include <catch2/catch_test_macros.hpp>
 #include <span>
-#include "../oracle/cgal_oracle.hpp"
+#include "testkit/oracle/cgal_oracle.hpp"
 import incidence;
 import incidence.detail;
-#include "../support/testing.hpp"
-#include "../support/point_sets.hpp"
-#include "../support/sphere_checks.hpp"
+#include "testkit/testing.hpp"
+#include "testkit/point_sets.hpp"
+#include "testkit/sphere_checks.hpp"
 
 namespace test_bound_sphere_from_aabb { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 

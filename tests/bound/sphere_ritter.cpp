@@ -2,12 +2,12 @@
 // Ritter's usual 5-20% of the minimum sphere on real meshes (measured, reported).
 #include <catch2/catch_test_macros.hpp>
 #include <span>
-#include "../oracle/cgal_oracle.hpp"
+#include "testkit/oracle/cgal_oracle.hpp"
 import incidence;
 import incidence.detail;
-#include "../support/testing.hpp"
-#include "../support/point_sets.hpp"
-#include "../support/sphere_checks.hpp"
+#include "testkit/testing.hpp"
+#include "testkit/point_sets.hpp"
+#include "testkit/sphere_checks.hpp"
 
 namespace test_bound_sphere_ritter { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 

@@ -4,12 +4,12 @@
 // plain move-to-front (another shuffle) agree exactly; random sets of 4..60 points plus the degenerate and real sets.
 #include <catch2/catch_test_macros.hpp>
 #include <span>
-#include "../oracle/cgal_oracle.hpp"
+#include "testkit/oracle/cgal_oracle.hpp"
 import incidence;
 import incidence.detail;
-#include "../support/testing.hpp"
-#include "../support/point_sets.hpp"
-#include "../support/sphere_checks.hpp"
+#include "testkit/testing.hpp"
+#include "testkit/point_sets.hpp"
+#include "testkit/sphere_checks.hpp"
 
 namespace test_bound_sphere_welzl { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 

@@ -3,12 +3,12 @@
 // by ulps, scaled by 2^-500..2^500 and translated), including the subnormal range where a
 // classic adaptive filter's bound underflows.
 #include <catch2/catch_test_macros.hpp>
-#include "../oracle/cgal_oracle.hpp"
+#include "testkit/oracle/cgal_oracle.hpp"
 import incidence;
 import incidence.detail;
-#include "../support/testing.hpp"
-#include "../support/check.hpp"
-#include "../support/sphere_points.hpp"
+#include "testkit/testing.hpp"
+#include "testkit/check.hpp"
+#include "testkit/sphere_points.hpp"
 
 namespace test_predicates_orient { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 

@@ -9,9 +9,9 @@
 #include <limits>
 import incidence;
 import incidence.detail;
-#include "../support/testing.hpp"
-#include "../support/mesh_fixtures.hpp"
-#include "../support/polygon_fixtures.hpp"
+#include "testkit/testing.hpp"
+#include "testkit/mesh_fixtures.hpp"
+#include "testkit/polygon_fixtures.hpp"
 
 namespace test_query_bad_input { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 

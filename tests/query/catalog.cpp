@@ -9,8 +9,8 @@
 #include <string>
 import incidence;
 import incidence.detail;
-#include "../support/testing.hpp"
-#include "../../tools/audit/generators.hpp"
+#include "testkit/testing.hpp"
+#include "testkit/generators.hpp"
 
 namespace test_query_catalog { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 

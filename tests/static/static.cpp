@@ -7,11 +7,11 @@
 #include <cstddef>
 import incidence;
 import incidence.detail;
-#include "../support/mesh_fixtures.hpp"
-#include "../support/polygon_fixtures.hpp"
-#include "../support/kdop_fixtures.hpp"
-#include "../support/polyhedron_fixtures.hpp"
-#include "../support/polygon3_fixtures.hpp"
+#include "testkit/mesh_fixtures.hpp"
+#include "testkit/polygon_fixtures.hpp"
+#include "testkit/kdop_fixtures.hpp"
+#include "testkit/polyhedron_fixtures.hpp"
+#include "testkit/polygon3_fixtures.hpp"
 
 using namespace incidence;
 

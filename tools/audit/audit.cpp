@@ -6,7 +6,7 @@
 //   incidence-audit all [--scene FILE]   stability + tradeoff (+ scene)
 //   incidence-audit stability | tradeoff | scene FILE
 //   options: --out DIR (default audit-report) --cases N --seed S --reps R --rays N --no-report
-#include "../../tests/oracle/cgal_oracle.hpp"
+#include "testkit/oracle/cgal_oracle.hpp"
 #include <algorithm>
 #include <chrono>
 #include <cstdarg>
@@ -22,11 +22,11 @@
 #include <unistd.h>
 #include <vector>
 import incidence;
-#include "bounding.hpp"
-#include "generators.hpp"
-#include "json.hpp"
-#include "mesh_io.hpp"
-#include "methods.hpp"
+#include "testkit/bounding.hpp"
+#include "testkit/generators.hpp"
+#include "testkit/json.hpp"
+#include "testkit/mesh_io.hpp"
+#include "testkit/methods.hpp"
 #include "families.hpp"
 
 using namespace incidence;

@@ -1,11 +1,11 @@
 // The audit's stability and tradeoff runs, part 2 of 4 of incidence::catalog's families (families.hpp).
-#include "../../tests/oracle/cgal_oracle.hpp"
+#include "testkit/oracle/cgal_oracle.hpp"
 #include <string>
 #include <vector>
 import incidence;
-#include "generators.hpp"
-#include "json.hpp"
-#include "methods.hpp"
+#include "testkit/generators.hpp"
+#include "testkit/json.hpp"
+#include "testkit/methods.hpp"
 #include "families.hpp"
 
 template void audit_run::stability_part<1>(audit::json&, const options&, long&);

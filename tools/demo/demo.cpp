@@ -1,7 +1,7 @@
 // incidence-demo: for each query family, the four tiers' answers on touching and nearly
 // touching cases next to the true answer (CGAL Epeck), then a small speed table measured in this
 // run (median of 7 repetitions, ns per test) on random and near-degenerate inputs.
-#include "../../tests/oracle/cgal_oracle.hpp"
+#include "testkit/oracle/cgal_oracle.hpp"
 #include <algorithm>
 #include <chrono>
 #include <cmath>

@@ -18,20 +18,20 @@
 #include <cmath>
 #include <functional>
 #include <map>
-#include "../../oracle/cgal_oracle.hpp"
+#include "testkit/oracle/cgal_oracle.hpp"
 import incidence;
 import incidence.detail;
-#include "../../support/testing.hpp"
-#include "../../support/check.hpp"
-#include "../../support/flat_checks.hpp"
-#include "../../support/lp_shapes.hpp"
-#include "../../support/mesh_checks.hpp"
-#include "../../support/polygon3_cases.hpp"
-#include "../../support/polygon3_checks.hpp"
-#include "../../support/polyhedron_cases.hpp"
-#include "../../support/kdop_cases.hpp"
-#include "../../support/obb_cases.hpp"
-#include "../../support/box_linear_cases.hpp"
+#include "testkit/testing.hpp"
+#include "testkit/check.hpp"
+#include "testkit/flat_checks.hpp"
+#include "testkit/lp_shapes.hpp"
+#include "testkit/mesh_checks.hpp"
+#include "testkit/polygon3_cases.hpp"
+#include "testkit/polygon3_checks.hpp"
+#include "testkit/polyhedron_cases.hpp"
+#include "testkit/kdop_cases.hpp"
+#include "testkit/obb_cases.hpp"
+#include "testkit/box_linear_cases.hpp"
 
 namespace test_query_intersection_linear_pairs {
 

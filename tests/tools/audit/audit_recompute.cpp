@@ -3,7 +3,7 @@
 // from CGAL Epeck instead of the exact tier. Prints one JSON object per level, one per line:
 //   {"family": ..., "level": L, "skipped": n, "methods": {"name": [cases, wrong, fp, fn], ...}}
 // Usage: audit_recompute SEED CASES FAMILY_INDEX LEVEL[,LEVEL...]   or   audit_recompute --families
-#include "../../oracle/cgal_oracle.hpp"
+#include "testkit/oracle/cgal_oracle.hpp"
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -11,9 +11,9 @@
 #include <vector>
 import incidence;
 import incidence.detail;
-#include "../../../tools/audit/generators.hpp"
-#include "../../../tools/audit/methods.hpp"
-#include "../../support/lp_shapes.hpp"
+#include "testkit/generators.hpp"
+#include "testkit/methods.hpp"
+#include "testkit/lp_shapes.hpp"
 
 using namespace incidence;
 
