@@ -5,6 +5,8 @@
 // exact tier's hits are checked against the exact yes/no answer of the oracle.
 #include "bench.hpp"
 #include "testkit/box_linear_cases.hpp"
+#include "testkit/mesh_cases.hpp"
+#include "testkit/polygon3_cases.hpp"
 
 namespace bench {
 namespace {
@@ -124,12 +126,56 @@ void register_linear(bool near) {
     }
 }
 
+// A polygon or a mesh (a view of arrays a store owns) against X, on the tests' generators.
+template <class Store, class X, class Gen>
+void view_values(const std::string& pair, bool near, Gen make_case) {
+    struct view_case {
+        Store g;
+        X x{};
+    };
+    const std::string dist = near ? "near_degenerate" : "random";
+    support::rng r = set_rng(near);
+    std::vector<view_case> cs;
+    for (int guard = 0; cs.size() < set_size && guard < 100000; ++guard) {
+        view_case c;
+        if (const auto x = make_case(r, c.g, near)) {
+            c.x = *x;
+            cs.push_back(std::move(c));
+        }
+    }
+    std::vector<bool> truth; // the exact tier, checked against the oracle in the tests
+    for (const auto& c : cs) truth.push_back(intersection<exact>(c.g.view(), c.x).has_value());
+    reg("exact/intersection_yes_no/" + pair + "/" + dist, cs, truth, check::exact, [](const view_case& c) { return intersects<exact>(c.g.view(), c.x); });
+    reg("exact/intersection/" + pair + "/" + dist, cs, truth, check::exact, [](const view_case& c) { return intersection<exact>(c.g.view(), c.x).has_value(); });
+    reg("conservative/intersection/" + pair + "/" + dist, cs, truth, check::conservative,
+        [](const view_case& c) { return intersection<conservative>(c.g.view(), c.x).has_value(); });
+    reg("approximate/intersection/" + pair + "/" + dist, cs, truth, check::approximate,
+        [](const view_case& c) { return intersection<approximate>(c.g.view(), c.x).has_value(); });
+}
+
+template <class X>
+void register_views(bool near) {
+    const std::string lin = linear_name<X>();
+    view_values<support::polygon3_store, X>(pair_name("polygon", lin), near, [](support::rng& r, support::polygon3_store& g, bool nr) {
+        support::polygon3_store other;
+        support::mesh_store mesh;
+        return nr ? support::polygon3_near<X>(r, g, other, mesh) : support::polygon3_random<X>(r, g, other, mesh);
+    });
+    view_values<support::mesh_store, X>(pair_name("mesh", lin), near, [](support::rng& r, support::mesh_store& m, bool nr) {
+        support::mesh_store other;
+        return std::optional<X>(nr ? support::mesh_near<X>(r, m, other) : support::mesh_random<X>(r, m, other));
+    });
+}
+
 } // namespace
 
 void register_intersection(bool near) {
     register_linear<ray3>(near);
     register_linear<segment3>(near);
     register_linear<line3>(near);
+    register_views<ray3>(near);
+    register_views<segment3>(near);
+    register_views<line3>(near);
 }
 
 } // namespace bench

@@ -168,6 +168,22 @@ struct near_boundary<sphere3, sphere3> {
         return {sphere3{c, r1}, sphere3{c + u * m, d * m - r1}};
     }
 };
+// A box and a ball touching at a face, an edge or a corner: the ball's centre beyond the box's
+// nearest point q by a Pythagorean offset u m of length d m (its radius), u pointing away from the
+// box on the axes where q is on a face (a zero component: q inside the slab).
+template <>
+struct near_boundary<aabb3, sphere3> {
+    static std::pair<aabb3, sphere3> touching(rng& r) {
+        const point3 lo = int_point(r);
+        const aabb3 b{lo, lo + vec3{double(r.integer(1, 400)), double(r.integer(1, 400)), double(r.integer(1, 400))}};
+        auto [u, d] = pythagorean(r);
+        const double m = r.integer(1, 20);
+        const double mn[3] = {b.min.x, b.min.y, b.min.z}, mx[3] = {b.max.x, b.max.y, b.max.z};
+        double uc[3] = {u.x, u.y, u.z}, q[3];
+        for (int i = 0; i < 3; ++i) q[i] = uc[i] > 0 ? mx[i] : (uc[i] < 0 ? mn[i] : std::floor((mn[i] + mx[i]) / 2));
+        return {b, sphere3{point3{q[0] + uc[0] * m, q[1] + uc[1] * m, q[2] + uc[2] * m}, d * m}};
+    }
+};
 template <>
 struct near_boundary<aabb3, point3> {
     static std::pair<aabb3, point3> touching(rng& r) {

@@ -541,39 +541,4 @@ TEST_CASE("intersection: fixtures", "[intersection]") {
     CHECK(ap->exists == certainty::uncertain);
 }
 
-// The regression of the architecture issue: squared_distance<conservative> of this point and box
-// returned an interval whose upper end lay 9.7e-51 below the exact value. The class it stands for:
-// s + e rounded to nearest (not upward), an error bound one operation short (gamma_4 for five
-// roundings), at every magnitude; the new enclosure rounds every end outward.
-TEST_CASE("squared_distance: the intervals contain the exact value (regression, and the class of it)", "[squared_distance][oracle]") {
-    const point3 p{0x1.f4cdd89a78f92p-56, -0x1.52904e1d81808p-58, -0x1.39fa10a093536p-56};
-    const aabb3 b{{-0x1.e462b26872b88p-60, -0x1.1e463e281f4b2p-57, -0x1.a2da2abed215ap-58}, {-0x1.bc1f6fb431cep-61, -0x1.0446bc0b5b806p-57, 0x1.ac2f56e46f9c6p-57}};
-    double P[3], mn[3], mx[3];
-    arr3(p, P), arr3(b.min, mn), arr3(b.max, mx);
-    const interval c = squared_distance<conservative>(b, p);
-    CHECK(oracle::interval_contains_point_box_sqdist(P, mn, mx, false, c.lo, c.hi));
-    CHECK(oracle::is_rounded_point_box_sqdist(P, mn, mx, false, squared_distance(b, p)));
-    support::rng r(support::seed() + 78);
-    long n = 0, bad = 0, not_rounded = 0;
-    for (long i = 0; i < support::cases(100000); ++i) {
-        support::transform tr = support::random_transform(r, false);
-        auto q = [&](int k) { return support::random_coord(r, tr, k); };
-        const point3 x{q(0), q(1), q(2)};
-        const aabb3 box = support::ordered(aabb3{{q(0), q(1), q(2)}, {q(0), q(1), q(2)}});
-        if (!is_finite(x) || !is_finite(box.min) || !is_finite(box.max)) continue;
-        arr3(x, P), arr3(box.min, mn), arr3(box.max, mx);
-        for (bool far : {false, true}) {
-            ++n;
-            const interval v = far ? max_squared_distance<aggressive>(box, x) : squared_distance<conservative>(box, x);
-            if (!oracle::interval_contains_point_box_sqdist(P, mn, mx, far, v.lo, v.hi) && ++bad <= 5)
-                std::printf("  [%a, %a] misses the squared distance of %s to %s\n", v.lo, v.hi, support::str(x).c_str(), (support::str(box.min) + support::str(box.max)).c_str());
-            const double e = far ? max_squared_distance(box, x) : squared_distance(box, x);
-            if (!oracle::is_rounded_point_box_sqdist(P, mn, mx, far, e)) ++not_rounded;
-        }
-    }
-    std::printf("[cases] squared_distance intervals: %ld cases, %ld not enclosed, %ld exact not correctly rounded\n", n, bad, not_rounded);
-    CHECK(bad == 0);
-    CHECK(not_rounded == 0);
-}
-
 } // namespace test_query_intersection_linear_pairs

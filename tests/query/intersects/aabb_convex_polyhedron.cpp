@@ -21,7 +21,7 @@ using namespace incidence;
 using namespace support::polyhedron_fixtures;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/aabb_convex_polyhedron.cppm
+const double approx_bound = catalog::approximate_bound("aabb_convex_polyhedron"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("aabb_convex_polyhedron: fixtures", "[aabb_convex_polyhedron]") {

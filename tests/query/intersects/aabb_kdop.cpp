@@ -29,7 +29,7 @@ using support::unit26;
 using support::unit6;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/aabb_kdop.cppm
+const double approx_bound = catalog::approximate_bound("aabb_kdop"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("aabb_kdop: fixtures", "[aabb_kdop]") {

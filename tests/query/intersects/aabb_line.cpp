@@ -15,7 +15,7 @@ using namespace incidence;
 using support::arr;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/aabb_line.cppm
+const double approx_bound = catalog::approximate_bound("aabb_line"); // stated in the catalog (modules/query/catalog.cppm)
 
 std::string describe(const aabb3& b, const line3& l) {
     return "box " + support::str(b.min) + support::str(b.max) + " line " + support::str(l.origin) + " dir " + support::str(l.direction);

@@ -39,7 +39,7 @@ using support::cube;
 using support::dented;
 
 namespace {
-constexpr double approx_bound = 0x1p-36; // stated in modules/query/aabb_mesh.cppm
+const double approx_bound = catalog::approximate_bound("aabb_mesh"); // stated in the catalog (modules/query/catalog.cppm)
 constexpr double above1 = 0x1.0000000000001p0;
 
 // Two unit cubes as one surface: [0, 1]^3 and the one above it moved by (dx, 0, 1), the second's

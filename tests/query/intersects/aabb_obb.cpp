@@ -20,7 +20,7 @@ namespace test_query_aabb_obb { // this file's names, apart from the files compi
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/aabb_obb.cppm
+const double approx_bound = catalog::approximate_bound("aabb_obb"); // stated in the catalog (modules/query/catalog.cppm)
 std::pair<aabb3, obb3> near_case(support::rng& r) { return support::obb_case<aabb3, obb3>::near(r); }
 std::pair<aabb3, obb3> random_case(support::rng& r) { return support::obb_case<aabb3, obb3>::random(r); }
 std::vector<std::pair<aabb3, obb3>> variants(const aabb3& a, const obb3& b, support::rng& r) {

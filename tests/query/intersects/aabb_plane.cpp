@@ -15,7 +15,7 @@ using namespace incidence;
 using support::arr;
 
 namespace {
-constexpr double approx_bound = 0x1p-48; // stated in modules/query/aabb_plane.cppm
+const double approx_bound = catalog::approximate_bound("aabb_plane"); // stated in the catalog (modules/query/catalog.cppm)
 
 std::string describe(const aabb3& b, const plane3& p) {
     return "box " + support::str(b.min) + support::str(b.max) + " plane " + support::str(p.normal) + " " + support::hex(p.offset);

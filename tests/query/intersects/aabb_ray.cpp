@@ -14,7 +14,7 @@ using namespace incidence;
 using support::arr;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/aabb_ray.cppm
+const double approx_bound = catalog::approximate_bound("aabb_ray"); // stated in the catalog (modules/query/catalog.cppm)
 
 std::string describe(const aabb3& b, const ray3& r) {
     return "box " + support::str(b.min) + support::str(b.max) + " ray " + support::str(r.origin) + " dir " + support::str(r.direction);

@@ -20,7 +20,7 @@ using namespace incidence;
 using support::arr;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/aabb_segment.cppm
+const double approx_bound = catalog::approximate_bound("aabb_segment"); // stated in the catalog (modules/query/catalog.cppm)
 
 std::string describe(const aabb3& b, const segment3& s) {
     return "box " + support::str(b.min) + support::str(b.max) + " segment " + support::str(s.a) + support::str(s.b);

@@ -20,7 +20,7 @@ namespace test_query_aabb_sphere { // this file's names, apart from the files co
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/aabb_sphere.cppm
+const double approx_bound = catalog::approximate_bound("aabb_sphere"); // stated in the catalog (modules/query/catalog.cppm)
 std::pair<aabb3, sphere3> random_case(support::rng& r) {
     const auto tr = support::random_transform(r, false);
     return {support::random_aabb(r, tr), support::random_ball(r, tr)};

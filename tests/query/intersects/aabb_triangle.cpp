@@ -21,7 +21,7 @@ using namespace incidence;
 using support::arr;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // Akenine-Moeller's test in plain double
+const double approx_bound = catalog::approximate_bound("aabb_triangle"); // stated in the catalog (modules/query/catalog.cppm)
 
 std::string describe(const aabb3& b, const triangle3& t) {
     return "box " + support::str(b.min) + support::str(b.max) + " tri " + support::str(t.a) + support::str(t.b) + support::str(t.c);

@@ -25,7 +25,7 @@ using namespace incidence;
 using namespace support::polyhedron_fixtures;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/convex_polyhedron_convex_polyhedron.cppm
+const double approx_bound = catalog::approximate_bound("convex_polyhedron_convex_polyhedron"); // stated in the catalog (modules/query/catalog.cppm)
 // x + y + z >= t within a box of side 5: beyond the cut face of unit_cube_cut when t > 5/2
 constexpr convex_polyhedron3 beyond_cut(double t) {
     return {{plane3{{-1, -1, -1}, -t}, plane3{{1, 0, 0}, 5}, plane3{{0, 1, 0}, 5}, plane3{{0, 0, 1}, 5}}, 4};

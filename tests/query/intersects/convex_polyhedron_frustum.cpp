@@ -24,7 +24,7 @@ using namespace incidence;
 using namespace support::polyhedron_fixtures;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/convex_polyhedron_frustum.cppm
+const double approx_bound = catalog::approximate_bound("convex_polyhedron_frustum"); // stated in the catalog (modules/query/catalog.cppm)
 constexpr convex_polyhedron3 cube(double lo_z) {
     return {{plane3{{1, 0, 0}, 5}, plane3{{-1, 0, 0}, -4}, plane3{{0, 1, 0}, 5}, plane3{{0, -1, 0}, -4}, plane3{{0, 0, 1}, 5},
              plane3{{0, 0, -1}, -lo_z}},

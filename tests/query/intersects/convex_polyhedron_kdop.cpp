@@ -23,7 +23,7 @@ using namespace incidence;
 using namespace support::polyhedron_fixtures;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/convex_polyhedron_kdop.cppm
+const double approx_bound = catalog::approximate_bound("convex_polyhedron_kdop"); // stated in the catalog (modules/query/catalog.cppm)
 // [1/2, 1]^3 with x + y + z >= lo (the other diagonal slabs wide open).
 constexpr kdop<14> beyond_cut(double lo) { return {{0.5, 0.5, 0.5, lo, -5, -5, -5}, {1, 1, 1, 3, 5, 5, 5}}; }
 } // namespace

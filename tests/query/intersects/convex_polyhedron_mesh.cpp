@@ -24,7 +24,7 @@ using support::cube;
 using support::dented;
 
 namespace {
-constexpr double approx_bound = 0x1p-36; // stated in modules/query/convex_polyhedron_mesh.cppm
+const double approx_bound = catalog::approximate_bound("convex_polyhedron_mesh"); // stated in the catalog (modules/query/catalog.cppm)
 constexpr convex_polyhedron3 box(point3 lo, point3 hi) {
     return {{plane3{{1, 0, 0}, hi.x}, plane3{{-1, 0, 0}, -lo.x}, plane3{{0, 1, 0}, hi.y}, plane3{{0, -1, 0}, -lo.y}, plane3{{0, 0, 1}, hi.z},
              plane3{{0, 0, -1}, -lo.z}},

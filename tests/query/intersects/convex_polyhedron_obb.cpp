@@ -26,7 +26,7 @@ using namespace incidence;
 using namespace support::polyhedron_fixtures;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/convex_polyhedron_obb.cppm
+const double approx_bound = catalog::approximate_bound("convex_polyhedron_obb"); // stated in the catalog (modules/query/catalog.cppm)
 // A box turned 45 degrees about z (axes of length sqrt 2, read as given): x + y = 3 + 2 s0 and
 // x - y = -2 s1 about the centre (3/2, 3/2).
 constexpr obb3 diamond(double h0, double z, double h2) { return {{1.5, 1.5, z}, {vec3{1, 1, 0}, vec3{-1, 1, 0}, vec3{0, 0, 1}}, {h0, 0.5, h2}}; }

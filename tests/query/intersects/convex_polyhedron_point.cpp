@@ -21,7 +21,7 @@ using namespace incidence;
 using namespace support::polyhedron_fixtures;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/convex_polyhedron_point.cppm
+const double approx_bound = catalog::approximate_bound("convex_polyhedron_point"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("convex_polyhedron_point: fixtures", "[convex_polyhedron_point]") {

@@ -27,7 +27,7 @@ using support::polyhedron_fixtures::camera;
 using support::polyhedron_fixtures::integer_frustum;
 
 namespace {
-constexpr double approx_bound = 0x1p-36; // stated in modules/query/frustum_mesh.cppm
+const double approx_bound = catalog::approximate_bound("frustum_mesh"); // stated in the catalog (modules/query/catalog.cppm)
 // f scaled by s about the origin, then moved to c: n . x <= o becomes n . x <= n . c + s o (exact here)
 constexpr frustum3 shrunk(const frustum3& f, double s, point3 c) {
     frustum3 g = f;

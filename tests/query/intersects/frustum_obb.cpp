@@ -27,7 +27,7 @@ using namespace incidence;
 using namespace support::polyhedron_fixtures;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/frustum_obb.cppm
+const double approx_bound = catalog::approximate_bound("frustum_obb"); // stated in the catalog (modules/query/catalog.cppm)
 constexpr std::array<vec3, 3> turned{vec3{1, 1, 0}, vec3{-1, 1, 0}, vec3{0, 0, 1}}; // 45 degrees about z, length sqrt 2
 constexpr std::array<vec3, 3> unit{vec3{1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1}};
 } // namespace

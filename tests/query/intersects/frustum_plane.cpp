@@ -23,7 +23,7 @@ using namespace incidence;
 using namespace support::polyhedron_fixtures;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/frustum_plane.cppm
+const double approx_bound = catalog::approximate_bound("frustum_plane"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("frustum_plane: fixtures", "[frustum_plane]") {

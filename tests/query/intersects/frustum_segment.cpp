@@ -21,7 +21,7 @@ using namespace incidence;
 using namespace support::polyhedron_fixtures;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/frustum_segment.cppm
+const double approx_bound = catalog::approximate_bound("frustum_segment"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("frustum_segment: fixtures", "[frustum_segment]") {

@@ -29,7 +29,7 @@ using support::unit26;
 using support::unit6;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/kdop_kdop.cppm
+const double approx_bound = catalog::approximate_bound("kdop_kdop"); // stated in the catalog (modules/query/catalog.cppm)
 // The cube [b, 2]^3 as a 14-DOP with loose diagonal slabs: near corner_cut's cut corner.
 constexpr kdop<14> near_corner(double b) { return kdop<14>{{b, b, b, -5, -5, -5, -5}, {2, 2, 2, 6, 5, 5, 5}}; }
 } // namespace

@@ -27,7 +27,7 @@ using support::unit26;
 using support::unit6;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/kdop_line.cppm
+const double approx_bound = catalog::approximate_bound("kdop_line"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("kdop_line: fixtures", "[kdop_line]") {

@@ -26,7 +26,7 @@ using support::cube;
 using support::dented;
 
 namespace {
-constexpr double approx_bound = 0x1p-36; // stated in modules/query/kdop_mesh.cppm
+const double approx_bound = catalog::approximate_bound("kdop_mesh"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("kdop_mesh: fixtures", "[kdop_mesh]") {

@@ -25,7 +25,7 @@ using support::unit26;
 using support::unit6;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/kdop_plane.cppm
+const double approx_bound = catalog::approximate_bound("kdop_plane"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("kdop_plane: fixtures", "[kdop_plane]") {

@@ -32,7 +32,7 @@ using support::empty14;
 using support::unit26;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/kdop_polygon.cppm
+const double approx_bound = catalog::approximate_bound("kdop_polygon"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("kdop_polygon: fixtures", "[kdop_polygon]") {

@@ -27,7 +27,7 @@ using support::unit26;
 using support::polyhedron_fixtures::wide_tetrahedron;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/kdop_tetrahedron.cppm
+const double approx_bound = catalog::approximate_bound("kdop_tetrahedron"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("kdop_tetrahedron: fixtures", "[kdop_tetrahedron]") {

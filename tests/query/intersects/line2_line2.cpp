@@ -14,7 +14,7 @@ namespace test_query_line2_line2 { // this file's names, apart from the files co
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-48; // stated in modules/query/line2_line2.cppm
+const double approx_bound = catalog::approximate_bound("line2_line2"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("line2_line2: fixtures", "[line2_line2]") {

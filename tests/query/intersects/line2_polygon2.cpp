@@ -24,7 +24,7 @@ using support::c_shape;
 using support::frame;
 
 namespace {
-constexpr double approx_bound = 0x1p-44; // stated in modules/query/line2_polygon2.cppm
+const double approx_bound = catalog::approximate_bound("line2_polygon2"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("line2_polygon2: fixtures", "[line2_polygon2]") {

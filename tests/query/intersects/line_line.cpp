@@ -15,7 +15,7 @@ namespace test_query_line_line { // this file's names, apart from the files comp
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/line_line.cppm
+const double approx_bound = catalog::approximate_bound("line_line"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("line_line: fixtures", "[line_line]") {

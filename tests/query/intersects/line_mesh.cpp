@@ -23,7 +23,7 @@ using support::cube;
 using support::dented;
 
 namespace {
-constexpr double approx_bound = 0x1p-36; // stated in modules/query/line_mesh.cppm
+const double approx_bound = catalog::approximate_bound("line_mesh"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("line_mesh: fixtures", "[line_mesh]") {

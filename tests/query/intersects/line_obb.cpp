@@ -15,7 +15,7 @@ namespace test_query_line_obb { // this file's names, apart from the files compi
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/line_obb.cppm
+const double approx_bound = catalog::approximate_bound("line_obb"); // stated in the catalog (modules/query/catalog.cppm)
 std::pair<line3, obb3> near_case(support::rng& r) { return support::obb_case<line3, obb3>::near(r); }
 std::pair<line3, obb3> random_case(support::rng& r) { return support::obb_case<line3, obb3>::random(r); }
 std::vector<std::pair<line3, obb3>> variants(const line3& a, const obb3& b, support::rng& r) {

@@ -15,7 +15,7 @@ namespace test_query_line_plane { // this file's names, apart from the files com
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-48; // stated in modules/query/line_plane.cppm
+const double approx_bound = catalog::approximate_bound("line_plane"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("line_plane: fixtures", "[line_plane]") {

@@ -15,7 +15,7 @@ namespace test_query_line_point { // this file's names, apart from the files com
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/line_point.cppm
+const double approx_bound = catalog::approximate_bound("line_point"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("line_point: fixtures", "[line_point]") {

@@ -15,7 +15,7 @@ namespace test_query_line_ray { // this file's names, apart from the files compi
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/line_ray.cppm
+const double approx_bound = catalog::approximate_bound("line_ray"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("line_ray: fixtures", "[line_ray]") {

@@ -15,7 +15,7 @@ namespace test_query_line_segment { // this file's names, apart from the files c
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/line_segment.cppm
+const double approx_bound = catalog::approximate_bound("line_segment"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("line_segment: fixtures", "[line_segment]") {

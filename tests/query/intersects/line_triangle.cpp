@@ -15,7 +15,7 @@ namespace test_query_line_triangle { // this file's names, apart from the files 
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/line_triangle.cppm
+const double approx_bound = catalog::approximate_bound("line_triangle"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("line_triangle: fixtures", "[line_triangle]") {

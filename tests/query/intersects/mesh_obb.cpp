@@ -21,7 +21,7 @@ using support::cube;
 using support::dented;
 
 namespace {
-constexpr double approx_bound = 0x1p-36; // stated in modules/query/mesh_obb.cppm
+const double approx_bound = catalog::approximate_bound("mesh_obb"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("mesh_obb: fixtures", "[mesh_obb]") {

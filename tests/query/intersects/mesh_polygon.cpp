@@ -33,7 +33,7 @@ using support::empty14;
 using support::unit26;
 
 namespace {
-constexpr double approx_bound = 0x1p-36; // stated in modules/query/mesh_polygon.cppm
+const double approx_bound = catalog::approximate_bound("mesh_polygon"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("mesh_polygon: fixtures", "[mesh_polygon]") {

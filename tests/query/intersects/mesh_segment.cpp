@@ -30,7 +30,7 @@ using support::cube;
 using support::dented;
 
 namespace {
-constexpr double approx_bound = 0x1p-36; // stated in modules/query/mesh_segment.cppm
+const double approx_bound = catalog::approximate_bound("mesh_segment"); // stated in the catalog (modules/query/catalog.cppm)
 
 // The unit cube and a fin on its top face: two back-to-back triangles (0.5, 0.5, 1), (2, 0.5, 1),
 // (0.5, 2, 1) (closed: each edge used twice), reaching past the cube.

@@ -36,7 +36,7 @@ using support::cube;
 using support::dented;
 
 namespace {
-constexpr double approx_bound = 0x1p-36; // stated in modules/query/mesh_triangle.cppm
+const double approx_bound = catalog::approximate_bound("mesh_triangle"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("mesh_triangle: fixtures", "[mesh_triangle]") {

@@ -21,7 +21,7 @@ namespace test_query_obb_obb { // this file's names, apart from the files compil
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/obb_obb.cppm
+const double approx_bound = catalog::approximate_bound("obb_obb"); // stated in the catalog (modules/query/catalog.cppm)
 
 std::pair<obb3, obb3> near_case(support::rng& r) { return support::obb_case<obb3, obb3>::near(r); }
 std::pair<obb3, obb3> random_case(support::rng& r) { return support::obb_case<obb3, obb3>::random(r); }

@@ -15,7 +15,7 @@ namespace test_query_obb_plane { // this file's names, apart from the files comp
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-48; // stated in modules/query/obb_plane.cppm
+const double approx_bound = catalog::approximate_bound("obb_plane"); // stated in the catalog (modules/query/catalog.cppm)
 std::pair<obb3, plane3> near_case(support::rng& r) { return support::obb_case<obb3, plane3>::near(r); }
 std::pair<obb3, plane3> random_case(support::rng& r) { return support::obb_case<obb3, plane3>::random(r); }
 std::vector<std::pair<obb3, plane3>> variants(const obb3& a, const plane3& b, support::rng& r) {

@@ -19,7 +19,7 @@ namespace test_query_obb_point { // this file's names, apart from the files comp
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/obb_point.cppm
+const double approx_bound = catalog::approximate_bound("obb_point"); // stated in the catalog (modules/query/catalog.cppm)
 std::pair<obb3, point3> near_case(support::rng& r) { return support::obb_case<obb3, point3>::near(r); }
 std::pair<obb3, point3> random_case(support::rng& r) { return support::obb_case<obb3, point3>::random(r); }
 std::vector<std::pair<obb3, point3>> variants(const obb3& a, const point3& b, support::rng& r) {

@@ -15,7 +15,7 @@ namespace test_query_obb_ray { // this file's names, apart from the files compil
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/obb_ray.cppm
+const double approx_bound = catalog::approximate_bound("obb_ray"); // stated in the catalog (modules/query/catalog.cppm)
 std::pair<obb3, ray3> near_case(support::rng& r) { return support::obb_case<obb3, ray3>::near(r); }
 std::pair<obb3, ray3> random_case(support::rng& r) { return support::obb_case<obb3, ray3>::random(r); }
 std::vector<std::pair<obb3, ray3>> variants(const obb3& a, const ray3& b, support::rng& r) {

@@ -20,7 +20,7 @@ namespace test_query_obb_segment { // this file's names, apart from the files co
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/obb_segment.cppm
+const double approx_bound = catalog::approximate_bound("obb_segment"); // stated in the catalog (modules/query/catalog.cppm)
 std::pair<obb3, segment3> near_case(support::rng& r) { return support::obb_case<obb3, segment3>::near(r); }
 std::pair<obb3, segment3> random_case(support::rng& r) { return support::obb_case<obb3, segment3>::random(r); }
 std::vector<std::pair<obb3, segment3>> variants(const obb3& a, const segment3& b, support::rng& r) {

@@ -18,7 +18,7 @@ namespace test_query_obb_sphere { // this file's names, apart from the files com
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/obb_sphere.cppm
+const double approx_bound = catalog::approximate_bound("obb_sphere"); // stated in the catalog (modules/query/catalog.cppm)
 std::pair<obb3, sphere3> random_case(support::rng& r) {
     const auto tr = support::random_transform(r, false);
     return {support::random_obb(r, tr), support::random_ball(r, tr)};

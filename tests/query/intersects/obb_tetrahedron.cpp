@@ -24,7 +24,7 @@ namespace test_query_obb_tetrahedron { // this file's names, apart from the file
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/obb_tetrahedron.cppm
+const double approx_bound = catalog::approximate_bound("obb_tetrahedron"); // stated in the catalog (modules/query/catalog.cppm)
 std::pair<obb3, tetrahedron3> near_case(support::rng& r) { return support::obb_case<obb3, tetrahedron3>::near(r); }
 std::pair<obb3, tetrahedron3> random_case(support::rng& r) { return support::obb_case<obb3, tetrahedron3>::random(r); }
 std::vector<std::pair<obb3, tetrahedron3>> variants(const obb3& a, const tetrahedron3& b, support::rng& r) {

@@ -20,7 +20,7 @@ namespace test_query_obb_triangle { // this file's names, apart from the files c
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/obb_triangle.cppm
+const double approx_bound = catalog::approximate_bound("obb_triangle"); // stated in the catalog (modules/query/catalog.cppm)
 std::pair<obb3, triangle3> near_case(support::rng& r) { return support::obb_case<obb3, triangle3>::near(r); }
 std::pair<obb3, triangle3> random_case(support::rng& r) { return support::obb_case<obb3, triangle3>::random(r); }
 std::vector<std::pair<obb3, triangle3>> variants(const obb3& a, const triangle3& b, support::rng& r) {

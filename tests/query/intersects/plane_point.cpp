@@ -15,7 +15,7 @@ namespace test_query_plane_point { // this file's names, apart from the files co
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-48; // stated in modules/query/plane_point.cppm
+const double approx_bound = catalog::approximate_bound("plane_point"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("plane_point: fixtures", "[plane_point]") {

@@ -15,7 +15,7 @@ namespace test_query_plane_ray { // this file's names, apart from the files comp
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-48; // stated in modules/query/plane_ray.cppm
+const double approx_bound = catalog::approximate_bound("plane_ray"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("plane_ray: fixtures", "[plane_ray]") {

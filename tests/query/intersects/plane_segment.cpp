@@ -15,7 +15,7 @@ using namespace incidence;
 using support::arr;
 
 namespace {
-constexpr double approx_bound = 0x1p-48; // stated in modules/query/plane_segment.cppm
+const double approx_bound = catalog::approximate_bound("plane_segment"); // stated in the catalog (modules/query/catalog.cppm)
 
 std::string describe(const plane3& p, const segment3& s) {
     return "plane " + support::str(p.normal) + " " + support::hex(p.offset) + " segment " + support::str(s.a) + support::str(s.b);

@@ -17,7 +17,7 @@ namespace test_query_plane_tetrahedron { // this file's names, apart from the fi
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-48; // stated in modules/query/plane_tetrahedron.cppm
+const double approx_bound = catalog::approximate_bound("plane_tetrahedron"); // stated in the catalog (modules/query/catalog.cppm)
 const tetrahedron3 T{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
 } // namespace
 

@@ -15,7 +15,7 @@ using namespace incidence;
 using support::arr;
 
 namespace {
-constexpr double approx_bound = 0x1p-48; // stated in modules/query/plane_triangle.cppm
+const double approx_bound = catalog::approximate_bound("plane_triangle"); // stated in the catalog (modules/query/catalog.cppm)
 
 std::string describe(const plane3& p, const triangle3& t) {
     return "plane " + support::str(p.normal) + " " + support::hex(p.offset) + " tri " + support::str(t.a) + support::str(t.b) + support::str(t.c);

@@ -14,7 +14,7 @@ namespace test_query_point2_ray2 { // this file's names, apart from the files co
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-48; // stated in modules/query/point2_ray2.cppm
+const double approx_bound = catalog::approximate_bound("point2_ray2"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("point2_ray2: fixtures", "[point2_ray2]") {

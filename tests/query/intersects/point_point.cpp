@@ -15,7 +15,7 @@ namespace test_query_point_point { // this file's names, apart from the files co
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0; // exact in every tier (modules/query/point_point.cppm): no approximate miss is allowed
+const double approx_bound = catalog::approximate_bound("point_point"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("point_point: fixtures", "[point_point]") {

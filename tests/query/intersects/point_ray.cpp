@@ -15,7 +15,7 @@ namespace test_query_point_ray { // this file's names, apart from the files comp
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/point_ray.cppm
+const double approx_bound = catalog::approximate_bound("point_ray"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("point_ray: fixtures", "[point_ray]") {

@@ -15,7 +15,7 @@ namespace test_query_point_segment { // this file's names, apart from the files 
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/point_segment.cppm
+const double approx_bound = catalog::approximate_bound("point_segment"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("point_segment: fixtures", "[point_segment]") {

@@ -14,7 +14,7 @@ using namespace incidence;
 using support::arr;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // plain double r^2 - |p - c|^2: a few roundings
+const double approx_bound = catalog::approximate_bound("point_sphere"); // stated in the catalog (modules/query/catalog.cppm)
 std::string describe(const point3& p, const sphere3& s) {
     return "point " + support::str(p) + " ball " + support::str(s.center) + " r " + support::hex(s.radius);
 }

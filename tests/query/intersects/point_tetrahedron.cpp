@@ -22,7 +22,7 @@ namespace test_query_point_tetrahedron { // this file's names, apart from the fi
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/point_tetrahedron.cppm
+const double approx_bound = catalog::approximate_bound("point_tetrahedron"); // stated in the catalog (modules/query/catalog.cppm)
 const tetrahedron3 T{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
 } // namespace
 

@@ -31,7 +31,7 @@ using support::c_shape;
 using support::frame;
 
 namespace {
-constexpr double approx_bound = 0x1p-44; // stated in modules/query/polygon2_segment2.cppm
+const double approx_bound = catalog::approximate_bound("polygon2_segment2"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("polygon2_segment2: fixtures", "[polygon2_segment2]") {

@@ -41,7 +41,7 @@ using support::empty14;
 using support::unit26;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/polygon_triangle.cppm
+const double approx_bound = catalog::approximate_bound("polygon_triangle"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("polygon_triangle: fixtures", "[polygon_triangle]") {

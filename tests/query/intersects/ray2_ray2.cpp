@@ -14,7 +14,7 @@ namespace test_query_ray2_ray2 { // this file's names, apart from the files comp
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-48; // stated in modules/query/ray2_ray2.cppm
+const double approx_bound = catalog::approximate_bound("ray2_ray2"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("ray2_ray2: fixtures", "[ray2_ray2]") {

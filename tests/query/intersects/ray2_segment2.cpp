@@ -14,7 +14,7 @@ namespace test_query_ray2_segment2 { // this file's names, apart from the files 
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-48; // stated in modules/query/ray2_segment2.cppm
+const double approx_bound = catalog::approximate_bound("ray2_segment2"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("ray2_segment2: fixtures", "[ray2_segment2]") {

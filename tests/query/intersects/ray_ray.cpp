@@ -15,7 +15,7 @@ namespace test_query_ray_ray { // this file's names, apart from the files compil
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/ray_ray.cppm
+const double approx_bound = catalog::approximate_bound("ray_ray"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("ray_ray: fixtures", "[ray_ray]") {

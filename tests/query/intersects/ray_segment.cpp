@@ -15,7 +15,7 @@ namespace test_query_ray_segment { // this file's names, apart from the files co
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/ray_segment.cppm
+const double approx_bound = catalog::approximate_bound("ray_segment"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("ray_segment: fixtures", "[ray_segment]") {

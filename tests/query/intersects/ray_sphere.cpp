@@ -16,7 +16,7 @@ using namespace incidence;
 using support::arr;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/ray_sphere.cppm
+const double approx_bound = catalog::approximate_bound("ray_sphere"); // stated in the catalog (modules/query/catalog.cppm)
 
 std::string describe(const ray3& r, const sphere3& s) {
     return "ray " + support::str(r.origin) + " dir " + support::str(r.direction) + " ball " + support::str(s.center) + " r " + support::hex(s.radius);

@@ -12,7 +12,7 @@ namespace test_query_ray_triangle { // this file's names, apart from the files c
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-36; // stated in modules/query/ray_triangle.cppm
+const double approx_bound = catalog::approximate_bound("ray_triangle"); // stated in the catalog (modules/query/catalog.cppm)
 
 using support::arr;
 std::string describe(const ray3& r, const triangle3& t) {

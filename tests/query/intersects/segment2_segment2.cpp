@@ -14,7 +14,7 @@ namespace test_query_segment2_segment2 { // this file's names, apart from the fi
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-48; // stated in modules/query/segment2_segment2.cppm
+const double approx_bound = catalog::approximate_bound("segment2_segment2"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("segment2_segment2: fixtures", "[segment2_segment2]") {

@@ -15,7 +15,7 @@ namespace test_query_segment_segment { // this file's names, apart from the file
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-40; // stated in modules/query/segment_segment.cppm
+const double approx_bound = catalog::approximate_bound("segment_segment"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("segment_segment: fixtures", "[segment_segment]") {

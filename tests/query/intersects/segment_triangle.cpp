@@ -13,7 +13,7 @@ using namespace incidence;
 using support::arr;
 
 namespace {
-constexpr double approx_bound = 0x1p-36; // the same sign algorithm in plain double
+const double approx_bound = catalog::approximate_bound("segment_triangle"); // stated in the catalog (modules/query/catalog.cppm)
 
 std::string describe(const segment3& s, const triangle3& t) {
     return "seg " + support::str(s.a) + support::str(s.b) + " tri " + support::str(t.a) + support::str(t.b) + support::str(t.c);

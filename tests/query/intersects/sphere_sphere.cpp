@@ -15,7 +15,7 @@ using namespace incidence;
 using support::arr;
 
 namespace {
-constexpr double approx_bound = 0x1p-40;
+const double approx_bound = catalog::approximate_bound("sphere_sphere"); // stated in the catalog (modules/query/catalog.cppm)
 std::string describe(const sphere3& a, const sphere3& b) {
     return "ball " + support::str(a.center) + " r " + support::hex(a.radius) + " ball " + support::str(b.center) + " r " + support::hex(b.radius);
 }

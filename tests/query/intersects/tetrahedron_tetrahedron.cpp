@@ -17,7 +17,7 @@ namespace test_query_tetrahedron_tetrahedron { // this file's names, apart from 
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-36; // stated in modules/query/tetrahedron_tetrahedron.cppm
+const double approx_bound = catalog::approximate_bound("tetrahedron_tetrahedron"); // stated in the catalog (modules/query/catalog.cppm)
 const tetrahedron3 T{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
 tetrahedron3 shifted(const tetrahedron3& t, vec3 v) { return {t.a + v, t.b + v, t.c + v, t.d + v}; }
 } // namespace

@@ -19,7 +19,7 @@ namespace test_query_tetrahedron_triangle { // this file's names, apart from the
 using namespace incidence;
 
 namespace {
-constexpr double approx_bound = 0x1p-36; // stated in modules/query/tetrahedron_triangle.cppm
+const double approx_bound = catalog::approximate_bound("tetrahedron_triangle"); // stated in the catalog (modules/query/catalog.cppm)
 const tetrahedron3 T{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
 } // namespace
 

@@ -15,7 +15,7 @@ using namespace incidence;
 using support::arr;
 
 namespace {
-constexpr double approx_bound = 0x1p-36; // the same sign algorithm in plain double
+const double approx_bound = catalog::approximate_bound("triangle_triangle"); // stated in the catalog (modules/query/catalog.cppm)
 
 std::string describe(const triangle3& p, const triangle3& q) {
     return "tri " + support::str(p.a) + support::str(p.b) + support::str(p.c) + " tri " + support::str(q.a) +

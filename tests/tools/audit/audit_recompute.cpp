@@ -47,6 +47,11 @@ int truth(const ray3& r, const sphere3& s) {
     arr(r.origin, o), arr(r.direction, d), arr(s.center, c);
     return oracle::ray_ball(o, d, c, s.radius);
 }
+int truth(const aabb3& b, const sphere3& s) {
+    double mn[3], mx[3], c[3];
+    arr(b.min, mn), arr(b.max, mx), arr(s.center, c);
+    return oracle::ball_aabb(mn, mx, c, s.radius);
+}
 int truth(const aabb3& b, const ray3& r) {
     double o[3], d[3], mn[3], mx[3];
     arr(r.origin, o), arr(r.direction, d), arr(b.min, mn), arr(b.max, mx);
