@@ -1,5 +1,6 @@
 // Benchmarks: ray-triangle, ray-box, orient3d, the sphere pairs and box-point, with the classic double methods and CGAL beside.
 #include "bench.hpp"
+#include "testkit/contain_cases.hpp"
 
 namespace bench {
 namespace {
@@ -155,6 +156,22 @@ void register_classic_rays(bool near) {
             return oracle::point_in_box(p, mn, mx);
         };
         tiers("aabb_point", dist, cs, truth, [](auto tier, const bp& c) { return intersects<decltype(tier)>(c.b, c.p); });
+    }
+    {
+        // box x ball: random boxes and balls; near: the tests' balls touching a box at a face, an
+        // edge or a corner, a little short of it or past it (testkit/contain_cases.hpp)
+        support::rng r = set_rng(near);
+        std::vector<std::pair<aabb3, sphere3>> cs;
+        while (cs.size() < set_size) {
+            if (near) cs.push_back(support::ball_touching_aabb(r));
+            else cs.push_back({box(rp(), rp()), sphere3{rp(), uni(0, 0.5)}});
+        }
+        auto truth = [](const std::pair<aabb3, sphere3>& c) {
+            double mn[3], mx[3], cc[3];
+            arr(c.first.min, mn); arr(c.first.max, mx); arr(c.second.center, cc);
+            return oracle::ball_aabb(mn, mx, cc, c.second.radius);
+        };
+        tiers("aabb_sphere", dist, cs, truth, [](auto tier, const std::pair<aabb3, sphere3>& c) { return intersects<decltype(tier)>(c.first, c.second); });
     }
 }
 } // namespace bench

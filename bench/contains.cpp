@@ -8,6 +8,7 @@
 #include <optional>
 #include <stdexcept>
 #include "testkit/contain_cases.hpp"
+#include "testkit/generators.hpp"
 
 namespace bench {
 namespace {
@@ -92,9 +93,66 @@ void halfspace_contains(const std::string& pair, bool near) {
         [](const P& a, const B& b) { return support::contained_truth(a, b); });
 }
 
+// contains(a, b) on the audit's cases of the pair (A, B) or (B, A) (testkit/generators.hpp): random
+// at separation 2^0 (b moved by the objects' size from touching), near-degenerate at 1 ulp. The
+// truth is the exact tier, checked against the oracle by the pair's test.
+template <class A, class B>
+void audit_contains(const std::string& pair, bool near) {
+    constexpr bool swapped = !requires(audit::rng & r) { audit::near_boundary<A, B>::touching(r); };
+    audit::rng r(near ? 7 : 3);
+    std::vector<std::pair<A, B>> cs;
+    while (cs.size() < set_size) {
+        const int level = near ? audit::separation_levels + 1 : 0;
+        if constexpr (swapped) {
+            const auto [b, a] = audit::make_case<B, A>(r, level, audit::settings[0]);
+            cs.emplace_back(a, b);
+        } else {
+            cs.push_back(audit::make_case<A, B>(r, level, audit::settings[0]));
+        }
+    }
+    tiers(pair, near ? "near_degenerate" : "random", cs, [](const std::pair<A, B>& c) { return contains<exact>(c.first, c.second); },
+          [](auto tier, const std::pair<A, B>& c) { return contains<decltype(tier)>(c.first, c.second); }, "contains");
+}
+// contains(a view, a point): the intersects cases of the pair, the oracle as truth.
+
 } // namespace
 
 void register_contains(bool near) {
+    audit_contains<aabb3, aabb3>("aabb_aabb", near);
+    audit_contains<aabb3, point3>("aabb_point", near);
+    audit_contains<aabb3, segment3>("aabb_segment", near);
+    audit_contains<aabb3, triangle3>("aabb_triangle", near);
+    audit_contains<obb3, aabb3>("obb_aabb", near);
+    audit_contains<sphere3, point3>("sphere_point", near);
+    audit_contains<sphere3, sphere3>("sphere_sphere", near);
+    audit_contains<kdop<14>, obb3>("kdop_obb_14", near);
+    audit_contains<kdop<14>, point3>("kdop_point_14", near);
+    audit_contains<kdop<14>, segment3>("kdop_segment_14", near);
+    audit_contains<convex_polyhedron3, aabb3>("convex_polyhedron_aabb", near);
+    audit_contains<convex_polyhedron3, obb3>("convex_polyhedron_obb", near);
+    audit_contains<convex_polyhedron3, point3>("convex_polyhedron_point", near);
+    audit_contains<convex_polyhedron3, triangle3>("convex_polyhedron_triangle", near);
+    audit_contains<frustum3, aabb3>("frustum_aabb", near);
+    audit_contains<frustum3, obb3>("frustum_obb", near);
+    audit_contains<frustum3, segment3>("frustum_segment", near);
+    audit_contains<frustum3, tetrahedron3>("frustum_tetrahedron", near);
+    view_tiers<support::mesh_store, point3, true>(
+        "mesh_point", near, [](support::rng& r, support::mesh_store& m, support::mesh_store& o, bool nr) {
+            return nr ? support::mesh_near<point3>(r, m, o) : support::mesh_random<point3>(r, m, o);
+        },
+        [](const mesh3& m, const point3& p) { return support::mesh_truth(m, p); });
+    view_tiers<support::polygon_store, point2, true>(
+        "polygon2_point2", near, [](support::rng& r, support::polygon_store& g, support::polygon_store& o, bool nr) {
+            return nr ? support::polygon_near<point2>(r, g, o) : support::polygon_random<point2>(r, g, o);
+        },
+        [](const polygon2& g, const point2& p) { return support::polygon_truth(g, p); });
+    view_tiers<support::polygon3_store, point3, true>(
+        "polygon_point", near, [](support::rng& r, support::polygon3_store& g, support::polygon3_store& o, bool nr) {
+            support::mesh_store unused;
+            for (;;)
+                if (const auto p = nr ? support::polygon3_near<point3>(r, g, o, unused) : support::polygon3_random<point3>(r, g, o, unused); p && support::finite_partner(*p)) return *p;
+        },
+        [](const polygon3& g, const point3& p) { return support::polygon3_truth(g, p); });
     obb_contains<point3>("obb_point", near);
     obb_contains<segment3>("obb_segment", near);
     obb_contains<triangle3>("obb_triangle", near);

@@ -7,6 +7,18 @@ execute_process(COMMAND ${CMAKE_COMMAND} --install "${BINARY_DIR}" --prefix "${p
 if(rc)
     message(FATAL_ERROR "install failed")
 endif()
+# The installed package passes on only what correctness needs (-ffp-contract=off, the constexpr
+# step limit): never our warnings or -Werror, which would fail a user's build on a new warning.
+file(GLOB_RECURSE exported "${prefix}/*.cmake")
+foreach(f IN LISTS exported)
+    file(READ "${f}" text)
+    foreach(flag -Werror -Wall -Wextra -Wpedantic -Wconversion -Wshadow)
+        string(FIND "${text}" "${flag}" at)
+        if(NOT at EQUAL -1)
+            message(FATAL_ERROR "the installed ${f} exports ${flag}")
+        endif()
+    endforeach()
+endforeach()
 foreach(ext OFF ON)
     set(build "${WORK_DIR}/build-ext-${ext}")
     execute_process(COMMAND ${CMAKE_COMMAND} -S "${SOURCE_DIR}/examples/consumer" -B "${build}" -G Ninja

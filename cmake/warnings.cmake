@@ -1,9 +1,12 @@
 # Warnings for project targets, and the sanitizer switch.
+# BUILD_INTERFACE: CMake records a module library's own compile options in its installed package
+# (the consumer rebuilds the modules with them); warnings and -Werror are our build's business, not
+# our users', so the installed package leaves them out.
 function(incidence_warnings target)
-    target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wconversion -Wshadow
-        -Wno-sign-conversion)
+    target_compile_options(${target} PRIVATE $<BUILD_INTERFACE:-Wall -Wextra -Wpedantic -Wconversion -Wshadow
+        -Wno-sign-conversion>)
     if(INCIDENCE_WERROR)
-        target_compile_options(${target} PRIVATE -Werror)
+        target_compile_options(${target} PRIVATE $<BUILD_INTERFACE:-Werror>)
     endif()
 endfunction()
 

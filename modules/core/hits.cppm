@@ -45,7 +45,8 @@ struct triangle_hit {
 };
 
 // The first contact of the linear object with a closed mesh's solid: its least parameter there,
-// on a triangle, or at the object's start when that lies inside the solid (triangle == inside).
+// on a triangle, or at the object's start when that lies inside the solid (triangle == inside; a
+// line with a zero direction is its origin, hit inside at t = 0).
 template <class V = double>
 struct mesh_hit {
     static constexpr std::size_t inside = static_cast<std::size_t>(-1);

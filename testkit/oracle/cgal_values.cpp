@@ -199,7 +199,28 @@ std::optional<span> triangle_span(const object& s, const P3& a, const P3& b, con
                                                  : K::Triangle_3(a, b, c).has_on(s.o);
         return in ? domain(s) : std::nullopt;
     }
-    if (!CGAL::collinear(a, b, c)) return meet(s, K::Triangle_3(a, b, c));
+    // A line in the triangle's plane meets the closed triangle in the hull of what it meets of
+    // the three edges (below: CGAL 5.5's coplanar Line_3/Triangle_3 intersection and do_intersect
+    // miss touching lines, found on meshes' near-degenerate lines). Otherwise the exact, filtered
+    // predicate first: most of a mesh's triangles miss the line, and constructing the intersection
+    // is what costs.
+    const bool in_plane = CGAL::orientation(a, b, c, s.o) == CGAL::COPLANAR && CGAL::orientation(a, b, c, s.o + s.d) == CGAL::COPLANAR;
+    if (!CGAL::collinear(a, b, c)) {
+        const K::Line_3 line(s.o, s.d);
+        if (in_plane) { // the line's span, then clipped to the ray's or the segment's range
+            auto along = [&](const P3& p, const P3& q) { return span_of_result(s, CGAL::intersection(line, K::Segment_3(p, q))); };
+            return clipped_to_range(s, hull(hull(along(a, b), along(b, c)), along(c, a)));
+        }
+        // across the plane: the line's one point in it, inside the closed triangle or not (CGAL
+        // 5.5's Line_3/Triangle_3 intersection misses some lines through an edge or a vertex)
+        const K::Triangle_3 t(a, b, c);
+        if (!CGAL::do_intersect(line, t)) return std::nullopt;
+        const auto res = CGAL::intersection(line, K::Plane_3(a, b, c));
+        const P3* p = res ? boost::get<P3>(&*res) : nullptr;
+        if (p == nullptr || !t.has_on(*p)) return std::nullopt;
+        const FT u = parameter(s, *p);
+        return clipped_to_range(s, span{u, u});
+    }
     auto edge = [&](const P3& p, const P3& q) -> std::optional<span> {
         if (p == q) {
             if (!CGAL::collinear(s.o, s.o + s.d, p)) return std::nullopt;
@@ -454,6 +475,22 @@ exact_hit exact_polygon(const linear_object& x, const polygon3_data& g) {
 exact_hit exact_mesh(const linear_object& x, const mesh_data& m) {
     exact_hit h;
     const object s = object_of(x);
+    if (is_point(s) && !s.bounded_below()) { // a line with a zero direction: its origin, every t
+        bool on = false;
+        for (std::size_t i = 0; i < m.t.size(); ++i) {
+            const auto& a = m.v[m.t[i][0]];
+            const auto& b = m.v[m.t[i][1]];
+            const auto& c = m.v[m.t[i][2]];
+            if (triangle_span(s, P3(a[0], a[1], a[2]), P3(b[0], b[1], b[2]), P3(c[0], c[1], c[2]))) on = true, h.p->first_triangles.push_back(i);
+        }
+        if (on) {
+            first_contact(*h.p, s, domain(s));
+        } else if (mesh_inside(m, {x.o[0], x.o[1], x.o[2]})) { // inside: hit at t = 0
+            h.p->start_inside = true;
+            first_contact(*h.p, s, span{FT(0), FT(0)});
+        }
+        return h;
+    }
     std::optional<FT> first;
     std::vector<std::pair<FT, std::size_t>> contacts;
     for (std::size_t i = 0; i < m.t.size(); ++i) {

@@ -1,9 +1,11 @@
 // Unchecked queries on NaN, infinite, huge, subnormal and zero-size inputs must finish without
-// crashing and without undefined behaviour (this file runs under ASan + UBSan in the suite).
-// They return *some* answer; the exact tier reports no intersection when an input is NaN or
-// infinite, and classify answers uncertain.
+// crashing and without undefined behaviour (this file runs under ASan + UBSan in the suite), and
+// keep the tiers' promises on every input: aggressive => exact => conservative, classify never
+// contradicts exact, intersection() has a hit exactly where intersects() says yes. The exact tier
+// reports no intersection when an input is NaN or infinite, and classify answers uncertain.
 #include <catch2/catch_test_macros.hpp>
 #include <bit>
+#include <cstdio>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -27,15 +29,34 @@ double special(support::rng& r) {
     if (k < 14) return values[k];
     return std::bit_cast<double>(r.bits()); // raw bits: any NaN payload, subnormal, huge
 }
+// On every input, whatever it is: aggressive => exact => conservative, and classify never
+// contradicts exact (yes => exact yes, no => exact no). Broken promises are counted here.
+long contract_broken = 0;
+void promise(bool agg, bool ex, bool con, certainty c, const char* what) {
+    const bool ok = (!agg || ex) && (!ex || con) && (c != certainty::yes || ex) && (c != certainty::no || !ex);
+    if (!ok && ++contract_broken <= 5)
+        std::printf("  %s: aggressive %d, exact %d, conservative %d, classify %d\n", what, agg, ex, con, static_cast<int>(c));
+}
 template <class A, class B>
 void every_tier(const A& a, const B& b, long& yes) {
-    yes += intersects<exact>(a, b) + intersects<conservative>(a, b) + intersects<aggressive>(a, b) +
-           intersects<approximate>(a, b) + (classify(a, b) == certainty::uncertain);
+    const bool ex = intersects<exact>(a, b), con = intersects<conservative>(a, b), agg = intersects<aggressive>(a, b);
+    const certainty c = classify(a, b);
+    promise(agg, ex, con, c, "intersects");
+    yes += ex + con + agg + intersects<approximate>(a, b) + (c == certainty::uncertain);
+    if constexpr (requires { intersection(a, b); }) { // the values: a hit in aggressive => in exact => in conservative
+        const bool he = intersection<exact>(a, b).has_value(), hc = intersection<conservative>(a, b).has_value();
+        const bool ha = intersection<aggressive>(a, b).has_value();
+        (void)intersection<approximate>(a, b);
+        promise(ha, he, hc, certainty::uncertain, "intersection");
+        if (he != ex && ++contract_broken <= 5) std::printf("  intersection %d, intersects %d\n", he, ex);
+    }
 }
 template <class A, class B>
 void every_contains(const A& a, const B& b, long& yes) {
-    yes += contains<exact>(a, b) + contains<conservative>(a, b) + contains<aggressive>(a, b) + contains<approximate>(a, b) +
-           (classify_contains(a, b) == certainty::uncertain);
+    const bool ex = contains<exact>(a, b), con = contains<conservative>(a, b), agg = contains<aggressive>(a, b);
+    const certainty c = classify_contains(a, b);
+    promise(agg, ex, con, c, "contains");
+    yes += ex + con + agg + contains<approximate>(a, b) + (c == certainty::uncertain);
 }
 } // namespace
 
@@ -257,7 +278,9 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
         yes += contains(pg, q2) + contains(bad_ends, q2);
         n += 6 * 5 + 2;
     }
-    std::printf("[cases] bad input: %ld query calls on special values completed (%ld yes)\n", n, yes);
+    std::printf("[cases] bad input: %ld query calls on special values completed (%ld yes), %ld broken promises of the tiers\n", n, yes,
+                contract_broken);
+    CHECK(contract_broken == 0);
     // The exact tier says no for NaN input.
     CHECK_FALSE(intersects(ray3{{nan_, 0, 0}, {1, 0, 0}}, triangle3{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}));
     CHECK(classify(ray3{{nan_, 0, 0}, {1, 0, 0}}, triangle3{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}) == certainty::uncertain);

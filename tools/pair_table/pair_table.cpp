@@ -1,15 +1,20 @@
-// incidence-pair-table: writes the README's table of pairs from the code and the tests. Each row
-// comes from incidence.catalog (the pair, what its approximate tier runs, its alternatives, its
-// fuzzer) and from the leading comment of tests/query/<pair>.cpp (what the oracle test checks).
-//   incidence-pair-table SOURCE_DIR            print the table
-//   incidence-pair-table SOURCE_DIR --check    exit 1 if README.md's table differs (ctest)
-//   incidence-pair-table SOURCE_DIR --write    replace README.md's table
-// The table sits between the lines "<!-- pair table: generated -->" and "<!-- end of pair table -->".
+// incidence-pair-table: writes docs/pairs.md, the table of every pair, from incidence.catalog (the
+// pair, its table, what its approximate tier runs and its stated bound, its alternatives, its oracle
+// and fuzzer) and from the leading comment of each pair's test; and checks the benchmarks against
+// the catalog in both directions.
+//   incidence-pair-table SOURCE_DIR                print docs/pairs.md
+//   incidence-pair-table SOURCE_DIR --check        exit 1 if docs/pairs.md differs (ctest)
+//   incidence-pair-table SOURCE_DIR --write        rewrite docs/pairs.md
+//   incidence-pair-table SOURCE_DIR --bench BENCH  exit 1 unless BENCH --benchmark_list_tests
+//                                                  names every family once or more and no other
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 import incidence;
 
@@ -35,60 +40,168 @@ std::string leading_comment(const std::filesystem::path& p) {
         if (c == '|') c = '/';
     return out;
 }
-// One row. Not a template and not inlined: the fold over the families below stays a list of
-// calls (inlined, the string work of every family made one function that took most of the
-// compile time).
-[[gnu::noinline]] std::string row(const std::filesystem::path& root, const std::string& name, const char* approximate,
-                                  const std::vector<std::string>& alternatives, const char* fuzzer) {
+// 0x1p-40 as 2^-40; other values in %g.
+std::string bound_text(double b) {
+    if (b == 0.0) return "0 (comparisons decide)";
+    int e = 0;
+    if (std::frexp(b, &e) == 0.5) return "2^" + std::to_string(e - 1);
+    char s[32];
+    std::snprintf(s, sizeof s, "%g", b);
+    return s;
+}
+
+// The shape's name in pair names and benchmark names (a k-DOP of any K: "kdop").
+template <class T>
+constexpr const char* shape_name() {
+    if constexpr (std::is_same_v<T, point3>) return "point";
+    else     if constexpr (std::is_same_v<T, segment3>) return "segment";
+    else     if constexpr (std::is_same_v<T, ray3>) return "ray";
+    else     if constexpr (std::is_same_v<T, line3>) return "line";
+    else     if constexpr (std::is_same_v<T, plane3>) return "plane";
+    else     if constexpr (std::is_same_v<T, triangle3>) return "triangle";
+    else     if constexpr (std::is_same_v<T, tetrahedron3>) return "tetrahedron";
+    else     if constexpr (std::is_same_v<T, aabb3>) return "aabb";
+    else     if constexpr (std::is_same_v<T, obb3>) return "obb";
+    else     if constexpr (std::is_same_v<T, sphere3>) return "sphere";
+    else     if constexpr (std::is_same_v<T, convex_polyhedron3>) return "convex_polyhedron";
+    else     if constexpr (std::is_same_v<T, frustum3>) return "frustum";
+    else     if constexpr (std::is_same_v<T, mesh3>) return "mesh";
+    else     if constexpr (std::is_same_v<T, polygon3>) return "polygon";
+    else     if constexpr (std::is_same_v<T, point2>) return "point2";
+    else     if constexpr (std::is_same_v<T, segment2>) return "segment2";
+    else     if constexpr (std::is_same_v<T, polygon2>) return "polygon2";
+    else return "kdop";
+}
+
+// A row's facts, gathered from a family without templates in the string work below.
+struct row_facts {
+    std::string name, table, approximate, bound, oracle, fuzzer, test;
+    std::vector<std::string> alternatives;
+};
+template <class F>
+row_facts facts(const F& f, const std::string& test) {
+    row_facts r{f.name, f.table, f.approximate_method, bound_text(f.approximate_bound), f.oracle, f.fuzzer, test, {}};
+    for (const auto& a : f.alternatives) r.alternatives.emplace_back(a.name);
+    return r;
+}
+// Not inlined: the folds over the families below stay lists of calls.
+[[gnu::noinline]] std::string row(const std::filesystem::path& root, const row_facts& f, bool with_test) {
     std::string alts;
-    for (const auto& a : alternatives) alts += (alts.empty() ? "`" : ", `") + name + "_" + a + "`";
-    return "| `" + name + "` | exact, conservative, aggressive, approximate; `classify` | " + approximate + " | " +
-           (alts.empty() ? std::string("-") : alts) + " | " + leading_comment(root / "tests/query" / (name + ".cpp")) +
-           " | `" + fuzzer + "` |\n";
+    for (const auto& a : f.alternatives) alts += (alts.empty() ? "`" : ", `") + f.name + "_" + a + "`";
+    std::string r = "| `" + f.name + "` | `" + f.table + "` | " + f.approximate + " | " + f.bound + " | " + (alts.empty() ? std::string("-") : alts) +
+                    " | " + f.oracle + " | `" + f.test + "`";
+    if (with_test) r += ": " + leading_comment(root / f.test);
+    return r + " | `" + f.fuzzer + "` |\n";
 }
-std::string table(const std::filesystem::path& root) {
-    std::string t = "| pair (`modules/query/`) | tiers | approximate tier runs | alternatives (`method::`) | exact-tier oracle "
-                    "test (`tests/query/<pair>.cpp`) | fuzzer (`fuzz/`) |\n|---|---|---|---|---|---|\n";
-    catalog::for_each_listed_family([&](const auto& f) {
-        std::vector<std::string> alts;
-        for (const auto& a : f.alternatives) alts.emplace_back(a.name);
-        t += row(root, f.name, f.approximate_method, alts, f.fuzzer);
+const char* header = "| pair | table (`modules/query/`) | approximate tier runs | stated bound | alternatives (`method::`) | exact tier checked "
+                     "against | test | fuzzer (`fuzz/`) |\n|---|---|---|---|---|---|---|---|\n";
+
+std::string document(const std::filesystem::path& root) {
+    std::string d =
+        "# The pairs\n\n"
+        "Generated by `incidence-pair-table` from the catalog (`modules/query/catalog.cppm`) and the leading comment of each pair's "
+        "test; do not edit by hand. After changing the catalog or a test's head, run "
+        "`build/release/tools/pair_table/incidence-pair-table . --write` (ctest's `docs_pairs_is_generated` fails until then).\n\n"
+        "Every pair answers in four tiers (exact, conservative, aggressive, approximate; see `docs/DESIGN.md`, \"The tier "
+        "contract\"). The stated bound is the approximate tier's: it can be wrong only where a deciding sign lies within that "
+        "fraction of its permanent of zero (inputs of magnitude in [2^-500, 2^500]); the tests read it from the catalog. The "
+        "alternatives are textbook algorithms kept beside the tiers as `method::<pair>_<name>`, audited against the same truth.\n\n";
+    d += "## Do they meet? `intersects<Tier>(a, b)` and `classify(a, b)`\n\n";
+    d += header;
+    catalog::for_each_listed_family([&](const auto& f) { d += row(root, facts(f, "tests/query/intersects/" + std::string(f.name) + ".cpp"), true); });
+    d += "\n## Is b inside a? `contains<Tier>(a, b)`\n\nThe first argument holds the second; the test is the pair's yes/no test.\n\n";
+    d += header;
+    catalog::for_each_containment([&](const auto& f) {
+        using F = std::decay_t<decltype(f)>;
+        auto r = facts(f, "tests/query/intersects/" + std::string(f.name) + ".cpp");
+        r.name = std::string(shape_name<typename F::first_type>()) + " holds " + shape_name<typename F::second_type>();
+        d += row(root, r, false);
     });
-    return t;
+    d += "\n## Where does a line, a ray or a segment meet it? `intersection<Tier>(a, b)`\n\n"
+         "Exact: t (or t_enter and t_exit) and the point's coordinates correctly rounded; conservative and aggressive: intervals "
+         "that contain them, with the hit's `certainty`; approximate: the same computation in double, inside the conservative "
+         "interval where that interval is sure.\n\n";
+    d += header;
+    catalog::for_each_value_family([&](const auto& f) { d += row(root, facts(f, std::string("tests/query/") + f.table + ".cpp"), false); });
+    d += "\n## How far apart? `squared_distance<Tier>(a, b)`\n\n";
+    d += header;
+    catalog::for_each_distance([&](const auto& f) { d += row(root, facts(f, std::string("tests/query/") + f.table + ".cpp"), false); });
+    return d;
 }
-constexpr const char* begin_mark = "<!-- pair table: generated -->\n";
-constexpr const char* end_mark = "<!-- end of pair table -->\n";
+
+// The benchmark names the catalog expects: exact/<kind>/<name>/..., a k-DOP pair with a suffix _K.
+std::set<std::string> expected_benchmarks() {
+    std::set<std::string> out;
+    catalog::for_each_listed_family([&](const auto& f) { out.insert("intersects/" + std::string(f.name)); });
+    catalog::for_each_containment([&](const auto& f) {
+        using F = std::decay_t<decltype(f)>;
+        out.insert("contains/" + std::string(shape_name<typename F::first_type>()) + "_" + shape_name<typename F::second_type>());
+    });
+    catalog::for_each_value_family([&](const auto& f) { out.insert("intersection/" + std::string(f.name)); });
+    return out;
+}
+int check_benchmarks(const std::string& bench) {
+    FILE* p = popen((bench + " --benchmark_list_tests").c_str(), "r");
+    if (p == nullptr) {
+        std::fprintf(stderr, "cannot run %s\n", bench.c_str());
+        return 1;
+    }
+    std::set<std::string> found;
+    char line[512];
+    while (std::fgets(line, sizeof line, p) != nullptr) {
+        std::string s(line);
+        if (s.rfind("exact/", 0) != 0) continue;
+        s = s.substr(6);
+        const auto kind_end = s.find('/');
+        const auto name_end = s.find('/', kind_end + 1);
+        if (kind_end == std::string::npos || name_end == std::string::npos) continue;
+        const std::string kind = s.substr(0, kind_end);
+        if (kind != "intersects" && kind != "contains" && kind != "intersection") continue;
+        std::string name = s.substr(kind_end + 1, name_end - kind_end - 1);
+        if (const auto u = name.rfind('_'); u != std::string::npos && name.find_first_not_of("0123456789", u + 1) == std::string::npos)
+            name.erase(u); // kdop_ray_14 -> kdop_ray
+        found.insert(kind + "/" + name);
+    }
+    if (pclose(p) != 0) {
+        std::fprintf(stderr, "%s --benchmark_list_tests failed\n", bench.c_str());
+        return 1;
+    }
+    const auto expected = expected_benchmarks();
+    int missing = 0;
+    for (const auto& e : expected)
+        if (!found.contains(e)) ++missing, std::fprintf(stderr, "no benchmark exact/%s/... for a family of the catalog\n", e.c_str());
+    for (const auto& f : found)
+        if (!expected.contains(f)) ++missing, std::fprintf(stderr, "benchmark exact/%s/... names no family of the catalog\n", f.c_str());
+    std::printf("%zu families benchmarked, %d mismatches\n", expected.size(), missing);
+    return missing == 0 ? 0 : 1;
+}
 } // namespace
 
 int main(int argc, char** argv) {
     if (argc < 2) {
-        std::fprintf(stderr, "usage: incidence-pair-table SOURCE_DIR [--check | --write]\n");
+        std::fprintf(stderr, "usage: incidence-pair-table SOURCE_DIR [--check | --write | --bench BENCH]\n");
         return 2;
     }
     const std::filesystem::path root(argv[1]);
     const std::string mode = argc > 2 ? argv[2] : "";
-    const std::string t = table(root);
+    if (mode == "--bench") {
+        if (argc < 4) return 2;
+        return check_benchmarks(argv[3]);
+    }
+    const std::string t = document(root);
     if (mode.empty()) {
         std::fputs(t.c_str(), stdout);
         return 0;
     }
-    const std::filesystem::path readme = root / "README.md";
-    std::string r = read(readme);
-    const auto b = r.find(begin_mark), e = r.find(end_mark);
-    if (b == std::string::npos || e == std::string::npos || e < b) {
-        std::fprintf(stderr, "README.md has no generated pair table (markers missing)\n");
-        return 1;
-    }
-    const auto from = b + std::string(begin_mark).size();
+    const std::filesystem::path out = root / "docs/pairs.md";
     if (mode == "--check") {
-        if (r.substr(from, e - from) == t) return 0;
-        std::fprintf(stderr, "README.md's pair table is stale; regenerate it with: incidence-pair-table %s --write\nexpected:\n%s",
-                     argv[1], t.c_str());
+        if (read(out) == t) return 0;
+        std::fprintf(stderr, "docs/pairs.md is stale; regenerate it with: incidence-pair-table %s --write\n", argv[1]);
         return 1;
     }
     if (mode == "--write") {
-        r.replace(from, e - from, t);
-        std::ofstream(readme) << r;
+        std::filesystem::create_directories(out.parent_path());
+        std::ofstream(out) << t;
         return 0;
     }
     std::fprintf(stderr, "unknown mode %s\n", mode.c_str());

@@ -19,7 +19,10 @@
 // error bound: where every sign of the body is at least 2^-40 of its permanent from zero (the
 // filter then decides each one, and plain double takes the same branch), each value lies within
 // the conservative tier's interval of the same inputs, a point coordinate within |D_i| times the
-// width of t's interval plus 2^-50 (|o_i| + |t D_i|) (tests/query/intersection/linear_pairs.cpp).
+// width of t's interval plus 2^-50 (|o_i| + |t D_i|) + 2^-1073 (the last term for subnormal
+// coordinates; tests/query/intersection/linear_pairs.cpp). A conservative hit can be sure where a
+// sign is within that margin (a mesh's or a polygon's signs are settled exactly as they arise):
+// there the approximate tier may take another branch, as its yes/no answer may.
 module;
 #include <array>
 #include <cstddef>
@@ -408,7 +411,9 @@ template <class K, linear_shape S>
     }
     using V = arith::value_t<K>;
     const bool at_start = first && s.bounded_below() && compare_ends(k, *first, domain_end(0.0), s) == sign::zero; // on a triangle at 0
-    if (s.bounded_below() && !at_start && intersects(k, m, s.o)) {
+    // a line with a zero direction is its origin: inside the solid, it is hit there (at t = 0)
+    const bool point_line = !s.bounded_below() && s.is_point();
+    if ((s.bounded_below() || (point_line && !first)) && !at_start && intersects(k, m, s.o)) {
         const V zero = arith::exact_value(k, 0.0);
         return mesh_hit<V>{zero, arith::exact_point(k, s.o), arith::vec_value_t<K>{}, zero, zero, zero, mesh_hit<V>::inside};
     }
