@@ -17,6 +17,7 @@
 // abs(x) of a subexpression is allowed: every number type knows or bounds its sign, and
 // |x| keeps both the degree and the filters' error bounds.
 module;
+#include <type_traits>
 #include <array>
 #include <cstdint>
 #include <utility>
@@ -155,7 +156,7 @@ struct zero_node {
     bool z;
 };
 template <class T>
-concept zero_operand = __is_same(T, zero_input) || __is_same(T, zero_node);
+concept zero_operand = std::is_same_v<T, zero_input> || std::is_same_v<T, zero_node>;
 [[nodiscard, gnu::always_inline]] constexpr bool is_zero_node(zero_input a) { return a.x == 0.0; }
 [[nodiscard, gnu::always_inline]] constexpr bool is_zero_node(zero_node a) { return a.z; }
 [[nodiscard, gnu::always_inline]] constexpr zero_node operator-(zero_input a, zero_input b) { return {a.x == b.x}; }
@@ -470,7 +471,7 @@ struct filter_kernel {
 // infinities such a stage can make.
 template <class K>
 [[nodiscard, gnu::always_inline]] constexpr bool rounded_stage_applies() {
-    return __is_base_of(filter_kernel, K) && !__builtin_is_constant_evaluated();
+    return std::is_base_of_v<filter_kernel, K> && !__builtin_is_constant_evaluated();
 }
 
 // The filter kernel of a pair with a mesh or a 3D polygon (incidence.query's filter_passes): a
@@ -591,7 +592,7 @@ struct exact_kernel {
 // (lifted_once).
 template <class K>
 [[nodiscard]] consteval bool lifts_filter() {
-    return __is_base_of(filter_kernel, K) || __is_same(K, exact_kernel);
+    return std::is_base_of_v<filter_kernel, K> || std::is_same_v<K, exact_kernel>;
 }
 // A subexpression f(L) that many signs of one body share, lifted into the filter once: called with
 // lift_filter it returns the value kept at construction (when lifts_filter<K>(): the same value
@@ -605,7 +606,7 @@ struct lifted_once {
     }
     template <class L>
     [[nodiscard]] constexpr decltype(auto) operator()(L l) const {
-        if constexpr (__is_same(L, lift_filter)) return (kept);
+        if constexpr (std::is_same_v<L, lift_filter>) return (kept);
         else return f(l);
     }
 };
@@ -615,7 +616,7 @@ struct lifted_once {
 // spare exact signs (aabb_triangle's axes that clearly overlap).
 template <class K>
 [[nodiscard, gnu::always_inline]] constexpr bool exact_pass_at_run_time() {
-    return __is_same(K, exact_kernel) && !__builtin_is_constant_evaluated();
+    return std::is_same_v<K, exact_kernel> && !__builtin_is_constant_evaluated();
 }
 
 // probe(k, f): k's sign of f for a check that may fail without consequence; only a positive
@@ -642,7 +643,7 @@ template <class K, class F>
 // exact, then double-double, and only then gives up (filter_kernel::settled_sgn).
 template <class K, class F>
 [[nodiscard, gnu::always_inline]] constexpr sign settled(K& k, const F& f) {
-    if constexpr (__is_base_of(filter_kernel, K)) {
+    if constexpr (std::is_base_of_v<filter_kernel, K>) {
         return k.settled_sgn(f);
     } else {
         const sign s = probe(k, f);
@@ -658,12 +659,12 @@ template <class K, class F>
 // structure first anyway.
 template <class K, class F>
 [[nodiscard, gnu::always_inline]] constexpr sign structural_sgn(K& k, const F& f) {
-    if constexpr (__is_base_of(filter_kernel, K)) return k.structural_sgn(f);
+    if constexpr (std::is_base_of_v<filter_kernel, K>) return k.structural_sgn(f);
     else return k.sgn(f);
 }
 template <class K, class F>
 [[nodiscard, gnu::always_inline]] constexpr bool structural_zero(K& k, const F& f) {
-    if constexpr (__is_base_of(filter_kernel, K)) return k.structural_zero(f);
+    if constexpr (std::is_base_of_v<filter_kernel, K>) return k.structural_zero(f);
     else return is_zero(k, f);
 }
 
@@ -674,7 +675,7 @@ template <class K, class F>
 // compute it again among every other sign.
 template <class K, class F>
 [[nodiscard, gnu::always_inline]] constexpr sign decided(K& k, const F& f) {
-    if constexpr (__is_base_of(filter_kernel, K)) {
+    if constexpr (std::is_base_of_v<filter_kernel, K>) {
         return k.decided_sgn(f);
     } else {
         return settled(k, f);

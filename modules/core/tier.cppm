@@ -1,4 +1,6 @@
-// Signs, certainties and the four precision tiers (DESIGN.md section 1).
+// Signs, certainties and the four precision tiers (docs/DESIGN.md, "Tiers").
+module;
+#include <type_traits>
 export module incidence.core:tier;
 import :vec;
 
@@ -25,8 +27,8 @@ struct aggressive {};
 struct approximate {};
 
 template <class T>
-concept tier = __is_same(T, exact) || __is_same(T, conservative) || __is_same(T, aggressive) ||
-               __is_same(T, approximate);
+concept tier = std::is_same_v<T, exact> || std::is_same_v<T, conservative> || std::is_same_v<T, aggressive> ||
+               std::is_same_v<T, approximate>;
 
 // A closed interval [lo, hi] that contains the true value: what the conservative and
 // aggressive tiers return for a computed quantity (a distance, a parameter t). An end may be

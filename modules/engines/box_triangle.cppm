@@ -158,7 +158,7 @@ template <int NV, int NE, int NF>
 }
 
 // ExactPassStage: whether the exact pass at run time asks the rounded stage for the unclear axes
-// (box-tetrahedron's faces do not: there it measured slower, 224 -> 373 ns near-degenerate).
+// (box-tetrahedron's faces do not: slower there; bench/NOTES.md, "Measured choices").
 template <box_reach Reach, bool ExactPassStage = true, class K>
 [[nodiscard]] constexpr bool box_meets(K& k, const aabb3& b, const triangle3& t) {
     for (int i = 0; i < 3; ++i)

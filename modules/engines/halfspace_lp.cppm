@@ -460,8 +460,8 @@ inline constexpr std::array<guess_path, 3> guess_paths{
 // rows with no common point (their triples, or their lines or planes when no three are
 // independent). true when proven, with the answer in v. A program that ended on its box (no
 // guess) is tried along the other paths as well: in near-degenerate bounded sets a rounded
-// program ends there too, and stopping at it measured 13 to 34% slower on frustum_kdop_26 and
-// convex_polyhedron_kdop_26 for 0 to 4% gained on convex_polyhedron_plane.
+// program ends there too, and stopping at it cost more on the 26-DOP pairs than it gained
+// elsewhere (bench/NOTES.md, "Measured choices").
 template <class K, class Rows>
 [[nodiscard]] constexpr bool proven_guess(K& k, const Rows& rows, const guess_path& path, row_vertex& v) {
     const seidel_lp::guess g = seidel_lp::guess_of(rows, path.f, path.seed);

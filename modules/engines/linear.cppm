@@ -29,6 +29,7 @@
 // magnitudes lie in [2^-500, 2^500], wrong only when a deciding sign is within 2^-40 of its
 // permanent (tests/query/segment_segment.cpp and the other linear pairs' tests).
 module;
+#include <type_traits>
 #include <cstddef>
 export module incidence.detail:engines.linear;
 import incidence.core;
@@ -313,7 +314,7 @@ template <class K>
             // In a filter pass the structure first (compares only): the skew test's zero above
             // was proven by structure or settled exactly (so both directions are finite), or the
             // pass has failed already and its answer is not used. Random lines never get here.
-            if constexpr (__is_base_of(arith::filter_kernel, K))
+            if constexpr (std::is_base_of_v<arith::filter_kernel, K>)
                 if (arith::zero_by_structure(component)) continue;
             const sign c = arith::structural_sgn(k, component);
             if (c != sign::zero) return crossing_2d(k, s, r, axis, c);

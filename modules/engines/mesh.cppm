@@ -129,6 +129,7 @@
 // triangle), degree up to 10) also when a deciding sign's permanent leaves [2^-900, 2^900],
 // from inputs beyond about 2^+-90 on.
 module;
+#include <type_traits>
 #include <array>
 #include <bit>
 #include <cstddef>
@@ -976,7 +977,7 @@ template <class K>
             const sector_bound blo = bound_of(lo, false), bhi = bound_of(hi, true);
             // (plain double reaches here where its signs disagree with the exact ones, near a zero: a
             // guess, two ratios, rather than lines^2 chords of lines^2 cuts each)
-            const std::size_t tries = __is_same(K, arith::approx_kernel) ? 2 : lines.size() * lines.size() + far_dirs.size() + 2;
+            const std::size_t tries = std::is_same_v<K, arith::approx_kernel> ? 2 : lines.size() * lines.size() + far_dirs.size() + 2;
             for (std::size_t w = 1; w <= tries && !done; ++w) {
                 const pair_chord c{fr, blo, bhi, 1.0, double(w), side_a};
                 if (!generic_pair(c)) continue;

@@ -31,6 +31,7 @@
 // inputs whose nonzero magnitudes lie in [2^-500, 2^500], wrong only when some axis sign is within
 // 2^-40 of its permanent (the sets touch or nearly touch); tests/query/obb_obb.cpp checks it.
 module;
+#include <type_traits>
 #include <optional>
 export module incidence.detail:engines.separating_axes;
 import incidence.core;
@@ -422,14 +423,14 @@ template <class BoxA, class BoxB>
 
 template <class K, class BoxA, class BoxB>
 [[nodiscard]] constexpr int box_box_fast(K&, const BoxA& a, const BoxB& b) { // 1 yes, 0 no, -1 undecided
-    if constexpr (__is_base_of(arith::filter_kernel, K) || __is_same(K, arith::exact_kernel)) {
+    if constexpr (std::is_base_of_v<arith::filter_kernel, K> || std::is_same_v<K, arith::exact_kernel>) {
         // First the double values against the bounds from the inputs' maxima (no permanent is
         // computed: the filtered type's permanents are dead code here, only its K is read), then,
         // if some sign was too close to call, the filter with every permanent.
         if (coordinate_axis_separates(arith::lift_filter{}, a, b, [](const auto& v) { return arith::proven_sign(v); })) return 0;
         if (const int r = box_box_bounded_pass(a, b); r >= 0) return r;
         return box_box_pass(arith::lift_filter{}, a, b, [](const auto& v, box_axis_kind) { return arith::proven_sign(v); });
-    } else if constexpr (__is_same(K, arith::approx_kernel)) {
+    } else if constexpr (std::is_same_v<K, arith::approx_kernel>) {
         if (coordinate_axis_separates(arith::lift_double{}, a, b, [](double v) { return v > 0 ? 1 : -1; })) return 0;
         return box_box_pass(arith::lift_double{}, a, b, [](double v, box_axis_kind) { return v > 0 ? 1 : -1; });
     } else {

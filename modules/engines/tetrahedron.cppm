@@ -463,7 +463,7 @@ template <class K, class Meets>
     // origin it measured slower than the signs alone).
     if (arith::rounded_stage_applies<K>() && hull && n <= 8) {
         // a triangle: its plane first, and t's edges through it, before t's four planes (one plane
-        // is often apart alone: random tetrahedron_triangle 76 -> 63 ns)
+        // is often apart alone; bench/NOTES.md, "Measured choices")
         if (n == 3)
             if (const int s = rounded_triangle_side(pts, t); s >= 0) return s == 1;
         const rounded_located r = rounded_locate(t, pts, n);
@@ -505,7 +505,7 @@ template <class K>
 // whose faces decide). The volumes as triple products of d_i = v_i - p around two shared cross
 // products c = d_0 x d_1 and e = d_2 x d_3: vertex 3's is c . d_2, vertex 2's -(c . d_3),
 // vertex 1's d_0 . e, vertex 0's -(d_1 . e). One orient3d fewer than o and side(), and the two
-// cross products lifted into the filter once (random point_tetrahedron 20.1 -> 12.6 ns).
+// cross products lifted into the filter once (bench/NOTES.md, "Measured choices").
 // Source: Ericson, Real-Time Collision Detection (2005), section 3.4 (barycentric coordinates as
 // signed volumes).
 template <class K>

@@ -4,6 +4,8 @@
 // here the adaptive stages are the generic kernel's: filter, expansions, dyadic integers.
 // Worst-case expansion lengths (kernel stage 2): orient2d 16, orient3d 192, incircle 1536;
 // insphere (9216) goes straight from the filter to the dyadic stage.
+module;
+#include <type_traits>
 export module incidence.predicates:orient;
 import incidence.core;
 import incidence.arith;
@@ -59,11 +61,11 @@ template <class Lf>
 } // namespace poly
 
 template <class Tier>
-concept sign_tier = __is_same(Tier, exact) || __is_same(Tier, approximate);
+concept sign_tier = std::is_same_v<Tier, exact> || std::is_same_v<Tier, approximate>;
 
 template <sign_tier Tier, class F>
 [[nodiscard, gnu::always_inline]] constexpr sign evaluate_sign(const F& f) {
-    if constexpr (__is_same(Tier, approximate)) return arith::approx_kernel{}.sgn(f);
+    if constexpr (std::is_same_v<Tier, approximate>) return arith::approx_kernel{}.sgn(f);
     else return arith::exact_kernel{}.sgn(f);
 }
 

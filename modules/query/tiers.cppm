@@ -50,7 +50,7 @@ template <class A, class B, class Body>
 }
 // The filter pass's kernel: for a pair with a mesh3 or a polygon3, the one that settles exact zeros
 // as they arise (arith::settling_filter_kernel). Not for polygon2: its signs (degree 2 and 3) are
-// cheap to rerun exactly, and settling measured 4% slower there (geometric mean of 12 benchmarks).
+// cheap to rerun exactly, and settling measured slower there (bench/NOTES.md, "Measured choices").
 template <class S>
 inline constexpr bool settles_zeros = detail::scene::shape_of<S, mesh3> || detail::scene::shape_of<S, polygon3>;
 template <class A, class B>

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <string>
+#include <typeinfo>
 import incidence;
 import incidence.detail;
 #include "testkit/testing.hpp"
@@ -29,6 +31,22 @@ double special(support::rng& r) {
     if (k < 14) return values[k];
     return std::bit_cast<double>(r.bits()); // raw bits: any NaN payload, subnormal, huge
 }
+std::string described(point3 p) {
+    char b[96];
+    std::snprintf(b, sizeof b, "(%a, %a, %a)", p.x, p.y, p.z);
+    return b;
+}
+std::string described(vec3 v) { return described(point3{v.x, v.y, v.z}); }
+template <class S>
+std::string described(const S& s) {
+    std::string out = typeid(S).name();
+    if constexpr (requires { s.origin; s.direction; }) out += " " + described(s.origin) + described(s.direction);
+    if constexpr (requires { s.a; s.b; }) out += " " + described(s.a) + described(s.b);
+    if constexpr (requires { s.c; }) out += described(s.c);
+    if constexpr (requires { s.min; s.max; }) out += " " + described(s.min) + described(s.max);
+    if constexpr (requires { s.center; s.radius; }) out += " " + described(s.center) + " r " + std::to_string(s.radius);
+    return out;
+}
 // On every input, whatever it is: aggressive => exact => conservative, and classify never
 // contradicts exact (yes => exact yes, no => exact no). Broken promises are counted here.
 long contract_broken = 0;
@@ -48,7 +66,8 @@ void every_tier(const A& a, const B& b, long& yes) {
         const bool ha = intersection<aggressive>(a, b).has_value();
         (void)intersection<approximate>(a, b);
         promise(ha, he, hc, certainty::uncertain, "intersection");
-        if (he != ex && ++contract_broken <= 5) std::printf("  intersection %d, intersects %d\n", he, ex);
+        if (he != ex && ++contract_broken <= 5)
+            std::printf("  intersection %d, intersects %d: %s %s\n", he, ex, described(a).c_str(), described(b).c_str());
     }
 }
 template <class A, class B>

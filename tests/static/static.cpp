@@ -4,6 +4,7 @@
 // leaks out of `import incidence;`.
 #include <catch2/catch_test_macros.hpp>
 #include <array>
+#include <type_traits>
 #include <cstddef>
 import incidence;
 import incidence.detail;
@@ -308,7 +309,7 @@ static_assert(intersects(line2{{0, 0}, {1, 1}}, segment2{{0, 2}, {1, 1}}));
 static_assert(!intersects(ray2{{0, 0}, {1, 1}}, segment2{{-1, -1}, {-0.5, -0.5}}));
 static_assert(!addable<point3, point3>);
 static_assert(addable<point3, vec3>);
-static_assert(__is_same(decltype(point3{} - point3{}), vec3));
+static_assert(std::is_same_v<decltype(point3{} - point3{}), vec3>);
 static_assert(!addable<point2, point2>);
 } // namespace
 

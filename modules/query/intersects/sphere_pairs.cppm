@@ -58,7 +58,9 @@ template <class K>
         const auto rr = L(s.radius);
         return arith::dot(m, m) - rr * rr;
     });
-    if (c != sign::positive) return true;
+    // the origin in the ball: a hit, if the ray is one (a non-finite direction: no, as every pair
+    // answers for a non-finite input; intersection() agrees)
+    if (c != sign::positive) return is_finite(r.direction);
     const sign b = k.sgn([=](auto L) { return arith::dot(m_of(L), arith::lift(L, r.direction)); });
     if (b != sign::negative) return false;
     return k.sgn([=](auto L) {
