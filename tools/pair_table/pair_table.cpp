@@ -138,6 +138,7 @@ std::set<std::string> expected_benchmarks() {
         out.insert("contains/" + std::string(shape_name<typename F::first_type>()) + "_" + shape_name<typename F::second_type>());
     });
     catalog::for_each_value_family([&](const auto& f) { out.insert("intersection/" + std::string(f.name)); });
+    catalog::for_each_distance([&](const auto& f) { out.insert("distance/" + std::string(f.name)); });
     return out;
 }
 int check_benchmarks(const std::string& bench) {
@@ -156,7 +157,7 @@ int check_benchmarks(const std::string& bench) {
         const auto name_end = s.find('/', kind_end + 1);
         if (kind_end == std::string::npos || name_end == std::string::npos) continue;
         const std::string kind = s.substr(0, kind_end);
-        if (kind != "intersects" && kind != "contains" && kind != "intersection") continue;
+        if (kind != "intersects" && kind != "contains" && kind != "intersection" && kind != "distance") continue;
         std::string name = s.substr(kind_end + 1, name_end - kind_end - 1);
         if (const auto u = name.rfind('_'); u != std::string::npos && name.find_first_not_of("0123456789", u + 1) == std::string::npos)
             name.erase(u); // kdop_ray_14 -> kdop_ray
