@@ -20,6 +20,7 @@ module;
 #include <type_traits>
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <utility>
 export module incidence.arith:kernel;
 import incidence.core;
@@ -386,13 +387,13 @@ struct approx_kernel {
 // factor (a power of two that keeps every input exact; 1 for the inputs as they are): plain double
 // with every operation exact (an exact zero, from coplanar or axis-aligned inputs, is the
 // commonest reason; tried only where the filter's value on the same inputs, rounded_zero, is zero,
-// as in exact_sign_fallback), then double-double. +1, -1, 0 when settled; 2 when not.
+// as in exact_sign_fallback), then double-double. The sign, or nothing when neither settles it.
 template <class F>
-[[nodiscard, gnu::noinline]] constexpr int settle_cheaply(F f, double factor, bool rounded_zero) {
+[[nodiscard, gnu::noinline]] constexpr std::optional<sign> settle_cheaply(F f, double factor, bool rounded_zero) {
     if (rounded_zero)
-        if (const exact_double x = f(lift_scaled<lift_exact_double>{factor}); x.exact) return x.v > 0.0 ? 1 : (x.v < 0.0 ? -1 : 0);
-    if (const int s = proven_sign(f(lift_scaled<lift_filter_dd>{factor})); s != 0) return s;
-    return 2;
+        if (const exact_double x = f(lift_scaled<lift_exact_double>{factor}); x.exact) return sign_of_double(x.v);
+    if (const int s = proven_sign(f(lift_scaled<lift_filter_dd>{factor})); s != 0) return to_sign(s);
+    return std::nullopt;
 }
 struct filter_kernel {
     static constexpr value_mode values = value_mode::enclosure;
@@ -424,7 +425,7 @@ struct filter_kernel {
     [[nodiscard, gnu::always_inline]] constexpr sign settled_sgn(const F& f) {
         const auto v = f(lift_filter{});
         if (const int s = proven_sign(v); s != 0) return to_sign(s);
-        if (const int s = settle_cheaply(f, 1.0, finite_zero(v)); s != 2) return to_sign(s);
+        if (const auto s = settle_cheaply(f, 1.0, finite_zero(v))) return *s;
         unproven = v.p;
         return sign::zero;
     }
@@ -492,7 +493,7 @@ struct settling_filter_kernel : filter_kernel {
     [[nodiscard, gnu::always_inline]] constexpr bool zero(const F& f) {
         const auto v = f(lift_filter{});
         if (proven_nonzero(v)) return false;
-        if (const int s = settle_cheaply(f, 1.0, finite_zero(v)); s != 2) return s == 0;
+        if (const auto s = settle_cheaply(f, 1.0, finite_zero(v))) return *s == sign::zero;
         unproven = v.p;
         return true;
     }
@@ -527,32 +528,27 @@ struct scaled_filter_kernel {
     double unproven = -1.0; // as in filter_kernel
     [[nodiscard]] constexpr bool failed() const { return !(unproven < 0.0); }
     template <class F>
-    [[nodiscard, gnu::always_inline]] constexpr int proven(const F& f) const { // +1, -1, 0 (settled exactly zero), 2 (unproven)
+    [[nodiscard, gnu::always_inline]] constexpr std::optional<sign> proven(const F& f) const { // nothing: not proven
         if constexpr (homogeneous<F>) {
             const auto v = f(lift_scaled_filter{factor});
-            if (const int s = proven_sign(v); s != 0) return s;
+            if (const int s = proven_sign(v); s != 0) return to_sign(s);
             // not where a NaN permanent says an input was not exact
-            return v.p == v.p ? settle_cheaply(f, factor, finite_zero(v)) : 2;
+            if (v.p == v.p) return settle_cheaply(f, factor, finite_zero(v));
+            return std::nullopt;
         } else {
-            const int s = proven_sign(f(lift_filter{}));
-            return s != 0 ? s : 2;
+            if (const int s = proven_sign(f(lift_filter{})); s != 0) return to_sign(s);
+            return std::nullopt;
         }
     }
     template <class F>
     [[nodiscard, gnu::always_inline]] constexpr sign sgn(const F& f) {
-        const int s = proven(f);
-        if (s == 2) {
-            unproven = 0.0;
-            return sign::zero;
-        }
-        return to_sign(s);
+        if (const auto s = proven(f)) return *s;
+        unproven = 0.0;
+        return sign::zero;
     }
     // A check whose failure decides nothing: only a proven nonzero sign counts.
     template <class F>
-    [[nodiscard, gnu::always_inline]] constexpr sign probe(const F& f) {
-        const int s = proven(f);
-        return s == 2 ? sign::zero : to_sign(s);
-    }
+    [[nodiscard, gnu::always_inline]] constexpr sign probe(const F& f) { return proven(f).value_or(sign::zero); }
 };
 
 // A probe's second chance, out of line: the scaled filter, where the permanent left the filter's
@@ -619,67 +615,68 @@ template <class K>
     return std::is_same_v<K, exact_kernel> && !__builtin_is_constant_evaluated();
 }
 
-// probe(k, f): k's sign of f for a check that may fail without consequence; only a positive
-// result may be relied on (the filter reports zero for what it cannot prove).
-template <class K, class F>
-[[nodiscard, gnu::always_inline]] constexpr sign probe(K& k, const F& f) {
-    if constexpr (requires { k.probe(f); }) return k.probe(f);
-    else return k.sgn(f);
-}
+// What a call site knows about a sign that the kernel cannot see in the expression. A call site
+// says it with sgn<hint::...>(k, f) or is_zero<hint::...>(k, f); plain k.sgn(f) is hint::none.
+// A hint never changes a sign that is returned as proven: it only decides where the filter kernels
+// spend the work on a sign they cannot prove at once (docs/DESIGN.md, "Signs").
+enum class hint : unsigned char {
+    // A sign like any other: the filter, and a sign it cannot prove fails the pass (the query is
+    // then uncertain, or runs again in the exact kernel).
+    none,
+    // A check whose failure decides nothing (a candidate witness point, a tentative direction):
+    // zero when the kernel cannot prove the sign cheaply, and the pass is not failed. Only a
+    // nonzero result may be relied on.
+    optional,
+    // Often exactly zero by structure (coplanar inputs in one plane z = c: equal coordinates, zero
+    // direction components): the filter kernels prove such a zero in place (a few compares, only
+    // where the rounded value is zero) instead of failing the pass; the exact kernel's fallback
+    // tries the structure first anyway.
+    structural,
+    // A low-degree sign that decides which candidate points exist (a determinant of normals, a
+    // component of a cross product) and is often exactly zero or nearly (a camera frustum's side
+    // and near planes are dependent; k-DOP directions give exact zeros): the filter kernels try the
+    // exact fallback's two cheap stages (plain double with every operation exact, then
+    // double-double) before failing the pass.
+    often_zero,
+    // Often exactly zero at a point that decides the query (a fourth plane through a guessed
+    // vertex: a k-DOP's corner where several of its planes meet a data point): every kernel
+    // computes the exact sign in place, rather than fail a pass after which the exact kernel's run
+    // of the whole query would compute it again among every other sign.
+    decisive,
+};
 
-// k.sgn(f) == sign::zero, through k's one-test form where it has one (zero(f): a random nonzero
-// sign then costs no mispredicted branch); a kernel that observes signs is asked for the sign.
-template <class K, class F>
-[[nodiscard, gnu::always_inline]] constexpr bool is_zero(K& k, const F& f) {
-    if constexpr (requires { k.zero(f); }) return k.zero(f);
-    else return k.sgn(f) == sign::zero;
-}
-
-// The sign of a low-degree polynomial that decides which candidate points exist (a determinant of
-// normals, a component of a cross product), which is often exactly zero or nearly (a camera
-// frustum's two side planes and its near plane are dependent; k-DOP directions and axis-aligned
-// normals give exact zeros): a sign the filter cannot prove would end its run, so the filter
-// kernel then tries the exact fallback's two cheap stages, plain double with every operation
-// exact, then double-double, and only then gives up (filter_kernel::settled_sgn).
-template <class K, class F>
-[[nodiscard, gnu::always_inline]] constexpr sign settled(K& k, const F& f) {
-    if constexpr (std::is_base_of_v<filter_kernel, K>) {
+// k's sign of f under what the call site knows (hint above).
+template <hint H = hint::none, class K, class F>
+[[nodiscard, gnu::always_inline]] constexpr sign sgn(K& k, const F& f) {
+    constexpr bool filtering = std::is_base_of_v<filter_kernel, K>;
+    if constexpr (H == hint::none) {
+        return k.sgn(f);
+    } else if constexpr (H == hint::optional) {
+        if constexpr (requires { k.probe(f); }) return k.probe(f);
+        else return k.sgn(f);
+    } else if constexpr (H == hint::structural && filtering) {
+        return k.structural_sgn(f);
+    } else if constexpr (H == hint::often_zero && filtering) {
         return k.settled_sgn(f);
-    } else {
-        const sign s = probe(k, f);
+    } else if constexpr (H == hint::decisive && filtering) {
+        return k.decided_sgn(f);
+    } else if constexpr (H == hint::structural) {
+        return k.sgn(f);
+    } else { // often_zero or decisive outside a filter kernel: a cheap proof first, then the sign
+        const sign s = sgn<hint::optional>(k, f);
         if (s != sign::zero) return s;
         return k.sgn(f);
     }
 }
 
-// k.sgn(f) and is_zero(k, f) for a sign that is often zero by structure (coplanar inputs in one
-// plane z = c: equal coordinates, zero direction components): a filter kernel proves such a zero
-// in place (filter_kernel::structural_sgn, structural_zero) instead of failing its pass, after
-// which the exact pass would run the whole query again; the exact kernel's fallback tries the
-// structure first anyway.
-template <class K, class F>
-[[nodiscard, gnu::always_inline]] constexpr sign structural_sgn(K& k, const F& f) {
-    if constexpr (std::is_base_of_v<filter_kernel, K>) return k.structural_sgn(f);
-    else return k.sgn(f);
-}
-template <class K, class F>
-[[nodiscard, gnu::always_inline]] constexpr bool structural_zero(K& k, const F& f) {
-    if constexpr (std::is_base_of_v<filter_kernel, K>) return k.structural_zero(f);
-    else return is_zero(k, f);
-}
-
-// The exact sign of a polynomial that is often exactly zero at a point that decides the query
-// (a fourth plane through a guessed vertex: a k-DOP's corner, where several of its planes meet a
-// data point), in every kernel: the filter kernels compute it in place (filter_kernel::decided_sgn)
-// rather than fail their pass, after which the exact kernel's run of the whole query would
-// compute it again among every other sign.
-template <class K, class F>
-[[nodiscard, gnu::always_inline]] constexpr sign decided(K& k, const F& f) {
-    if constexpr (std::is_base_of_v<filter_kernel, K>) {
-        return k.decided_sgn(f);
-    } else {
-        return settled(k, f);
-    }
+// sgn<H>(k, f) == sign::zero, through k's one-test form where it has one (zero(f): a random nonzero
+// sign then costs no mispredicted branch); a kernel that observes signs is asked for the sign.
+template <hint H = hint::none, class K, class F>
+[[nodiscard, gnu::always_inline]] constexpr bool is_zero(K& k, const F& f) {
+    if constexpr (H == hint::structural && std::is_base_of_v<filter_kernel, K>) return k.structural_zero(f);
+    else if constexpr (H != hint::none && H != hint::structural) return sgn<H>(k, f) == sign::zero;
+    else if constexpr (requires { k.zero(f); }) return k.zero(f);
+    else return k.sgn(f) == sign::zero;
 }
 
 // sign(a - b) for two doubles, exactly, by comparison. A kernel that observes decisions (the tests'

@@ -131,8 +131,8 @@ template <int K>
 [[nodiscard]] constexpr filtered_dd<0> lift_filtered_dd(double c, double h) { return {c, h, abs(c) + abs(h)}; }
 
 // The nearest double to x (ties to even), given cmp(c, h) = sign(x - (c + h)) at the midpoints
-// c + h next to a candidate c (h half a gap: exact), and a guess near x: +1 or -1, 0 when x is that
-// midpoint (a tie: the even neighbour), 2 when cmp cannot tell. nullopt when it cannot, or the
+// c + h next to a candidate c (h half a gap: exact), and a guess near x: zero when x is that
+// midpoint (a tie: the even neighbour), nothing when cmp cannot tell. nullopt when it cannot, or the
 // candidate leaves [2^-1021, 2^1023) in magnitude (half a gap is then not a double, or the next
 // double is infinite), or it moves more than seven times.
 [[nodiscard]] constexpr double even_of(double a, double b) { return (__builtin_bit_cast(unsigned long long, a) & 1u) != 0 ? b : a; }
@@ -142,17 +142,17 @@ template <class Cmp>
     for (int step = 0; step < 8; ++step) {
         if (!(abs(c) >= 0x1p-1021 && abs(c) < 0x1p1023)) return std::nullopt;
         const double up = next_up(c), down = next_down(c);
-        const int above = cmp(c, (up - c) * 0.5); // x - (c + half the gap above)
-        if (above == 2) return std::nullopt;
-        if (above == 0) return even_of(c, up);
-        if (above > 0) {
+        const std::optional<sign> above = cmp(c, (up - c) * 0.5); // x - (c + half the gap above)
+        if (!above) return std::nullopt;
+        if (*above == sign::zero) return even_of(c, up);
+        if (*above == sign::positive) {
             c = up;
             continue;
         }
-        const int below = cmp(c, (down - c) * 0.5);
-        if (below == 2) return std::nullopt;
-        if (below == 0) return even_of(c, down);
-        if (below < 0) {
+        const std::optional<sign> below = cmp(c, (down - c) * 0.5);
+        if (!below) return std::nullopt;
+        if (*below == sign::zero) return even_of(c, down);
+        if (*below == sign::negative) {
             c = down;
             continue;
         }
@@ -160,24 +160,26 @@ template <class Cmp>
     }
     return std::nullopt;
 }
-// The double-double filter's sign as such a comparison: 2 where it proves none (a tie included).
+// The double-double filter's sign as such a comparison: nothing where it proves none (a tie included).
 template <int K>
-[[nodiscard]] constexpr int dd_side(const filtered_dd<K>& x) {
-    const int s = proven_sign(x);
-    return s == 0 ? 2 : s;
+[[nodiscard]] constexpr std::optional<sign> dd_side(const filtered_dd<K>& x) {
+    if (const int s = proven_sign(x); s != 0) return to_sign(s);
+    return std::nullopt;
+}
+// A comparison's sign times a proven sign s (nothing stays nothing).
+[[nodiscard]] constexpr std::optional<sign> times(std::optional<sign> a, sign s) {
+    if (a) return *a * s;
+    return std::nullopt;
 }
 
 // P / S correctly rounded from the double-double filter's P and S, or nullopt (S not proven
 // nonzero, a sign near a midpoint, a magnitude out of the filter's range).
 template <int A, int B>
 [[nodiscard]] constexpr std::optional<double> rounded_quotient(const filtered_dd<A>& p, const filtered_dd<B>& s) {
-    const int ss = proven_sign(s);
-    if (ss == 0) return std::nullopt;
+    const std::optional<sign> ss = dd_side(s);
+    if (!ss) return std::nullopt;
     const double guess = p.hi / s.hi;
-    return round_at_midpoints(guess, [&](double c, double h) {
-        const int d = dd_side(p - lift_filtered_dd(c, h) * s);
-        return d == 2 ? 2 : d * ss;
-    });
+    return round_at_midpoints(guess, [&](double c, double h) { return times(dd_side(p - lift_filtered_dd(c, h) * s), *ss); });
 }
 
 template <class F>
@@ -212,7 +214,7 @@ template <class F>
                     if constexpr (same_degree<F>) return r.num * L(1.0) - (L(c) + L(h)) * r.den;
                     else return r.num - (L(c) + L(h)) * r.den;
                 }, valid);
-                return static_cast<int>(d * ss);
+                return std::optional<sign>(d * ss);
             }))
             return *v;
     const auto d = ratio_of(f, lift_dyadic{});
@@ -317,17 +319,18 @@ quadratic(A, B, C) -> quadratic<A, B, C>;
 enum class root : unsigned char { smaller, larger };
 
 // sign(t - y) for the root t of f, from the signs of f(y) (times q^2) and of the vertex test a y + b
-// (times q) at y = p / q, q > 0: +1, -1, 0 when t = y; 2 when a needed sign is 2 (not proven).
-[[nodiscard]] constexpr int root_side(root r, int f, int v) {
-    if (f == 2 || (f != 0 && v == 2) || (f == 0 && v == 2)) return 2;
+// (times q) at y = p / q, q > 0: zero when t = y; nothing when a needed sign is not proven.
+[[nodiscard]] constexpr std::optional<sign> root_side(root r, std::optional<sign> f, std::optional<sign> v) {
+    if (!f || !v) return std::nullopt;
+    const sign fs = *f, vs = *v;
     if (r == root::smaller) {
-        if (f < 0) return -1;
-        if (f > 0) return v < 0 ? 1 : -1;
-        return v <= 0 ? 0 : -1;
+        if (fs == sign::negative) return sign::negative;
+        if (fs == sign::positive) return vs == sign::negative ? sign::positive : sign::negative;
+        return vs != sign::positive ? sign::zero : sign::negative;
     }
-    if (f < 0) return 1;
-    if (f > 0) return v < 0 ? 1 : -1;
-    return v >= 0 ? 0 : 1;
+    if (fs == sign::negative) return sign::positive;
+    if (fs == sign::positive) return vs == sign::negative ? sign::positive : sign::negative;
+    return vs != sign::negative ? sign::zero : sign::positive;
 }
 // The two polynomials of that test: q^2 f(p / q) and q (a p / q + b).
 template <class Q, class P, class D>
@@ -356,11 +359,11 @@ template <class F>
 
 // sign(t - y) by exact signs (kernel.cppm's exact_sign) for y = p(L) / q(L), q > 0.
 template <class F, class P, class D>
-[[nodiscard]] constexpr int exact_root_side(const F& f, root r, const P& p, const D& q) {
+[[nodiscard]] constexpr sign exact_root_side(const F& f, root r, const P& p, const D& q) {
     bool valid = true;
     const sign fs = exact_sign([=](auto L) { return root_f(f(L), p(L), q(L)); }, valid);
     const sign vs = exact_sign([=](auto L) { return root_v(f(L), p(L), q(L)); }, valid);
-    return root_side(r, static_cast<int>(fs), static_cast<int>(vs));
+    return *root_side(r, fs, vs);
 }
 // The exact stages: the midpoint test on exact signs, then dyadic bracketing for a result below the
 // normal range or beyond the largest double.
@@ -368,15 +371,14 @@ template <class F>
 [[nodiscard, gnu::noinline]] constexpr double rounded_root_exactly(F f, root r, double guess) {
     if (is_finite(guess) && guess != 0.0)
         if (const auto v = round_at_midpoints(guess, [&](double c, double h) {
-                return exact_root_side(f, r, [=](auto L) { return L(c) + L(h); }, [](auto L) { return L(1.0); });
+                return std::optional<sign>(exact_root_side(f, r, [=](auto L) { return L(c) + L(h); }, [](auto L) { return L(1.0); }));
             }))
             return *v;
     const auto q = f(lift_dyadic{});
     const dyadic one = to_dyadic(1.0);
-    auto side = [&](const dyadic& y) {
-        return root_side(r, sign_of(root_f(q, y, one)), sign_of(root_v(q, y, one)));
-    };
-    return correctly_round([&](const dyadic& y) { return side(y) <= 0; }, [&](const dyadic& y) { return side(y) < 0; }, is_finite(guess) ? guess : 0.0);
+    auto side = [&](const dyadic& y) { return *root_side(r, to_sign(sign_of(root_f(q, y, one))), to_sign(sign_of(root_v(q, y, one)))); };
+    return correctly_round([&](const dyadic& y) { return side(y) != sign::positive; }, [&](const dyadic& y) { return side(y) == sign::negative; },
+                           is_finite(guess) ? guess : 0.0);
 }
 // One Newton step from g on the double-double coefficients: the root to about twice the
 // precision of g, as g - delta (delta small beside g): the guess for a coordinate a_i + t b_i that
@@ -421,22 +423,23 @@ template <class K, class F>
 
 // A coordinate a_i + t b_i at the root, by exact signs, then dyadic bracketing.
 template <class F, class A, class B>
-[[nodiscard, gnu::noinline]] constexpr double rounded_root_coordinate(F f, root r, A ai, B bi, int sb, double guess) {
+[[nodiscard, gnu::noinline]] constexpr double rounded_root_coordinate(F f, root r, A ai, B bi, sign sb, double guess) {
+    const bool up = sb == sign::positive;
     if (is_finite(guess) && guess != 0.0)
         if (const auto v = round_at_midpoints(guess, [&](double c, double h) {
-                const int s = sb > 0 ? exact_root_side(f, r, [=](auto L) { return (L(c) + L(h)) - ai(L); }, [=](auto L) { return bi(L); })
-                                     : exact_root_side(f, r, [=](auto L) { return ai(L) - (L(c) + L(h)); }, [=](auto L) { return -bi(L); });
-                return s == 2 ? 2 : sb * s;
+                const sign s = up ? exact_root_side(f, r, [=](auto L) { return (L(c) + L(h)) - ai(L); }, [=](auto L) { return bi(L); })
+                                  : exact_root_side(f, r, [=](auto L) { return ai(L) - (L(c) + L(h)); }, [=](auto L) { return -bi(L); });
+                return std::optional<sign>(sb * s);
             }))
             return *v;
     const auto q = f(lift_dyadic{});
     const dyadic a = ai(lift_dyadic{}), d = bi(lift_dyadic{});
     auto side = [&](const dyadic& y) {
-        const int s = sb > 0 ? root_side(r, sign_of(root_f(q, y - a, d)), sign_of(root_v(q, y - a, d)))
-                             : root_side(r, sign_of(root_f(q, a - y, -d)), sign_of(root_v(q, a - y, -d)));
-        return sb * s;
+        const dyadic p = up ? y - a : a - y, w = up ? d : -d;
+        return sb * *root_side(r, to_sign(sign_of(root_f(q, p, w))), to_sign(sign_of(root_v(q, p, w))));
     };
-    return correctly_round([&](const dyadic& y) { return side(y) <= 0; }, [&](const dyadic& y) { return side(y) < 0; }, is_finite(guess) ? guess : 0.0);
+    return correctly_round([&](const dyadic& y) { return side(y) != sign::positive; }, [&](const dyadic& y) { return side(y) == sign::negative; },
+                           is_finite(guess) ? guess : 0.0);
 }
 
 // The point a + t b at the root t (a(L), b(L) lifted points and vectors, as in point_at; each b_i
@@ -465,8 +468,8 @@ template <class K, class F, class A, class B>
         if (!__builtin_is_constant_evaluated()) delta = newton_step(f(lift_filter_dd{}), t);
         auto coordinate = [&](auto pick) -> double {
             const double bi = pick(b(lift_double{}));
-            const int sb = bi > 0.0 ? 1 : (bi < 0.0 ? -1 : 0);
-            if (sb == 0) return pick(a(lift_double{})); // b_i == 0: the coordinate is a_i, an input
+            const sign sb = sign_of_double(bi);
+            if (sb == sign::zero) return pick(a(lift_double{})); // b_i == 0: the coordinate is a_i, an input
             double guess = pick(a(lift_double{})) + t * bi;
             // sign(a_i + t b_i - m) = sign(b_i) sign(t - y), y = p / q = sign(b_i) (m - a_i) / |b_i|
             if (!__builtin_is_constant_evaluated()) {
@@ -477,9 +480,9 @@ template <class K, class F, class A, class B>
                 guess = g.hi + g.lo;
                 const auto v = round_at_midpoints(guess, [&](double c, double h) {
                     const auto m = lift_filtered_dd(c, h);
-                    const int s = sb > 0 ? root_side(r, dd_side(root_f(q, m - ai, di)), dd_side(root_v(q, m - ai, di)))
-                                         : root_side(r, dd_side(root_f(q, ai - m, -di)), dd_side(root_v(q, ai - m, -di)));
-                    return s == 2 ? 2 : sb * s;
+                    const auto s = sb == sign::positive ? root_side(r, dd_side(root_f(q, m - ai, di)), dd_side(root_v(q, m - ai, di)))
+                                                        : root_side(r, dd_side(root_f(q, ai - m, -di)), dd_side(root_v(q, ai - m, -di)));
+                    return times(s, sb);
                 });
                 if (v) return *v;
             }

@@ -146,8 +146,8 @@ struct slab_axis {
 // pairs of axes, comparisons of coordinates for the rest. Non-finite input: no.
 enum class slab_extent { ray, segment, line };
 
-// The slab test on rounded slab parameters where its answer is clear, before any sign: 1 the sets
-// meet, 0 they do not, -1 too close to call (or a direction component outside [2^-1000, 2^1000]).
+// The slab test on rounded slab parameters where its answer is clear, before any sign: yes the sets
+// meet, no they do not, uncertain too close to call (or a direction component outside [2^-1000, 2^1000]).
 // Per axis t = (P - o) * (1 / d) is Kay and Kajiya's slab parameter (SIGGRAPH 1986); rounded it is
 // within 4u|t| + 2^-1074 of the exact value (d = e - o rounded for a segment, its reciprocal, P - o
 // and the product: four roundings, the last one possibly subnormal), and the interval
@@ -159,7 +159,7 @@ enum class slab_extent { ray, segment, line };
 // such an input is never called a hit (a miss is its right answer). An inverted box is never
 // called a hit. Run time only: constant evaluation refuses the NaN an overflow can make.
 template <slab_extent X>
-[[nodiscard]] constexpr int slab_parameters_decide(const aabb3& b, point3 o, vec3 dv, point3 e) {
+[[nodiscard]] constexpr certainty slab_parameters_decide(const aabb3& b, point3 o, vec3 dv, point3 e) {
     const double oc[3] = {o.x, o.y, o.z}, dc[3] = {dv.x, dv.y, dv.z}, ec[3] = {e.x, e.y, e.z};
     const double mn[3] = {b.min.x, b.min.y, b.min.z}, mx[3] = {b.max.x, b.max.y, b.max.z};
     double near_lo = X == slab_extent::line ? -__builtin_huge_val() : 0.0, near_hi = near_lo;
@@ -168,7 +168,7 @@ template <slab_extent X>
     for (int i = 0; i < 3; ++i) {
         const double d = X == slab_extent::segment ? ec[i] - oc[i] : dc[i];
         const double ad = arith::abs(d);
-        if (!(ad >= 0x1p-1000 && ad <= 0x1p1000)) return -1;
+        if (!(ad >= 0x1p-1000 && ad <= 0x1p1000)) return certainty::uncertain;
         const double inv = 1.0 / d;
         const double t1 = (mn[i] - oc[i]) * inv, t2 = (mx[i] - oc[i]) * inv;
         const double tn = d > 0.0 ? t1 : t2, tf = d > 0.0 ? t2 : t1;
@@ -181,9 +181,9 @@ template <slab_extent X>
         far_lo = fl < far_lo || fl != fl ? fl : far_lo;
         far_hi = fh < far_hi ? fh : far_hi;
         ordered = ordered && mn[i] <= mx[i];
-        if (near_lo > far_hi) return 0; // the slabs so far have no common t: most misses end here
+        if (near_lo > far_hi) return certainty::no; // the slabs so far have no common t: most misses end here
     }
-    return ordered && near_hi <= far_lo ? 1 : -1;
+    return ordered && near_hi <= far_lo ? certainty::yes : certainty::uncertain;
 }
 
 template <slab_extent X, class K>
@@ -232,7 +232,7 @@ template <slab_extent X, class K>
 template <slab_extent X, class K>
 [[nodiscard, gnu::always_inline]] constexpr bool slabs(K& k, const aabb3& b, point3 o, vec3 dv, point3 e) {
     if (arith::rounded_stage_applies<K>())
-        if (const int r = slab_parameters_decide<X>(b, o, dv, e); r >= 0) return r == 1;
+        if (const certainty r = slab_parameters_decide<X>(b, o, dv, e); r != certainty::uncertain) return r == certainty::yes;
     return slab_signs<X>(k, b, o, dv, e);
 }
 

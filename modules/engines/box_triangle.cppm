@@ -57,8 +57,8 @@ template <box_reach Reach>
 
 // The separating axes of the box and the hull of NV points (a triangle: 13, a tetrahedron: 25)
 // with the projections rounded, each widened by a rigorous bound on its rounding error, before any
-// sign: 0 when some axis certainly separates, 1 when none can (every projection overlaps by more
-// than its bound), -1 when that is not clear. The axes: the box's three face normals (coordinate
+// sign: no when some axis certainly separates, yes when none can (every projection overlaps by more
+// than its bound), uncertain when that is not clear. The axes: the box's three face normals (coordinate
 // comparisons, exact), the normals of the given faces, and each given edge crossed with each box
 // axis; for a solid box and a triangle or a tetrahedron (every edge and face listed) no axis
 // separating means the sets meet, and a zero normal is never called clear. It decides the same
@@ -81,7 +81,7 @@ template <box_reach Reach>
 // bit 3 e + i; face g: bit 3 NE + g; every bit when the stage stopped early): the others cannot
 // separate, so the signs need not test them.
 template <int NV, int NE, int NF>
-[[nodiscard]] constexpr int rounded_hull_axes_decide(const aabb3& b, const point3 (&v)[NV], const int (&edges)[NE][2],
+[[nodiscard]] constexpr certainty rounded_hull_axes_decide(const aabb3& b, const point3 (&v)[NV], const int (&edges)[NE][2],
                                                      const int (&faces)[NF][3], unsigned* unclear = nullptr) {
     static_assert(3 * NE + NF <= 32);
     if (unclear) *unclear = ~0u;
@@ -89,11 +89,11 @@ template <int NV, int NE, int NF>
         const double lo = at(b.min, i), hi = at(b.max, i);
         bool above = true, below = true;
         for (int p = 0; p < NV; ++p) above = above && at(v[p], i) > hi, below = below && at(v[p], i) < lo;
-        if (above || below) return 0;
+        if (above || below) return certainty::no;
     }
     const double m[3] = {b.min.x, b.min.y, b.min.z};
     const double w[3] = {b.max.x - b.min.x, b.max.y - b.min.y, b.max.z - b.min.z};
-    if (!(w[0] > 0.0 && w[1] > 0.0 && w[2] > 0.0)) return -1; // flat or inverted: these axes do not suffice
+    if (!(w[0] > 0.0 && w[1] > 0.0 && w[2] > 0.0)) return certainty::uncertain; // flat or inverted: these axes do not suffice
     double x[NV][3], f[NE][3]; // point minus the box's min corner; edge e: v[q] - v[p]
     double Xk[3] = {0.0, 0.0, 0.0}, F = 0.0; // sums of |x| per axis and of |f|: NaN or infinite with any of them
     for (int p = 0; p < NV; ++p)
@@ -101,7 +101,7 @@ template <int NV, int NE, int NF>
     for (int e = 0; e < NE; ++e)
         for (int i = 0; i < 3; ++i) f[e][i] = at(v[edges[e][1]], i) - at(v[edges[e][0]], i), F += arith::abs(f[e][i]);
     const double X = Xk[0] + Xk[1] + Xk[2], W = w[0] + w[1] + w[2];
-    if (!(X <= 0x1p300 && F <= 0x1p300 && W <= 0x1p300)) return -1; // also NaN
+    if (!(X <= 0x1p300 && F <= 0x1p300 && W <= 0x1p300)) return certainty::uncertain; // also NaN
     constexpr double tiny = 0x1p-700;
     unsigned mask = 0;
     const double err = 0x1p-48 * F * (X + W) + tiny;
@@ -120,7 +120,7 @@ template <int NV, int NE, int NF>
                 const double P = fj * x[p][l] - fl * x[p][j];
                 mn = P < mn ? P : mn, mx = P > mx ? P : mx;
             }
-            if (mn - hi > err || mx - lo < -err) return 0;
+            if (mn - hi > err || mx - lo < -err) return certainty::no;
             if (!(mn - hi < -err && mx - lo > err)) mask |= 1u << (3 * e + i);
         }
     for (int g = 0; g < NF; ++g) {
@@ -144,15 +144,15 @@ template <int NV, int NE, int NF>
             mn = q < mn ? q : mn, mx = q > mx ? q : mx;
         }
         const double en = 0x1p-48 * perm + tiny;
-        if (mn - hi > en || mx - lo < -en) return 0;
+        if (mn - hi > en || mx - lo < -en) return certainty::no;
         if (!(mn - hi < -en && mx - lo > en)) mask |= 1u << (3 * NE + g);
     }
-    if (mask == 0) return 1;
+    if (mask == 0) return certainty::yes;
     if (unclear) *unclear = mask;
-    return -1;
+    return certainty::uncertain;
 }
 // The triangle's 13 axes (every tier's box-triangle test, and the box-tetrahedron test's faces).
-[[nodiscard]] constexpr int rounded_axes_decide(const aabb3& b, const point3 (&v)[3], unsigned* unclear = nullptr) {
+[[nodiscard]] constexpr certainty rounded_axes_decide(const aabb3& b, const point3 (&v)[3], unsigned* unclear = nullptr) {
     constexpr int edges[3][2] = {{0, 1}, {1, 2}, {2, 0}}, faces[1][3] = {{0, 1, 2}};
     return rounded_hull_axes_decide(b, v, edges, faces, unclear);
 }
@@ -173,7 +173,7 @@ template <box_reach Reach, bool ExactPassStage = true, class K>
     unsigned unclear = ~0u; // bit 3 e + i: edge e with box axis i; bit 9: the normal
     if constexpr (Reach == box_reach::closed) {
         if (arith::rounded_stage_applies<K>() || (ExactPassStage && arith::exact_pass_at_run_time<K>()))
-            if (const int r = rounded_axes_decide(b, v, &unclear); r >= 0) return r == 1;
+            if (const certainty r = rounded_axes_decide(b, v, &unclear); r != certainty::uncertain) return r == certainty::yes;
         // a vertex in the closed box: they meet (comparisons, exact; a triangle with a NaN or an
         // infinity is no shape, which the signs below turn into no)
         if (finite(t))

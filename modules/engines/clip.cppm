@@ -45,7 +45,7 @@ template <class K, class Con>
 [[nodiscard]] constexpr std::optional<clipped> clip(K& k, const Con& con, int m, extent x) {
     clipped r;
     for (int i = 0; i < m; ++i) {
-        const sign sb = arith::structural_sgn(k, [=](auto L) { return con(i, L).b; });
+        const sign sb = arith::sgn<arith::hint::structural>(k, [=](auto L) { return con(i, L).b; });
         if (sb == sign::zero) { // parallel: the constraint holds everywhere or nowhere
             if (k.sgn([=](auto L) { return con(i, L).a; }) == sign::negative) return std::nullopt;
             continue;
@@ -108,9 +108,9 @@ template <class K, class Con>
 // the clip above would compare the plane's bound with itself: a zero no filter proves.)
 template <class K, class Con>
 [[nodiscard]] constexpr std::optional<clipped> clip_equality(K& k, const Con& con, extent x) {
-    const sign sb = arith::structural_sgn(k, [=](auto L) { return con(0, L).b; });
+    const sign sb = arith::sgn<arith::hint::structural>(k, [=](auto L) { return con(0, L).b; });
     if (sb == sign::zero) {
-        if (!arith::structural_zero(k, [=](auto L) { return con(0, L).a; })) return std::nullopt;
+        if (!arith::is_zero<arith::hint::structural>(k, [=](auto L) { return con(0, L).a; })) return std::nullopt;
         return clipped{};
     }
     if (x != extent::line && k.sgn([=](auto L) { return con(0, L).a; }) == sb) return std::nullopt; // t < 0

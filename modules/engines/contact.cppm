@@ -147,7 +147,7 @@ template <class K>
     if (k.sgn([=](auto L) { return arith::det3(s.D(L), arith::lift(L, p) - s.O(L), arith::lift(L, q) - s.O(L)); }) != sign::zero)
         return std::nullopt; // skew
     for (int axis = 0; axis < 3; ++axis) {
-        const sign c = arith::structural_sgn(k, [=](auto L) { return pick(arith::cross(s.D(L), arith::lift(L, q) - arith::lift(L, p)), axis); });
+        const sign c = arith::sgn<arith::hint::structural>(k, [=](auto L) { return pick(arith::cross(s.D(L), arith::lift(L, q) - arith::lift(L, p)), axis); });
         if (c == sign::zero) continue;
         // crossing in the common plane: t c = cross2(p - o, q - p), u c = cross2(p - o, D)
         auto lower = [&](bool of_s) { // cross2(p - o, q - p) (t c) or cross2(p - o, D) (u c)
@@ -175,7 +175,7 @@ template <class K>
     }
     // parallel: on s's line, then the range between the end points' positions
     for (int axis = 0; axis < 3; ++axis)
-        if (!arith::structural_zero(k, [=](auto L) { return pick(arith::cross(s.D(L), arith::lift(L, p) - s.O(L)), axis); })) return std::nullopt;
+        if (!arith::is_zero<arith::hint::structural>(k, [=](auto L) { return pick(arith::cross(s.D(L), arith::lift(L, p) - s.O(L)), axis); })) return std::nullopt;
     const contact_end ep{end_kind::on_line, 0.0, p}, eq{end_kind::on_line, 0.0, q};
     const bool p_first = k.sgn([=](auto L) { return arith::dot(arith::lift(L, q) - arith::lift(L, p), s.D(L)); }) != sign::negative;
     contact_span r{p_first ? ep : eq, p_first ? eq : ep};
@@ -196,13 +196,13 @@ template <class K>
         const auto A = arith::lift(L, a);
         return arith::cross(arith::lift(L, b) - A, arith::lift(L, c) - A);
     };
-    const sign nd = arith::structural_sgn(k, [=](auto L) { return arith::dot(n_of(L), s.D(L)); });
+    const sign nd = arith::sgn<arith::hint::structural>(k, [=](auto L) { return arith::dot(n_of(L), s.D(L)); });
     if (nd != sign::zero) {
         const contact_end e{end_kind::plane_crossing, 0.0, a, b, c, 2, nd};
         return contact_span{e, e};
     }
     for (int axis = 0; axis < 3; ++axis) {
-        const sign o = arith::structural_sgn(k, [=](auto L) { return pick(n_of(L), axis); });
+        const sign o = arith::sgn<arith::hint::structural>(k, [=](auto L) { return pick(n_of(L), axis); });
         if (o == sign::zero) continue;
         // in the plane: the three edges' half-planes o cross2(q - p, x - p) >= 0
         const point3 v[3] = {a, b, c};

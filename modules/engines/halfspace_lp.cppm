@@ -91,9 +91,6 @@ export namespace incidence::detail {
 
 namespace halfspaces {
 
-// settled(k, f): the sign of a low-degree polynomial that is often exactly zero (arith::settled).
-using arith::settled;
-
 // A zero normal; two normals equal or opposite (the box's faces across one axis, a frustum's near
 // and far planes, a repeated plane): no single point where they meet, known without a sign (which
 // the filter could not prove zero).
@@ -167,7 +164,7 @@ template <class K, class Rows>
     auto det = [=](auto L) { return arith::det3(rows.normal(L, i), rows.normal(L, j), rows.normal(L, l)); };
     sign d;
     if constexpr (requires { rows.triple_sign(k, i, j, l, det); }) d = rows.triple_sign(k, i, j, l, det);
-    else d = settled(k, det);
+    else d = arith::sgn<arith::hint::often_zero>(k, det);
     if (d == sign::zero) return found; // no single point
     found.independent = true;
     // V and D, lifted once into the filter for every row's condition (the same values each
@@ -199,7 +196,7 @@ template <class K, class Rows>
     std::uint64_t open[2] = {0, 0}; // rows 0 to 127 the filter left open (rows beyond: always decided)
     for (unsigned r = 0; r < total; ++r) {
         if (r == i || r == j || r == l) continue;
-        const sign s = arith::probe(k, beyond(r));
+        const sign s = arith::sgn<arith::hint::optional>(k, beyond(r));
         if (s == -d) return found;
         if (s == sign::zero && r < 128) open[r / 64] |= std::uint64_t{1} << (r % 64);
     }
@@ -209,7 +206,7 @@ template <class K, class Rows>
         // offsets), is common; an exact zero the cheap stages cannot settle is computed in place
         const sign s = [&] {
             if constexpr (requires { rows.beyond_sign(k, i, j, l, r, beyond(r)); }) return rows.beyond_sign(k, i, j, l, r, beyond(r));
-            else return arith::decided(k, beyond(r));
+            else return arith::sgn<arith::hint::decisive>(k, beyond(r));
         }();
         if (s != sign::zero && s != d) return found;
     }
@@ -396,7 +393,7 @@ struct picked_rows {
 // every normal is parallel to one (Schrijver 1986, section 8.5): empty iff none lies in every row.
 // The line of rows i and j is V / D with w = n_i x n_j, V = c_i n_j x w + c_j w x n_i, D = w . w > 0;
 // the plane of row i is V / D with V = c_i n_i, D = n_i . n_i. Signs of degree 5 and 3 for plane3
-// rows, decided in place (arith::decided: a guessed subset's line often lies on its third plane,
+// rows, decided in place (hint::decisive: a guessed subset's line often lies on its third plane,
 // to rounding). false: not empty, or all normals zero.
 template <class K, class Rows>
 [[nodiscard]] constexpr bool low_rank_empty(K& k, const Rows& rows) {
@@ -407,14 +404,14 @@ template <class K, class Rows>
         for (unsigned j = i + 1; j < total; ++j) {
             if (rows.zero(j) || rows.parallel(i, j)) continue;
             auto w = [=](auto L) { return arith::cross(rows.normal(L, i), rows.normal(L, j)); };
-            if (settled(k, [=](auto L) { return w(L).x; }) == sign::zero && settled(k, [=](auto L) { return w(L).y; }) == sign::zero &&
-                settled(k, [=](auto L) { return w(L).z; }) == sign::zero)
+            if (arith::sgn<arith::hint::often_zero>(k, [=](auto L) { return w(L).x; }) == sign::zero && arith::sgn<arith::hint::often_zero>(k, [=](auto L) { return w(L).y; }) == sign::zero &&
+                arith::sgn<arith::hint::often_zero>(k, [=](auto L) { return w(L).z; }) == sign::zero)
                 continue;
             pair = true;
             bool inside = true;
             for (unsigned r = 0; r < total && inside; ++r) {
                 if (r == i || r == j) continue;
-                inside = arith::decided(k, [=](auto L) {
+                inside = arith::sgn<arith::hint::decisive>(k, [=](auto L) {
                     const auto wv = w(L);
                     const auto nh = rows.normal(L, r);
                     return rows.offset(L, r) * arith::dot(wv, wv) -
@@ -432,7 +429,7 @@ template <class K, class Rows>
         bool inside = true;
         for (unsigned r = 0; r < total && inside; ++r) {
             if (r == i) continue;
-            inside = arith::decided(k, [=](auto L) {
+            inside = arith::sgn<arith::hint::decisive>(k, [=](auto L) {
                 const auto ni = rows.normal(L, i);
                 return rows.offset(L, r) * arith::dot(ni, ni) - rows.offset(L, i) * arith::dot(rows.normal(L, r), ni);
             }) != sign::negative;
@@ -600,42 +597,42 @@ struct vertex_guesses {
 }
 
 // Has the set of the m half-spaces a point x with g . x >= e? Decided from the vertex v = V / D of
-// the three planes t only when every deciding sign is proven nonzero (arith::probe): yes when
+// the three planes t only when every deciding sign is proven nonzero (hint::optional): yes when
 // g . v > e and v is strictly inside every other half-space; no when g . v < e and
 // g = y_i n_i + y_j n_j + y_l n_l with every y > 0 (Farkas: then g . x <= g . v on the whole set).
-// 1: yes, 0: no, -1: not decided (the caller runs feasible()).
+// uncertain: not decided (the caller runs feasible()).
 template <class K>
-[[nodiscard]] constexpr int side_at_vertex(K& k, const plane3* planes, int m, const std::array<int, 3>& t, vec3 g, double e) {
-    if (t[0] < 0) return -1;
+[[nodiscard]] constexpr certainty side_at_vertex(K& k, const plane3* planes, int m, const std::array<int, 3>& t, vec3 g, double e) {
+    if (t[0] < 0) return certainty::uncertain;
     const plane3 a = planes[t[0]], b = planes[t[1]], c = planes[t[2]];
-    const sign d = arith::probe(k, [=](auto L) { return arith::det3(arith::lift(L, a.normal), arith::lift(L, b.normal), arith::lift(L, c.normal)); });
-    if (d == sign::zero) return -1;
+    const sign d = arith::sgn<arith::hint::optional>(k, [=](auto L) { return arith::det3(arith::lift(L, a.normal), arith::lift(L, b.normal), arith::lift(L, c.normal)); });
+    if (d == sign::zero) return certainty::uncertain;
     // g . V - e D, with g . (n_j x n_l) = det(g, n_j, n_l)
-    const sign along = arith::probe(k, [=](auto L) {
+    const sign along = arith::sgn<arith::hint::optional>(k, [=](auto L) {
         const auto na = arith::lift(L, a.normal), nb = arith::lift(L, b.normal), nc = arith::lift(L, c.normal), G = arith::lift(L, g);
         return L(a.offset) * arith::det3(G, nb, nc) + L(b.offset) * arith::det3(G, nc, na) + L(c.offset) * arith::det3(G, na, nb) -
                L(e) * arith::det3(na, nb, nc);
     });
-    if (along == sign::zero) return -1;
+    if (along == sign::zero) return certainty::uncertain;
     if (along == d) { // g . v > e: yes if v is in the set
         for (int r = 0; r < m; ++r) {
             if (r == t[0] || r == t[1] || r == t[2]) continue;
             const plane3 h = planes[r];
-            const sign s = arith::probe(k, [=](auto L) {
+            const sign s = arith::sgn<arith::hint::optional>(k, [=](auto L) {
                 const auto na = arith::lift(L, a.normal), nb = arith::lift(L, b.normal), nc = arith::lift(L, c.normal);
                 const auto nh = arith::lift(L, h.normal);
                 return L(h.offset) * arith::det3(na, nb, nc) -
                        (L(a.offset) * arith::det3(nh, nb, nc) + L(b.offset) * arith::det3(nh, nc, na) + L(c.offset) * arith::det3(nh, na, nb));
             });
-            if (s != d) return -1;
+            if (s != d) return certainty::uncertain;
         }
-        return 1;
+        return certainty::yes;
     }
     // g . v < e: no if the multipliers y = (det(g, n_j, n_l), det(n_i, g, n_l), det(n_i, n_j, g)) / D are positive
-    const sign y0 = arith::probe(k, [=](auto L) { return arith::det3(arith::lift(L, g), arith::lift(L, b.normal), arith::lift(L, c.normal)); });
-    const sign y1 = arith::probe(k, [=](auto L) { return arith::det3(arith::lift(L, a.normal), arith::lift(L, g), arith::lift(L, c.normal)); });
-    const sign y2 = arith::probe(k, [=](auto L) { return arith::det3(arith::lift(L, a.normal), arith::lift(L, b.normal), arith::lift(L, g)); });
-    return y0 == d && y1 == d && y2 == d ? 0 : -1;
+    const sign y0 = arith::sgn<arith::hint::optional>(k, [=](auto L) { return arith::det3(arith::lift(L, g), arith::lift(L, b.normal), arith::lift(L, c.normal)); });
+    const sign y1 = arith::sgn<arith::hint::optional>(k, [=](auto L) { return arith::det3(arith::lift(L, a.normal), arith::lift(L, g), arith::lift(L, c.normal)); });
+    const sign y2 = arith::sgn<arith::hint::optional>(k, [=](auto L) { return arith::det3(arith::lift(L, a.normal), arith::lift(L, b.normal), arith::lift(L, g)); });
+    return y0 == d && y1 == d && y2 == d ? certainty::no : certainty::uncertain;
 }
 
 // Do the m half-spaces n_i . x <= c_i (m <= convex_polyhedron3::capacity) meet the plane?
@@ -666,18 +663,18 @@ template <class K>
             if (greatest[0] < 0 || t > hi) greatest = g.triple[u], hi = t;
         }
     }
-    const int upper = side_at_vertex(k, planes, m, greatest, p.normal, p.offset); // a point with n . x >= c?
-    if (upper == 0) return false;
-    const int lower = side_at_vertex(k, planes, m, least, -p.normal, -p.offset); // and with n . x <= c?
-    if (lower == 0) return false;
+    const certainty upper = side_at_vertex(k, planes, m, greatest, p.normal, p.offset); // a point with n . x >= c?
+    if (upper == certainty::no) return false;
+    const certainty lower = side_at_vertex(k, planes, m, least, -p.normal, -p.offset); // and with n . x <= c?
+    if (lower == certainty::no) return false;
     std::array<plane3, capacity + 1> rows{};
     for (int i = 0; i < m; ++i) rows[static_cast<unsigned>(i)] = planes[i];
     const auto n = static_cast<unsigned>(m);
-    if (lower != 1) {
+    if (lower != certainty::yes) {
         rows[n] = p; // the set's points on the plane's lower side
         if (!feasible(k, rows.data(), n + 1)) return false;
     }
-    if (upper != 1) {
+    if (upper != certainty::yes) {
         rows[n] = plane3{-p.normal, -p.offset}; // and on its upper side
         if (!feasible(k, rows.data(), n + 1)) return false;
     }
@@ -703,7 +700,7 @@ template <class K>
         }
         if (best < 0 || !(lo > h.offset)) continue; // not beyond, as far as double can tell
         // has b a point with -n . x >= -c (n . x <= c)? no: separated
-        if (side_at_vertex(k, b, mb, vb.triple[static_cast<unsigned>(best)], -h.normal, -h.offset) == 0) return true;
+        if (side_at_vertex(k, b, mb, vb.triple[static_cast<unsigned>(best)], -h.normal, -h.offset) == certainty::no) return true;
     }
     return false;
 }
@@ -745,7 +742,7 @@ template <class K>
         auto strictly_in = [&](const plane3* p, int m) {
             for (int r = 0; r < m && strictly; ++r) {
                 const plane3 h = p[r];
-                strictly = arith::probe(k, [=](auto L) { return L(h.offset) * L(1.0) - arith::dot(arith::lift(L, h.normal), arith::lift(L, w)); }) ==
+                strictly = arith::sgn<arith::hint::optional>(k, [=](auto L) { return L(h.offset) * L(1.0) - arith::dot(arith::lift(L, h.normal), arith::lift(L, w)); }) ==
                            sign::positive;
             }
         };

@@ -132,7 +132,7 @@ template <class K, class Points>
         bool beyond = true;
         for (std::size_t v = 0; v < n && beyond; ++v) {
             const point3 x = point(v);
-            beyond = arith::probe(k, [=](auto L) { return L(h.offset) * L(1.0) - arith::dot(arith::lift(L, h.normal), arith::lift(L, x)); }) ==
+            beyond = arith::sgn<arith::hint::optional>(k, [=](auto L) { return L(h.offset) * L(1.0) - arith::dot(arith::lift(L, h.normal), arith::lift(L, x)); }) ==
                      sign::negative;
         }
         if (beyond) return true;
@@ -148,8 +148,8 @@ template <class K>
     const point3 corner[3] = {t.a, t.b, t.c};
     // a degenerate triangle is its edges
     auto normal = [=](auto L) { return arith::cross(arith::lift(L, t.b) - arith::lift(L, t.a), arith::lift(L, t.c) - arith::lift(L, t.a)); };
-    if (settled(k, [=](auto L) { return normal(L).x; }) == sign::zero && settled(k, [=](auto L) { return normal(L).y; }) == sign::zero &&
-        settled(k, [=](auto L) { return normal(L).z; }) == sign::zero)
+    if (arith::sgn<arith::hint::often_zero>(k, [=](auto L) { return normal(L).x; }) == sign::zero && arith::sgn<arith::hint::often_zero>(k, [=](auto L) { return normal(L).y; }) == sign::zero &&
+        arith::sgn<arith::hint::often_zero>(k, [=](auto L) { return normal(L).z; }) == sign::zero)
         return false;
     // the vertices of Q: planes i and j of P crossing H at v = V / D
     auto parallel = [planes](int x, int y) {
@@ -174,7 +174,7 @@ template <class K>
                 using T = decltype(ci * x.x + cj * y.x + h * z.x);
                 return arith::v3<T>{ci * x.x + cj * y.x + h * z.x, ci * x.y + cj * y.y + h * z.y, ci * x.z + cj * y.z + h * z.z};
             };
-            const sign d = settled(k, D);
+            const sign d = arith::sgn<arith::hint::often_zero>(k, D);
             if (d == sign::zero) continue; // no single point
             // D and V lifted into the filter once for all the conditions of this pair
             const arith::lifted_once<K, decltype(D)> Dl{D};
@@ -197,12 +197,12 @@ template <class K>
                 };
             };
             // settled: a third plane through the point, or an ulp off it, is common (see first_row_vertex)
-            auto decided = [&](int r) { return r < m ? settled(k, in_plane(r)) : settled(k, in_edge(r - m)); };
+            auto decided = [&](int r) { return r < m ? arith::sgn<arith::hint::often_zero>(k, in_plane(r)) : arith::sgn<arith::hint::often_zero>(k, in_edge(r - m)); };
             // a half-space proven violated skips the pair; the proven ones are kept
             bool out = false;
             for (int r = 0; r < m && !out; ++r) {
                 if (r == i || r == j) continue;
-                s[static_cast<unsigned>(r)] = arith::probe(k, in_plane(r));
+                s[static_cast<unsigned>(r)] = arith::sgn<arith::hint::optional>(k, in_plane(r));
                 out = s[static_cast<unsigned>(r)] == -d;
             }
             if (out) continue;
@@ -313,9 +313,9 @@ struct frame_rows {
     // the axes rounds. Rows with a box face: the lifted det.
     template <class K, class Det>
     [[nodiscard]] constexpr sign triple_sign(K& k, unsigned i, unsigned j, unsigned l, const Det& det) const {
-        if (i < 6 || j < 6 || l < 6) return settled(k, det);
+        if (i < 6 || j < 6 || l < 6) return arith::sgn<arith::hint::often_zero>(k, det);
         const vec3 a = p[i - 6].normal, c = p[j - 6].normal, e = p[l - 6].normal;
-        const sign n = settled(k, [=](auto L) { return arith::det3(arith::lift(L, a), arith::lift(L, c), arith::lift(L, e)); });
+        const sign n = arith::sgn<arith::hint::often_zero>(k, [=](auto L) { return arith::det3(arith::lift(L, a), arith::lift(L, c), arith::lift(L, e)); });
         return axes == sign::positive ? n : axes == sign::negative ? -n : sign::zero;
     }
     // The decided sign of c_h D - n_h . V (vertex_of_rows) for four planes of the set is sign(det A)
@@ -326,9 +326,9 @@ struct frame_rows {
     // lift): the rows in s, as that tier rounds them.
     template <class K, class F>
     [[nodiscard]] constexpr sign beyond_sign(K& k, unsigned i, unsigned j, unsigned l, unsigned h, const F& in_frame) const {
-        if (!arith::lifts_filter<K>() || i < 6 || j < 6 || l < 6 || h < 6) return arith::decided(k, in_frame);
+        if (!arith::lifts_filter<K>() || i < 6 || j < 6 || l < 6 || h < 6) return arith::sgn<arith::hint::decisive>(k, in_frame);
         const plane_rows w{p, m};
-        const sign s = arith::decided(k, [=](auto L) { return four_rows(L, w, i - 6, j - 6, l - 6, h - 6); });
+        const sign s = arith::sgn<arith::hint::decisive>(k, [=](auto L) { return four_rows(L, w, i - 6, j - 6, l - 6, h - 6); });
         return axes == sign::positive ? s : axes == sign::negative ? -s : sign::zero;
     }
 };
@@ -362,7 +362,7 @@ template <class K>
                  sign::negative;
     }
     if (centre) return true;
-    const sign axes = settled(k, [=](auto L) { return arith::det3(arith::lift(L, b.axes[0]), arith::lift(L, b.axes[1]), arith::lift(L, b.axes[2])); });
+    const sign axes = arith::sgn<arith::hint::often_zero>(k, [=](auto L) { return arith::det3(arith::lift(L, b.axes[0]), arith::lift(L, b.axes[1]), arith::lift(L, b.axes[2])); });
     return first_row_vertex(k, frame_rows{planes, static_cast<unsigned>(m), &b, axes}).found;
 }
 // Is the whole box inside the m half-spaces? (Every plane read, so a NaN gives no in the exact tier.)
@@ -406,7 +406,7 @@ template <class K>
                 using T = decltype(ci * x.x + cj * y.x + h * z.x);
                 return arith::v3<T>{ci * x.x + cj * y.x + h * z.x, ci * x.y + cj * y.y + h * z.y, ci * x.z + cj * y.z + h * z.z};
             };
-            const sign d = settled(k, D);
+            const sign d = arith::sgn<arith::hint::often_zero>(k, D);
             if (d == sign::zero) continue; // no single point
             // D and V lifted into the filter once for every condition
             const arith::lifted_once<K, decltype(D)> Dl{D};
@@ -417,7 +417,7 @@ template <class K>
             };
             bool out = false; // a condition the filter proves violated skips the pair
             for (int r = 0; r < m && !out; ++r)
-                if (r != i && r != j) out = arith::probe(k, in_plane(r)) == -d;
+                if (r != i && r != j) out = arith::sgn<arith::hint::optional>(k, in_plane(r)) == -d;
             if (out) continue;
             bool in = true;
             for (int r = 0; r < m && in; ++r) {
@@ -427,7 +427,7 @@ template <class K>
             }
             if (!in) continue;
             if (arith::rounded_stage_applies<K>())
-                if (const int s = polygon3d::rounded_inside(g, Vl.kept, Dl.kept); s >= 0) return s == 1;
+                if (const certainty s = polygon3d::rounded_inside(g, Vl.kept, Dl.kept); s != certainty::uncertain) return s == certainty::yes;
             return polygon3d::inside(k, g, polygon3d::at_homogeneous<decltype(V), decltype(D)>{V, D, d});
         }
     }

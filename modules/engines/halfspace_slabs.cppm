@@ -20,6 +20,7 @@
 // magnitudes lie in [2^-500, 2^500], wrong only when a deciding sign is within 2^-40 of its
 // permanent (tests/query/convex_polyhedron_point.cpp).
 module;
+#include <optional>
 #include <type_traits>
 export module incidence.detail:engines.halfspace_slabs;
 import incidence.core;
@@ -70,17 +71,16 @@ template <slab_extent X>
 // read_sign. Lift = arith::lift_double: the approximate tier, each sign that of the double.
 // Lift = arith::lift_filter: the rounded stage of a filter pass at run time
 // (arith::rounded_stage_applies), each sign proven by the filter's own bound (arith::filtered)
-// or the whole stage undecided. 1: they meet, 0: apart, -1: some sign too close to call.
+// or the whole stage undecided: yes they meet, no they are apart, uncertain some sign is too
+// close to call. read_sign: nothing where the sign is not proven.
 template <class Lift>
-[[nodiscard, gnu::always_inline]] constexpr int read_sign(const auto& v) { // 2: not proven
-    if constexpr (std::is_same_v<Lift, arith::lift_double>) return v > 0.0 ? 1 : (v < 0.0 ? -1 : 0);
-    else {
-        const int s = arith::proven_sign(v);
-        return s != 0 ? s : 2;
-    }
+[[nodiscard, gnu::always_inline]] constexpr std::optional<sign> read_sign(const auto& v) {
+    if constexpr (std::is_same_v<Lift, arith::lift_double>) return arith::sign_of_double(v);
+    else if (const int s = arith::proven_sign(v); s != 0) return arith::to_sign(s);
+    else return std::nullopt;
 }
 template <slab_extent X, class Lift>
-[[nodiscard]] constexpr int stored_halfspaces(const plane3* planes, int m, point3 o, vec3 u, point3 e) {
+[[nodiscard]] constexpr certainty stored_halfspaces(const plane3* planes, int m, point3 o, vec3 u, point3 e) {
     const Lift L{};
     const auto O = arith::lift(L, o);
     const auto U = [&] {
@@ -98,39 +98,41 @@ template <slab_extent X, class Lift>
         const auto N = arith::lift(L, n);
         const A a = L(planes[i].offset) * one - arith::dot(N, O);
         const B b = arith::dot(N, U);
-        const int s = still<X>(n, o, u, e) ? 0 : read_sign<Lift>(b);
-        if (s == 2) return -1;
-        if (s == 0 || (X != slab_extent::line && s > 0)) { // parallel, or an upper bound at t >= 0
-            const int t = read_sign<Lift>(a);
-            if (t == 2) return -1;
-            if (t < 0) return 0;
-            if (s == 0) continue;
+        const std::optional<sign> sb = still<X>(n, o, u, e) ? sign::zero : read_sign<Lift>(b);
+        if (!sb) return certainty::uncertain;
+        const sign s = *sb;
+        if (s == sign::zero || (X != slab_extent::line && s == sign::positive)) { // parallel, or an upper bound at t >= 0
+            const auto t = read_sign<Lift>(a);
+            if (!t) return certainty::uncertain;
+            if (*t == sign::negative) return certainty::no;
+            if (s == sign::zero) continue;
         }
         if constexpr (X == slab_extent::segment)
-            if (s < 0) { // a lower bound at t <= 1
-                const int t = read_sign<Lift>(L(planes[i].offset) * one - arith::dot(N, arith::lift(L, e)));
-                if (t == 2) return -1;
-                if (t < 0) return 0;
+            if (s == sign::negative) { // a lower bound at t <= 1
+                const auto t = read_sign<Lift>(L(planes[i].offset) * one - arith::dot(N, arith::lift(L, e)));
+                if (!t) return certainty::uncertain;
+                if (*t == sign::negative) return certainty::no;
             }
-        if (s < 0) {
+        if (s == sign::negative) {
             if (lower) {
-                const int t = read_sign<Lift>(a * b_lower - a_lower * b); // t_i - t_lower, times b_i b_lower > 0
-                if (t == 2) return -1;
-                if (t <= 0) continue;
+                const auto t = read_sign<Lift>(a * b_lower - a_lower * b); // t_i - t_lower, times b_i b_lower > 0
+                if (!t) return certainty::uncertain;
+                if (*t != sign::positive) continue;
             }
             a_lower = a, b_lower = b, lower = true;
         } else {
             if (upper) {
-                const int t = read_sign<Lift>(a * b_upper - a_upper * b); // t_i - t_upper, times b_i b_upper > 0
-                if (t == 2) return -1;
-                if (t >= 0) continue;
+                const auto t = read_sign<Lift>(a * b_upper - a_upper * b); // t_i - t_upper, times b_i b_upper > 0
+                if (!t) return certainty::uncertain;
+                if (*t != sign::negative) continue;
             }
             a_upper = a, b_upper = b, upper = true;
         }
     }
-    if (!lower || !upper) return 1;
-    const int t = read_sign<Lift>(a_lower * b_upper - a_upper * b_lower); // (t_lower - t_upper) b_lower b_upper
-    return t == 2 ? -1 : (t >= 0 ? 1 : 0);
+    if (!lower || !upper) return certainty::yes;
+    const auto t = read_sign<Lift>(a_lower * b_upper - a_upper * b_lower); // (t_lower - t_upper) b_lower b_upper
+    if (!t) return certainty::uncertain;
+    return *t != sign::negative ? certainty::yes : certainty::no;
 }
 
 // The generalised slab test for o + t u (X: ray, segment with end point e, or line) against the
@@ -143,10 +145,10 @@ template <slab_extent X, class K>
 [[nodiscard]] constexpr bool halfspaces(K& k, const plane3* planes, int m, point3 o, vec3 u, point3 e) {
     constexpr int capacity = convex_polyhedron3::capacity;
     if (!well_formed(planes, m, capacity) || !finite(o) || !finite(u) || !finite(e)) return false;
-    if constexpr (std::is_same_v<K, arith::approx_kernel>) return stored_halfspaces<X, arith::lift_double>(planes, m, o, u, e) == 1;
+    if constexpr (std::is_same_v<K, arith::approx_kernel>) return stored_halfspaces<X, arith::lift_double>(planes, m, o, u, e) == certainty::yes;
     // not for a point (e = o): one sign per plane, nothing to keep
     if (arith::rounded_stage_applies<K>() && !(X == slab_extent::segment && o == e))
-        if (const int r = stored_halfspaces<X, arith::lift_filter>(planes, m, o, u, e); r >= 0) return r == 1;
+        if (const certainty r = stored_halfspaces<X, arith::lift_filter>(planes, m, o, u, e); r != certainty::uncertain) return r == certainty::yes;
     int lower = -1, upper = -1; // the tightest lower and upper bound so far
     for (int i = 0; i < m; ++i) {
         const vec3 n = planes[i].normal;

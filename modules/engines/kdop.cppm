@@ -292,8 +292,8 @@ template <int K, class Kern>
     for (unsigned i = 0; i < d.size(); ++i) {
         const terms t = times(d[i], p.x, p.y, p.z);
         const double lo = mn[i], hi = mx[i];
-        if (arith::probe(k, [=](auto L) { return sum(L, t) - L(lo); }) != sign::positive) return false;
-        if (arith::probe(k, [=](auto L) { return L(hi) - sum(L, t); }) != sign::positive) return false;
+        if (arith::sgn<arith::hint::optional>(k, [=](auto L) { return sum(L, t) - L(lo); }) != sign::positive) return false;
+        if (arith::sgn<arith::hint::optional>(k, [=](auto L) { return L(hi) - sum(L, t); }) != sign::positive) return false;
     }
     return true;
 }

@@ -306,9 +306,9 @@ template <class K>
                arith::is_zero(k, [&](auto L) { return L(a.z) - L(b.z); });
     }
     // These signs are zero for coplanar objects, by structure in one plane z = c: the filter pass
-    // proves those zeros (arith::structural_sgn, structural_zero), so such a pair needs no exact pass.
+    // proves those zeros (hint::structural), so such a pair needs no exact pass.
     if (!r.is_point()) {
-        if (!arith::structural_zero(k, [&](auto L) { return arith::det3(s.D(L), r.D(L), r.O(L) - s.O(L)); })) return false; // skew
+        if (!arith::is_zero<arith::hint::structural>(k, [&](auto L) { return arith::det3(s.D(L), r.D(L), r.O(L) - s.O(L)); })) return false; // skew
         for (int axis = 0; axis < 3; ++axis) {
             const auto component = [&](auto L) { return pick(arith::cross(s.D(L), r.D(L)), axis); };
             // In a filter pass the structure first (compares only): the skew test's zero above
@@ -316,13 +316,13 @@ template <class K>
             // pass has failed already and its answer is not used. Random lines never get here.
             if constexpr (std::is_base_of_v<arith::filter_kernel, K>)
                 if (arith::zero_by_structure(component)) continue;
-            const sign c = arith::structural_sgn(k, component);
+            const sign c = arith::sgn<arith::hint::structural>(k, component);
             if (c != sign::zero) return crossing_2d(k, s, r, axis, c);
         }
     }
     // Parallel, or r a point: r must lie on s's line.
     for (int axis = 0; axis < 3; ++axis)
-        if (!arith::structural_zero(k, [&](auto L) { return pick(arith::cross(s.D(L), r.O(L) - s.O(L)), axis); })) return false;
+        if (!arith::is_zero<arith::hint::structural>(k, [&](auto L) { return pick(arith::cross(s.D(L), r.O(L) - s.O(L)), axis); })) return false;
     return collinear_overlap(k, s, r);
 }
 

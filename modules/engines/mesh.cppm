@@ -134,6 +134,7 @@ module;
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -215,15 +216,15 @@ struct at_weighted : P {
     }
 };
 
-// The crossings of the ray from q along direction j (u_j = (1, c_j, c_j^2)): 1 odd, 0 even, -1 not
-// clean (through an edge or a vertex, or in a triangle's plane). Tentative: every sign by
-// arith::probe, which may answer zero for a sign it cannot prove without touching the query's
+// The crossings of the ray from q along direction j (u_j = (1, c_j, c_j^2)): whether they are odd,
+// nothing when not clean (through an edge or a vertex, or in a triangle's plane). Tentative: every sign by
+// hint::optional, which may answer zero for a sign it cannot prove without touching the query's
 // certainty, and any such zero that would matter makes the direction unclean.
 template <class K, class Q>
-[[nodiscard]] constexpr int crossings(K& k, const mesh3& m, const Q& q, std::size_t j, bool tentative) {
+[[nodiscard]] constexpr std::optional<bool> crossings(K& k, const mesh3& m, const Q& q, std::size_t j, bool tentative) {
     const double c = j == 0 ? 0.0 : (j % 2 ? double((j + 1) / 2) : -double(j / 2));
     const vec3 u{1.0, c, c * c};
-    auto sgn = [&](const auto& f) { return tentative ? arith::probe(k, f) : k.sgn(f); };
+    auto sgn = [&](const auto& f) { return tentative ? arith::sgn<arith::hint::optional>(k, f) : k.sgn(f); };
     bool odd = false;
     for (std::size_t i = 0; i < m.triangles.size(); ++i) {
         const triangle3 t = m.triangle(i);
@@ -237,7 +238,7 @@ template <class K, class Q>
         const bool neg = s0 == sign::negative || s1 == sign::negative || s2 == sign::negative;
         if (pos && neg) continue; // the ray's line misses the triangle
         if (!pos && !neg) {       // in the triangle's plane, or a collinear triangle
-            if (tentative) return -1;
+            if (tentative) return std::nullopt;
             const point3 a = t.a, b = t.b, cc = t.c;
             bool collinear = true;
             for (int axis = 0; axis < 3 && collinear; ++axis)
@@ -245,19 +246,19 @@ template <class K, class Q>
                                 const auto n = arith::cross(arith::lift(L, b) - arith::lift(L, a), arith::lift(L, cc) - arith::lift(L, a));
                                 return axis == 0 ? n.x : (axis == 1 ? n.y : n.z);
                             });
-            if (!collinear) return -1;
+            if (!collinear) return std::nullopt;
             continue;
         }
         const sign s = pos ? sign::positive : sign::negative;
         const point3 a = t.a, b = t.b, cc = t.c;
         const sign d = sgn([=](auto L) { return q.ahead(L, a, b, cc); });
-        if (tentative && d == sign::zero) return -1;
+        if (tentative && d == sign::zero) return std::nullopt;
         // det(a - p, b - p, c - p): the crossing lies ahead iff it has sign s
         if (d != s) continue;
-        if (s0 == sign::zero || s1 == sign::zero || s2 == sign::zero) return -1; // through an edge or vertex
+        if (s0 == sign::zero || s1 == sign::zero || s2 == sign::zero) return std::nullopt; // through an edge or vertex
         odd = !odd;
     }
-    return odd ? 1 : 0;
+    return odd;
 }
 
 // Is the point q, off the surface, inside (odd crossings)? For a closed surface every clean
@@ -270,10 +271,10 @@ template <class K, class Q>
     if (!q.near(bounds(m))) return false;
     if constexpr (requires { k.probe([](auto L) { return L(0.0); }); })
         for (std::size_t j = 0; j < 4; ++j)
-            if (const int r = crossings(k, m, q, j, true); r >= 0) return r == 1;
+            if (const auto odd = crossings(k, m, q, j, true)) return *odd;
     const std::size_t tries = 8 * m.triangles.size() + m.vertices.size() + 8;
     for (std::size_t j = 0; j < tries; ++j) {
-        if (const int r = crossings(k, m, q, j, false); r >= 0) return r == 1;
+        if (const auto odd = crossings(k, m, q, j, false)) return *odd;
         if constexpr (requires { k.failed(); })
             if (k.failed()) return false; // a filter that failed a sign: its answer is discarded
     }
@@ -1042,7 +1043,7 @@ template <class K>
         if (coord(t.a, axis) == coord(t.b, axis) && coord(t.a, axis) == coord(t.c, axis))
             return normal_sign(k, t, axis) != sign::zero ? axis : -1;
     for (int axis = 0; axis < 3; ++axis)
-        if (arith::probe(k, [=](auto L) {
+        if (arith::sgn<arith::hint::optional>(k, [=](auto L) {
                 const auto a = arith::lift(L, t.a);
                 return cross_along(axis, arith::lift(L, t.b) - a, arith::lift(L, t.c) - a);
             }) != sign::zero)

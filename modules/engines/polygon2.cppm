@@ -96,7 +96,7 @@ template <class K>
 // The rounded stage of the crossing test (a filter pass at run time, arith::rounded_stage_applies):
 // inside()'s test on a point P known to within (rx, ry) of (px, py), each comparison decided only
 // when clear by more than its bound; edges(f) calls f(a, b) for every edge until it returns true.
-// 1 inside, 0 outside, -1 when some comparison is not clear (or a value is not finite). Where it
+// yes inside, no outside, uncertain when some comparison is not clear (or a value is not finite). Where it
 // decides, P is also clearly off every edge (both ends clearly above or below it, both clearly left
 // of it, or a clearly nonzero orientation). The orientation (b - a) x (P - a) is off by at most
 // |b_x - a_x| ry + |b_y - a_y| rx plus 4u times its permanent (u = 2^-53), widened by 1/8 for its
@@ -105,7 +105,7 @@ template <class K>
 // Graphics Gems IV (1994) (the crossings test); Higham, Accuracy and Stability of Numerical
 // Algorithms, 2nd ed. (2002), section 3.1 (the bounds).
 template <class Edges>
-[[nodiscard]] constexpr int rounded_parity(const Edges& edges, double px, double py, double rx, double ry) {
+[[nodiscard]] constexpr certainty rounded_parity(const Edges& edges, double px, double py, double rx, double ry) {
     bool odd = false;
     const bool unclear = edges([&](point2 a, point2 b) {
         const double da = a.y - py, db = b.y - py;
@@ -120,7 +120,7 @@ template <class Edges>
         if ((v > 0.0) == b_above) odd = !odd;
         return false;
     });
-    return unclear ? -1 : (odd ? 1 : 0);
+    return unclear ? certainty::uncertain : (odd ? certainty::yes : certainty::no);
 }
 
 // The polygon's point set against the connected shape x: an edge meets x, or p (a point of x)
@@ -205,7 +205,7 @@ template <class K, class Edges, class Q>
         if (arith::rounded_stage_applies<K>()) {
             double px = 0.0, py = 0.0, rx = 0.0, ry = 0.0;
             if (q.rounded(px, py, rx, ry))
-                if (const int s = rounded_parity(edges, px, py, rx, ry); s >= 0) return s == 1;
+                if (const certainty s = rounded_parity(edges, px, py, rx, ry); s != certainty::uncertain) return s == certainty::yes;
         }
     bool odd = false;
     (void)edges([&](point2 a, point2 b) {
@@ -218,7 +218,7 @@ template <class K, class Edges, class Q>
         const bool a_above = above(a), b_above = above(b);
         if (a_above == b_above) return false;
         auto left = [&](point2 w) { // w.x < V.x / W, proven (a skip only)
-            return arith::probe(k, [=](auto L) {
+            return arith::sgn<arith::hint::optional>(k, [=](auto L) {
                        const auto [V, W] = q.weighted(L);
                        return V.x - L(w.x) * W;
                    }) == sign::positive;

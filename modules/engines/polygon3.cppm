@@ -186,16 +186,16 @@ template <class K>
 }
 
 // The rounded stage of a point V / D of H given as filter values (the filter's own lift of V and D,
-// each off by at most its arith::error_bound): 1 inside, 0 outside, -1 when a comparison is not
+// each off by at most its arith::error_bound): yes inside, no outside, uncertain when a comparison is not
 // clear (polygon2d::rounded_parity, with the point's projection V / D in double and its radius by
 // quotient_error, widened by 1/8 for its own rounding, plus 2^-1000 for underflow), or when D is
 // not clearly nonzero or a permanent is not in the filter's trusted range (arith::proven_sign).
 template <int A, int B>
-[[nodiscard]] constexpr int rounded_inside(const polygon3& g, const arith::v3<arith::filtered<A>>& V, arith::filtered<B> D) {
+[[nodiscard]] constexpr certainty rounded_inside(const polygon3& g, const arith::v3<arith::filtered<A>>& V, arith::filtered<B> D) {
     const arith::filtered<A> vu = u_of(V, g.axis), vv = v_of(V, g.axis);
-    if (!(D.p >= 0x1p-900 && vu.p >= 0x1p-900 && vv.p >= 0x1p-900)) return -1; // also NaN
+    if (!(D.p >= 0x1p-900 && vu.p >= 0x1p-900 && vv.p >= 0x1p-900)) return certainty::uncertain; // also NaN
     const double eD = arith::error_bound(D);
-    if (!(arith::abs(D.v) > 2.0 * eD)) return -1;
+    if (!(arith::abs(D.v) > 2.0 * eD)) return certainty::uncertain;
     const double px = vu.v / D.v, py = vv.v / D.v;
     const double rx = quotient_error(vu.v, arith::error_bound(vu), D.v, eD, px) * 1.125 + 0x1p-1000;
     const double ry = quotient_error(vv.v, arith::error_bound(vv), D.v, eD, py) * 1.125 + 0x1p-1000;
@@ -205,7 +205,7 @@ template <int A, int B>
 // The rounded stage of a crossing (a filter pass at run time, arith::rounded_stage_applies): x
 // crosses H; its crossing point P = o + (T / D) u, T = n . (a - o), D = n . u, computed in double,
 // each projected coordinate off by at most a proven radius r; then the crossing test of inside on
-// it, each comparison decided only when clear by more than its bound. 1 inside, 0 outside, -1 when
+// it, each comparison decided only when clear by more than its bound. yes inside, no outside, uncertain when
 // some comparison is not clear (also for D not clearly nonzero, a value far off or not finite).
 // Where it decides, P is also clearly off every edge (each edge has both ends clearly above or
 // below P, both clearly left of it, or a clearly nonzero orientation), so the answer is that of
@@ -218,7 +218,7 @@ template <int A, int B>
 // plus 2^-1000 for underflow (an overflow leaves an infinite or NaN bound, and nothing is clear);
 // the crossing test on it is polygon2d::rounded_parity. Source: Higham, Accuracy and Stability of
 // Numerical Algorithms, 2nd ed. (2002), section 3.1 (the bounds).
-[[nodiscard]] constexpr int rounded_crossing(const polygon3& g, const linear3& x) {
+[[nodiscard]] constexpr certainty rounded_crossing(const polygon3& g, const linear3& x) {
     const point3 a = g.vertices[g.plane_vertices[0]], b = g.vertices[g.plane_vertices[1]], c = g.vertices[g.plane_vertices[2]];
     const double e[2][3] = {{b.x - a.x, b.y - a.y, b.z - a.z}, {c.x - a.x, c.y - a.y, c.z - a.z}};
     const double w[3] = {a.x - x.o.x, a.y - x.o.y, a.z - x.o.z};
@@ -227,7 +227,7 @@ template <int A, int B>
     double largest = 0.0;
     for (int k = 0; k < 3; ++k)
         largest = max2(largest, max2(max2(arith::abs(e[0][k]), arith::abs(e[1][k])), max2(arith::abs(w[k]), arith::abs(u[k]))));
-    if (!(largest <= 0x1p299)) return -1; // far off, or NaN
+    if (!(largest <= 0x1p299)) return certainty::uncertain; // far off, or NaN
     double n[3], T = 0.0, D = 0.0, pT = 0.0, pD = 0.0;
     for (int k = 0; k < 3; ++k) {
         const int j = (k + 1) % 3, l = (k + 2) % 3;
@@ -239,7 +239,7 @@ template <int A, int B>
     }
     for (int k = 0; k < 3; ++k) T += n[k] * w[k], D += n[k] * u[k];
     const double eT = 0x1p-48 * pT + 0x1p-700, eD = 0x1p-48 * pD + 0x1p-700;
-    if (!(arith::abs(D) > 2.0 * eD)) return -1;
+    if (!(arith::abs(D) > 2.0 * eD)) return certainty::uncertain;
     const double t = T / D;
     const double dt = quotient_error(T, eT, D, eD, t);
     const int axis = g.axis;
@@ -255,7 +255,7 @@ template <int A, int B>
 template <class K>
 [[nodiscard]] constexpr bool crossing_point_inside(K& k, const polygon3& g, const linear3& x, sign w) {
     if (arith::rounded_stage_applies<K>())
-        if (const int s = rounded_crossing(g, x); s >= 0) return s == 1;
+        if (const certainty s = rounded_crossing(g, x); s != certainty::uncertain) return s == certainty::yes;
     const point3 a = g.vertices[g.plane_vertices[0]];
     auto T = [=](auto L) { return arith::dot(normal(L, g), arith::lift(L, a) - x.O(L)); };
     auto D = [=](auto L) { return arith::dot(normal(L, g), x.D(L)); };
@@ -302,7 +302,7 @@ template <class K>
                inside(k, g, at_double{x.o});
     default:
         if (arith::rounded_stage_applies<K>()) // P clearly off every edge too (rounded_crossing)
-            if (const int s = rounded_crossing(g, x); s >= 0) return s == 1;
+            if (const certainty s = rounded_crossing(g, x); s != certainty::uncertain) return s == certainty::yes;
         return any_edge(g, [&](const segment3& e) { return linear_linear(k, as_linear(e), x); }) || crossing_point_inside(k, g, x, w);
     }
 }

@@ -3,7 +3,7 @@
 // contains(polygon, segment) share. A breakpoint is any value whose kernel-generic fraction(L, p)
 // gives {N, D} with D > 0 (the caller negates both where needed); two are ordered by the sign of
 // N1 D2 - N2 D1. A piece's point is a + t (b - a) for a double t proven strictly between its two
-// ends (t D - N against each, by arith::probe: a failure only sends the piece to the exact point),
+// ends (t D - N against each, by hint::optional: a failure only sends the piece to the exact point),
 // or else the exact midpoint t = (N1 D2 + N2 D1) / (2 D1 D2).
 // Source: the segment classification by its crossings with a boundary, as in point-in-polyhedron
 // segment tests (O'Rourke, Computational Geometry in C, 2nd ed., 7.5); the breakpoints compared as
@@ -80,7 +80,7 @@ template <class K, class P, class Frac, class AtDouble, class AtMidpoint>
         const auto [nh, dh] = fraction(arith::lift_double{}, hi);
         const double t = dl > 0.0 && dh > 0.0 ? 0.5 * (nl / dl + nh / dh) : -1.0;
         auto beyond = [&](const P& p) { // the sign of t D - N
-            return arith::probe(k, [=](auto L) {
+            return arith::sgn<arith::hint::optional>(k, [=](auto L) {
                 const auto [n, d] = fraction(L, p);
                 return L(t) * d - L(1.0) * n;
             });

@@ -214,7 +214,7 @@ template <class K>
 template <class K>
 [[nodiscard]] constexpr bool zonotopes_intersect(K& k, const zonotope& a, const zonotope& b) {
     if (a.n == 3 && b.n == 3 && b.r == reach::none)
-        if (const int f = box_box_fast(k, a, b); f >= 0) return f == 1;
+        if (const certainty f = box_box_fast(k, a, b); f != certainty::uncertain) return f == certainty::yes;
     return zonotopes_intersect_general(k, a, b);
 }
 
@@ -253,7 +253,7 @@ template <class K>
 // as the general path's up to terms that vanish identically, so the same signs. The filter
 // answers when every sign is proven; then one separating axis is a certificate, and when none
 // separates and one box is solid (nonzero extents, nonzero determinant) the 15 axes were
-// complete. Anything else (a sign it cannot prove, flat boxes) returns -1: the general path
+// complete. Anything else (a sign it cannot prove, flat boxes) is uncertain: the general path
 // decides. The approximate kernel evaluates the same in double.
 // A box is a zonotope with three generators or an obb3 read in place (no zonotope is built:
 // obb_obb's own call); box_generator, box_centre2, box_extent2 and box_solid read either.
@@ -297,7 +297,7 @@ template <class L, class BoxA, class BoxB, class Sign>
 
 enum box_axis_kind : unsigned { face_of_a, face_of_b, edge_pair, det_of_a, det_of_b };
 template <class L, class BoxA, class BoxB, class Sign>
-[[nodiscard]] constexpr int box_box_pass(L l, const BoxA& a, const BoxB& b, Sign sign_of) { // 1 yes, 0 no, -1 undecided
+[[nodiscard]] constexpr certainty box_box_pass(L l, const BoxA& a, const BoxB& b, Sign sign_of) {
     using arith::cross;
     using arith::dot;
     const auto A0 = box_generator(l, a, 0), A1 = box_generator(l, a, 1), A2 = box_generator(l, a, 2);
@@ -324,7 +324,7 @@ template <class L, class BoxA, class BoxB, class Sign>
         for (unsigned j = 0; j < 3; ++j) NA[m][j] = magnitude(dot(nA[m], B[j]));
         if (axis(one * magnitude(dot(nA[m], d)) - hA[m] * magnitude(detA) - (hB[0] * NA[m][0] + hB[1] * NA[m][1] + hB[2] * NA[m][2]),
                  face_of_a))
-            return 0;
+            return certainty::no;
     }
     // b's faces
     const auto m0 = cross(B1, B2), m1 = cross(B2, B0), m2 = cross(B0, B1);
@@ -335,7 +335,7 @@ template <class L, class BoxA, class BoxB, class Sign>
         for (unsigned i = 0; i < 3; ++i) NB[i][m] = magnitude(dot(A[i], nB[m]));
         if (axis(one * magnitude(dot(nB[m], d)) - hB[m] * magnitude(detB) - (hA[0] * NB[0][m] + hA[1] * NB[1][m] + hA[2] * NB[2][m]),
                  face_of_b))
-            return 0;
+            return certainty::no;
     }
     // the nine edge axes a_i x b_j (k = i + 1 leaves m = i + 2, and so on); (a_i x b_j) . d is
     // a_i . (b_j x d), three cross products shared by the nine
@@ -346,11 +346,11 @@ template <class L, class BoxA, class BoxB, class Sign>
             const unsigned i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
             if (axis(one * magnitude(dot(A[i], E[j])) - (hA[i1] * NA[i2][j] + hA[i2] * NA[i1][j]) - (hB[j1] * NB[i][j2] + hB[j2] * NB[i][j1]),
                      edge_pair))
-                return 0;
+                return certainty::no;
         }
     auto nonzero = [&](const auto& v, box_axis_kind kind) { return sign_of(v, kind) > 0 || sign_of(-v, kind) > 0; };
-    if (all && ((box_solid(a) && nonzero(detA, det_of_a)) || (box_solid(b) && nonzero(detB, det_of_b)))) return 1;
-    return -1;
+    if (all && ((box_solid(a) && nonzero(detA, det_of_a)) || (box_solid(b) && nonzero(detB, det_of_b)))) return certainty::yes;
+    return certainty::uncertain;
 }
 
 // A bound, per axis family, on the permanent of box_box_pass's signs (the permanent arith::filtered
@@ -409,12 +409,12 @@ template <class BoxA, class BoxB>
                            six * al * be * (de + 2.0 * al * ea + 2.0 * be * eb), six * al * al * al, six * be * be * be}};
 }
 
-// box_box_pass with every sign against those bounds alone: 1 yes, 0 no, -1 undecided (no bounds,
+// box_box_pass with every sign against those bounds alone: uncertain where it cannot tell (no bounds,
 // a sign too close to call, flat boxes).
 template <class BoxA, class BoxB>
-[[nodiscard]] constexpr int box_box_bounded_pass(const BoxA& a, const BoxB& b) {
+[[nodiscard]] constexpr certainty box_box_bounded_pass(const BoxA& a, const BoxB& b) {
     const auto s = box_box_static_bounds(a, b);
-    if (!s) return -1;
+    if (!s) return certainty::uncertain;
     return box_box_pass(arith::lift_filter{}, a, b, [&]<int N>(const arith::filtered<N>& v, box_axis_kind kind) {
         const double bound = arith::error_bound(arith::filtered<N>{0.0, s->permanent[kind]}) + 0x1p-600;
         return v.v > bound ? 1 : v.v < -bound ? -1 : 0;
@@ -422,19 +422,19 @@ template <class BoxA, class BoxB>
 }
 
 template <class K, class BoxA, class BoxB>
-[[nodiscard]] constexpr int box_box_fast(K&, const BoxA& a, const BoxB& b) { // 1 yes, 0 no, -1 undecided
+[[nodiscard]] constexpr certainty box_box_fast(K&, const BoxA& a, const BoxB& b) {
     if constexpr (std::is_base_of_v<arith::filter_kernel, K> || std::is_same_v<K, arith::exact_kernel>) {
         // First the double values against the bounds from the inputs' maxima (no permanent is
         // computed: the filtered type's permanents are dead code here, only its K is read), then,
         // if some sign was too close to call, the filter with every permanent.
-        if (coordinate_axis_separates(arith::lift_filter{}, a, b, [](const auto& v) { return arith::proven_sign(v); })) return 0;
-        if (const int r = box_box_bounded_pass(a, b); r >= 0) return r;
+        if (coordinate_axis_separates(arith::lift_filter{}, a, b, [](const auto& v) { return arith::proven_sign(v); })) return certainty::no;
+        if (const certainty r = box_box_bounded_pass(a, b); r != certainty::uncertain) return r;
         return box_box_pass(arith::lift_filter{}, a, b, [](const auto& v, box_axis_kind) { return arith::proven_sign(v); });
     } else if constexpr (std::is_same_v<K, arith::approx_kernel>) {
-        if (coordinate_axis_separates(arith::lift_double{}, a, b, [](double v) { return v > 0 ? 1 : -1; })) return 0;
+        if (coordinate_axis_separates(arith::lift_double{}, a, b, [](double v) { return v > 0 ? 1 : -1; })) return certainty::no;
         return box_box_pass(arith::lift_double{}, a, b, [](double v, box_axis_kind) { return v > 0 ? 1 : -1; });
     } else {
-        return -1; // other kernels (the tests' margin kernel) take the general path
+        return certainty::uncertain; // other kernels (the tests' margin kernel) take the general path
     }
 }
 

@@ -208,13 +208,13 @@ struct rounded_located {
     return r;
 }
 
-// What rounded_locate's table decides alone for the points' hull (n points): 0 apart (every point
-// clearly beyond one face plane), 1 meets (a point clearly inside t), -1 neither.
-[[nodiscard]] constexpr int rounded_verdict(const rounded_located& r, int n) {
-    if (r.apart) return 0;
+// What rounded_locate's table decides alone for the points' hull (n points): no, apart (every point
+// clearly beyond one face plane), yes, they meet (a point clearly inside t), or uncertain.
+[[nodiscard]] constexpr certainty rounded_verdict(const rounded_located& r, int n) {
+    if (r.apart) return certainty::no;
     for (int j = 0; j < n; ++j)
-        if (r.status[j] == 1) return 1;
-    return -1;
+        if (r.status[j] == 1) return certainty::yes;
+    return certainty::uncertain;
 }
 
 // Does the segment from point p to point q of rounded_locate's table clearly cross t's boundary
@@ -304,8 +304,8 @@ struct rounded_located {
 }
 
 // The line (or, when `ray`, the ray) through o with direction d against the closed tetrahedron t,
-// rounded, each value widened by a proven bound: 1 when it clearly meets t, 0 when it clearly
-// misses, -1 when that is not clear (and for a zero d, a flat t that the line lies in, values far
+// rounded, each value widened by a proven bound: yes when it clearly meets t, no when it clearly
+// misses, uncertain when that is not clear (and for a zero d, a flat t that the line lies in, values far
 // off or not finite). Frame: x_i = v_i - o, rounded once. For an edge (v_i, v_j),
 // s_ij = d . (x_i x x_j) is the side of the line on which the edge passes (Pluecker's relative
 // orientation of two lines). The line crosses the plane of face (a, b, c) at a point of the face,
@@ -323,7 +323,7 @@ struct rounded_located {
 // crossing, Ericson, Real-Time Collision Detection (2005), section 5.3.4 (scalar triple products
 // of a line against a triangle's edges); Higham, Accuracy and Stability of Numerical Algorithms,
 // 2nd ed. (2002), section 3.1 (the bounds).
-[[nodiscard]] constexpr int rounded_line_meets(const tetrahedron3& t, point3 o, vec3 d, bool ray) {
+[[nodiscard]] constexpr certainty rounded_line_meets(const tetrahedron3& t, point3 o, vec3 d, bool ray) {
     const point3* const v[4] = {&t.a, &t.b, &t.c, &t.d}; // in place: a copy's stores stall wide loads
     const double y[3] = {d.x, d.y, d.z};
     double x[4][3];
@@ -333,7 +333,7 @@ struct rounded_located {
         for (int k = 0; k < 3; ++k) in_range = in_range && arith::abs(x[i][k]) <= 0x1p300;
     }
     for (int k = 0; k < 3; ++k) in_range = in_range && arith::abs(y[k]) <= 0x1p300;
-    if (!in_range) return -1;
+    if (!in_range) return certainty::uncertain;
     // The six edges (0,1) (0,2) (0,3) (1,2) (1,3) (2,3): their cross products, permanents, s and bound.
     constexpr int ei[6] = {0, 0, 0, 1, 1, 2}, ej[6] = {1, 2, 3, 2, 3, 3};
     double c[6][3], m[6][3], s[6], es[6];
@@ -369,25 +369,25 @@ struct rounded_located {
             misses = false; // not clear
             continue;
         }
-        if (!ray) return 1;
+        if (!ray) return certainty::yes;
         const double S = pos == 3 ? 1.0 : -1.0;
         const double* a = x[fa[f]];
         const int e = fbc[f];
         const double D = a[0] * c[e][0] + a[1] * c[e][1] + a[2] * c[e][2];
         const double eD = 0x1p-48 * (arith::abs(a[0]) * m[e][0] + arith::abs(a[1]) * m[e][1] + arith::abs(a[2]) * m[e][2]) + 0x1p-700;
-        if (S * D > eD) return 1;  // crossed ahead of o
+        if (S * D > eD) return certainty::yes;  // crossed ahead of o
         if (S * D < -eD) continue; // crossed behind o
         misses = false;
     }
-    return misses ? 0 : -1;
+    return misses ? certainty::no : certainty::uncertain;
 }
 
 // The triangle f[0..3) against the tetrahedron t from f's side, rounded, each value widened by a
-// proven bound: 0 when every vertex of t lies clearly on one side of f's plane (that normal
-// separates), 1 when an edge of t clearly crosses f's plane inside f (its end points clearly on
+// proven bound: no when every vertex of t lies clearly on one side of f's plane (that normal
+// separates), yes when an edge of t clearly crosses f's plane inside f (its end points clearly on
 // opposite sides, and the edge's line clearly through f's interior: the three values
 // (q - p) . ((a - p) x (b - p)) over f's edges (a, b) clearly of one sign, as in
-// rounded_line_meets), -1 when neither is clear (and for a collinear f, values far off or not
+// rounded_line_meets), uncertain when neither is clear (and for a collinear f, values far off or not
 // finite). Plane values: n . (v - f[0]) with n = (f[1] - f[0]) x (f[2] - f[0]), every difference
 // rounded once, off by at most about 8u sum N_k X_k (N_k: the permanent of n_k, X_k: the largest
 // |v_k - f[0]_k|); an edge value is an orient3d of three rounded differences, off by at most
@@ -396,7 +396,7 @@ struct rounded_located {
 // 2^-700, covers both (every difference at most 2^300 in magnitude). Source: Moeller, "A fast
 // triangle-triangle intersection test", JGT 2(2), 1997 (the plane rejection); Ericson, Real-Time
 // Collision Detection (2005), section 5.3.4 (a line through a triangle by scalar triple products).
-[[nodiscard]] constexpr int rounded_triangle_side(const point3* f, const tetrahedron3& t) {
+[[nodiscard]] constexpr certainty rounded_triangle_side(const point3* f, const tetrahedron3& t) {
     const point3* const v[4] = {&t.a, &t.b, &t.c, &t.d}; // in place: a copy's stores stall wide loads
     double x[4][3], X[3] = {0.0, 0.0, 0.0};
     bool in_range = true; // every |difference| at most 2^299 (false for NaN)
@@ -410,7 +410,7 @@ struct rounded_located {
     }
     const double e[2][3] = {{f[1].x - f[0].x, f[1].y - f[0].y, f[1].z - f[0].z}, {f[2].x - f[0].x, f[2].y - f[0].y, f[2].z - f[0].z}};
     for (int k = 0; k < 3; ++k) in_range = in_range && arith::abs(e[0][k]) <= 0x1p299 && arith::abs(e[1][k]) <= 0x1p299;
-    if (!in_range) return -1;
+    if (!in_range) return certainty::uncertain;
     double nrm[3], perm = 0.0;
     for (int k = 0; k < 3; ++k) {
         const int j = (k + 1) % 3, l = (k + 2) % 3;
@@ -426,8 +426,8 @@ struct rounded_located {
         above += w[i] > err;
         below += w[i] < -err;
     }
-    if (above == 4 || below == 4) return 0;
-    if (above == 0 || below == 0) return -1;
+    if (above == 4 || below == 4) return certainty::no;
+    if (above == 0 || below == 0) return certainty::uncertain;
     for (int p = 0; p < 4; ++p)
         for (int q = p + 1; q < 4; ++q) {
             if (!((w[p] > err && w[q] < -err) || (w[p] < -err && w[q] > err))) continue;
@@ -449,9 +449,9 @@ struct rounded_located {
                 pos += val > ev;
                 neg += val < -ev;
             }
-            if (pos == 3 || neg == 3) return 1;
+            if (pos == 3 || neg == 3) return certainty::yes;
         }
-    return -1;
+    return certainty::uncertain;
 }
 
 // The closed convex set x (finite, checked by the caller) against the closed tetrahedron t
@@ -465,9 +465,9 @@ template <class K, class Meets>
         // a triangle: its plane first, and t's edges through it, before t's four planes (one plane
         // is often apart alone; bench/NOTES.md, "Measured choices")
         if (n == 3)
-            if (const int s = rounded_triangle_side(pts, t); s >= 0) return s == 1;
+            if (const certainty s = rounded_triangle_side(pts, t); s != certainty::uncertain) return s == certainty::yes;
         const rounded_located r = rounded_locate(t, pts, n);
-        if (const int d = rounded_verdict(r, n); d >= 0) return d == 1;
+        if (const certainty d = rounded_verdict(r, n); d != certainty::uncertain) return d == certainty::yes;
         // x is convex: the segment between two of its points lies in it
         if (n <= 4) {
             for (int p = 0; p < n; ++p)

@@ -68,8 +68,8 @@ template <class K>
         return arith::cross(arith::lift(L, b) - A, arith::lift(L, c) - A);
     };
     // nd, the normal's components and num are zero for a line in the triangle's plane, by
-    // structure in one plane z = c (arith::structural_sgn; see linear_linear).
-    const sign nd = arith::structural_sgn(k, [=](auto L) { return arith::dot(n_of(L), s.D(L)); });
+    // structure in one plane z = c (hint::structural; see linear_linear).
+    const sign nd = arith::sgn<arith::hint::structural>(k, [=](auto L) { return arith::dot(n_of(L), s.D(L)); });
     if (nd != sign::zero) {
         auto w = [&](point3 u, point3 v) {
             return k.sgn([=](auto L) {
@@ -86,10 +86,10 @@ template <class K>
         return over != -nd; // t <= 1
     }
     for (int axis = 0; axis < 3; ++axis) {
-        const sign na = arith::structural_sgn(k, [=](auto L) { return pick(n_of(L), axis); });
+        const sign na = arith::sgn<arith::hint::structural>(k, [=](auto L) { return pick(n_of(L), axis); });
         if (na == sign::zero) continue;
         // Non-degenerate triangle, line parallel to its plane: coplanar iff the origin is in it.
-        if (!arith::structural_zero(k, [=](auto L) { return arith::dot(n_of(L), arith::lift(L, a) - s.O(L)); })) return false;
+        if (!arith::is_zero<arith::hint::structural>(k, [=](auto L) { return arith::dot(n_of(L), arith::lift(L, a) - s.O(L)); })) return false;
         if (in_projected_triangle(k, s.o, t, axis, na)) return true; // s.o is in the plane
         return linear_linear_2d(k, s, as_linear(segment3{a, b}), axis) || linear_linear_2d(k, s, as_linear(segment3{b, c}), axis) ||
                linear_linear_2d(k, s, as_linear(segment3{c, a}), axis);
@@ -117,9 +117,9 @@ template <class K>
 template <class K>
 [[nodiscard]] constexpr bool point_in_triangle(K& k, point3 x, const triangle3& t) {
     const point3 a = t.a, b = t.b, c = t.c;
-    if (!arith::structural_zero(k, [=](auto L) { return poly::orient3d(L, a, b, c, x); })) return false; // see linear_triangle
+    if (!arith::is_zero<arith::hint::structural>(k, [=](auto L) { return poly::orient3d(L, a, b, c, x); })) return false; // see linear_triangle
     for (int axis = 0; axis < 3; ++axis) {
-        const sign na = arith::structural_sgn(k, [=](auto L) {
+        const sign na = arith::sgn<arith::hint::structural>(k, [=](auto L) {
             const auto A = arith::lift(L, a);
             return pick(arith::cross(arith::lift(L, b) - A, arith::lift(L, c) - A), axis);
         });
@@ -204,19 +204,20 @@ template <class K>
         return k.sgn([=](auto L) { return poly::orient3d(L, a, b, c, d); });
     };
     const point3 P[3] = {p.a, p.b, p.c}, Q[3] = {q.a, q.b, q.c};
-    // The signs of t's vertices against u's plane, into s: 0 when all three lie strictly on one
-    // side, 1 when none is zero (t straddles), 2 at the first zero (the remaining signs unset).
+    // The signs of t's vertices against u's plane, into s: one_side when all three lie strictly on
+    // one side, straddles when none is zero, touches at the first zero (the remaining signs unset).
+    enum class against_plane : unsigned char { one_side, straddles, touches };
     auto sides = [&](const point3* t, const point3* u, sign* s) {
         for (int i = 0; i < 3; ++i)
-            if ((s[i] = orient(u[0], u[1], u[2], t[i])) == sign::zero) return 2;
-        return s[0] == s[1] && s[1] == s[2] ? 0 : 1;
+            if ((s[i] = orient(u[0], u[1], u[2], t[i])) == sign::zero) return against_plane::touches;
+        return s[0] == s[1] && s[1] == s[2] ? against_plane::one_side : against_plane::straddles;
     };
     sign sp[3] = {}, sq[3] = {};
-    const int from_p = sides(P, Q, sp);
-    if (from_p == 0) return false;
-    const int from_q = sides(Q, P, sq);
-    if (from_q == 0) return false;
-    if (from_p == 1 && from_q == 1) {
+    const against_plane from_p = sides(P, Q, sp);
+    if (from_p == against_plane::one_side) return false;
+    const against_plane from_q = sides(Q, P, sq);
+    if (from_q == against_plane::one_side) return false;
+    if (from_p == against_plane::straddles && from_q == against_plane::straddles) {
         // Guigue and Devillers: the lone vertex first, on the positive side of the other plane.
         auto lone = [](const sign* s) { return s[0] == s[1] ? 2 : s[0] == s[2] ? 1 : 0; };
         const int i = lone(sp), j = lone(sq);

@@ -182,7 +182,7 @@ TEST_CASE("arith: zeros by structure are proven exactly, never for a nonzero or 
             return arith::det3(arith::lift(L, p[0]) - o, arith::lift(L, p[1]) - o, arith::lift(L, p[2]) - o);
         };
         arith::filter_kernel k;
-        const sign s = arith::structural_sgn(k, f);
+        const sign s = arith::sgn<arith::hint::structural>(k, f);
         arith::exact_kernel e;
         const sign x = e.sgn(f);
         if (bad) {
@@ -212,7 +212,7 @@ TEST_CASE("arith: zeros by structure are proven exactly, never for a nonzero or 
     static_assert([] {
         arith::filter_kernel k;
         const point3 a{0.1, 0.3, 0.7}, b{0.2, -0.5, 0.7}, d{-0.9, 0.4, 0.7}, o{1.0 / 3.0, 0.6, 0.7};
-        const sign s = arith::structural_sgn(k, [=](auto L) {
+        const sign s = arith::sgn<arith::hint::structural>(k, [=](auto L) {
             const auto O = arith::lift(L, o);
             return arith::det3(arith::lift(L, a) - O, arith::lift(L, b) - O, arith::lift(L, d) - O);
         });

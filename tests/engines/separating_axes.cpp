@@ -20,17 +20,17 @@ TEST_CASE("separating_axes: the box-box fast pass agrees with the general path",
         const auto [a, b] = (i % 2) ? support::obb_case<obb3, obb3>::near(r) : support::obb_case<obb3, obb3>::random(r);
         const auto za = sat::zonotope_of(a), zb = sat::zonotope_of(b);
         arith::filter_kernel f;
-        const int fast = sat::box_box_fast(f, za, zb);
+        const certainty fast = sat::box_box_fast(f, za, zb);
         arith::exact_kernel e;
         const bool general = detail::intersects(e, a, b); // exact: the LP-checked answer of tests/query/obb_obb.cpp
         ++n;
-        if (fast >= 0) {
+        if (fast != certainty::uncertain) {
             ++decided;
-            if ((fast == 1) != general) ++bad;
+            if ((fast == certainty::yes) != general) ++bad;
         }
         arith::approx_kernel k; // in the order the approximate tier takes (its rounding depends on it)
-        const int approx = detail::obb_before(a, b) ? sat::box_box_fast(k, za, zb) : sat::box_box_fast(k, zb, za);
-        if (approx >= 0 && (approx == 1) != intersects<approximate>(a, b)) ++bad;
+        const certainty approx = detail::obb_before(a, b) ? sat::box_box_fast(k, za, zb) : sat::box_box_fast(k, zb, za);
+        if (approx != certainty::uncertain && (approx == certainty::yes) != intersects<approximate>(a, b)) ++bad;
     }
     std::printf("[cases] separating_axes fast pass: %ld cases, %ld decided by the filter pass, %ld differ\n", n, decided, bad);
     CHECK(decided > n / 4);
@@ -55,9 +55,9 @@ TEST_CASE("separating_axes: the bounds from the inputs' maxima decide only what 
         a = scaled(a, k), b = scaled(b, k);
         const bool truth = oracle::lp_intersect(support::lp(a), support::lp(b));
         ++n;
-        if (const int r1 = sat::box_box_bounded_pass(a, b); r1 >= 0) {
+        if (const certainty r1 = sat::box_box_bounded_pass(a, b); r1 != certainty::uncertain) {
             ++decided;
-            if ((r1 == 1) != truth) ++bad;
+            if ((r1 == certainty::yes) != truth) ++bad;
             if (k < -299) ++tiny_decided;
         }
     }
@@ -75,14 +75,14 @@ TEST_CASE("separating_axes: the bounds from the inputs' maxima decide only what 
     while (!found && tries < 100000) {
         ++tries;
         const auto [a, b] = support::obb_case<obb3, obb3>::near(q, false);
-        const int r0 = sat::box_box_pass(arith::lift_filter{}, a, b, [](const auto& v, sat::box_axis_kind) { return v.v > 0 ? 1 : v.v < 0 ? -1 : 0; });
-        const int rf = sat::box_box_pass(arith::lift_filter{}, a, b, [](const auto& v, sat::box_axis_kind) { return arith::proven_sign(v); });
-        if (r0 < 0 || rf >= 0) continue;
+        const certainty r0 = sat::box_box_pass(arith::lift_filter{}, a, b, [](const auto& v, sat::box_axis_kind) { return v.v > 0 ? 1 : v.v < 0 ? -1 : 0; });
+        const certainty rf = sat::box_box_pass(arith::lift_filter{}, a, b, [](const auto& v, sat::box_axis_kind) { return arith::proven_sign(v); });
+        if (r0 == certainty::uncertain || rf != certainty::uncertain) continue;
         const bool truth = oracle::lp_intersect(support::lp(a), support::lp(b));
-        if ((r0 == 1) == truth) continue;
+        if ((r0 == certainty::yes) == truth) continue;
         found = true;
-        const int r1 = sat::box_box_bounded_pass(a, b);
-        CHECK((r1 < 0 || (r1 == 1) == truth));
+        const certainty r1 = sat::box_box_bounded_pass(a, b);
+        CHECK((r1 == certainty::uncertain || (r1 == certainty::yes) == truth));
     }
     std::printf("[cases] separating_axes: the pass without a bound is wrong on near-degenerate case %ld of a fixed sequence\n", tries);
     CHECK(found);

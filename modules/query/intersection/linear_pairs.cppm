@@ -154,7 +154,7 @@ template <class K>
     for (int i = 0; i < 3 && pi < 0; ++i)
         for (int j = i + 1; j < 3 && pi < 0; ++j)
             for (int axis = 0; axis < 3 && pi < 0; ++axis)
-                if (arith::structural_sgn(k, [=](auto L) { return pick(arith::cross(g(L, i), g(L, j)), axis); }) != sign::zero) pi = i, pj = j;
+                if (arith::sgn<arith::hint::structural>(k, [=](auto L) { return pick(arith::cross(g(L, i), g(L, j)), axis); }) != sign::zero) pi = i, pj = j;
     if (pi >= 0) {
         auto plane = family([=](auto L, int) { return arith::cross(g(L, pi), g(L, pj)); });
         auto edges = family([=](auto L, int l) { return arith::cross(arith::cross(g(L, pi), g(L, pj)), g(L, l)); });
@@ -163,7 +163,7 @@ template <class K>
     int gi = -1; // a nonzero generator
     for (int i = 0; i < 3 && gi < 0; ++i)
         for (int axis = 0; axis < 3 && gi < 0; ++axis)
-            if (arith::structural_sgn(k, [=](auto L) { return pick(g(L, i), axis); }) != sign::zero) gi = i;
+            if (arith::sgn<arith::hint::structural>(k, [=](auto L) { return pick(g(L, i), axis); }) != sign::zero) gi = i;
     if (gi >= 0) {
         auto line = family([=](auto L, int axis) { return arith::cross(g(L, gi), arith::lift(L, unit(axis))); });
         auto along = family([=](auto L, int) { return g(L, gi); });
@@ -308,7 +308,7 @@ constexpr void barycentrics(K& k, triangle_hit<arith::value_t<K>>& h, const cont
     }
     int axis = -1;
     for (int i = 0; i < 3 && axis < 0; ++i)
-        if (arith::structural_sgn(k, [=](auto L) {
+        if (arith::sgn<arith::hint::structural>(k, [=](auto L) {
                 const auto P = arith::lift(L, a);
                 return pick(arith::cross(arith::lift(L, b) - P, arith::lift(L, c) - P), i);
             }) != sign::zero)
@@ -378,7 +378,7 @@ template <class K, linear_shape S>
     auto hit = [&](const contact_end& e) { return polygon_hit<arith::value_t<K>>{end_value(k, e, s), end_point(k, e, s)}; };
     if (s.is_point()) return hit(domain_end(domain_low(s)));
     const point3 a = g.vertices[g.plane_vertices[0]], b = g.vertices[g.plane_vertices[1]], c = g.vertices[g.plane_vertices[2]];
-    const sign nd = arith::structural_sgn(k, [=](auto L) { return arith::dot(polygon3d::normal(L, g), s.D(L)); });
+    const sign nd = arith::sgn<arith::hint::structural>(k, [=](auto L) { return arith::dot(polygon3d::normal(L, g), s.D(L)); });
     if (nd != sign::zero) return hit(contact_end{end_kind::plane_crossing, 0.0, a, b, c, 2, nd});
     if (s.bounded_below() && intersects(k, s.o, g)) return hit(domain_end(0.0));
     std::optional<contact_end> first;

@@ -61,7 +61,7 @@ template <class K>
     if (arith::rounded_stage_applies<K>()) {
         constexpr int edges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
         constexpr int faces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
-        if (const int r = box_triangle::rounded_hull_axes_decide(b, v, edges, faces); r >= 0) return r == 1;
+        if (const certainty r = box_triangle::rounded_hull_axes_decide(b, v, edges, faces); r != certainty::uncertain) return r == certainty::yes;
     }
     // The box's face normals first: coordinate comparisons, exact in every tier.
     auto at = [](const point3& p, int i) { return i == 0 ? p.x : (i == 1 ? p.y : p.z); };

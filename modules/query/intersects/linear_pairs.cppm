@@ -79,9 +79,9 @@ template <class K>
         return arith::compare(k, p.x, o.x) == sign::zero && arith::compare(k, p.y, o.y) == sign::zero &&
                arith::compare(k, p.z, o.z) == sign::zero;
     // component i of (p - o) x d: (p - o)_j d_l - (p - o)_l d_j, (i, j, l) cyclic; a line and a
-    // point in one plane z = c make the first two zero by structure (arith::structural_zero)
-    if (!arith::structural_zero(k, [=](auto L) { return (L(p.y) - L(o.y)) * L(d.z) - (L(p.z) - L(o.z)) * L(d.y); })) return false;
-    if (!arith::structural_zero(k, [=](auto L) { return (L(p.z) - L(o.z)) * L(d.x) - (L(p.x) - L(o.x)) * L(d.z); })) return false;
+    // point in one plane z = c make the first two zero by structure (hint::structural)
+    if (!arith::is_zero<arith::hint::structural>(k, [=](auto L) { return (L(p.y) - L(o.y)) * L(d.z) - (L(p.z) - L(o.z)) * L(d.y); })) return false;
+    if (!arith::is_zero<arith::hint::structural>(k, [=](auto L) { return (L(p.z) - L(o.z)) * L(d.x) - (L(p.x) - L(o.x)) * L(d.z); })) return false;
     return arith::is_zero(k, [=](auto L) { return (L(p.x) - L(o.x)) * L(d.y) - (L(p.y) - L(o.y)) * L(d.x); });
 }
 
@@ -109,8 +109,8 @@ template <class K>
     if (!finite(s.a) || !finite(s.b) || !finite(t.a) || !finite(t.b)) return false; // no shape
     if (boxes_apart(k, s, t)) return false; // exact, and cheap on the commonest no
     // In the filter pass an unproven sign (an end point on the other's line, often exactly) is
-    // settled where it arises (arith::settled) rather than by rerunning the pair.
-    auto orient = [&](point2 p, point2 q, point2 r) { return arith::settled(k, [=](auto L) { return poly::orient2d(L, p, q, r); }); };
+    // settled where it arises (hint::often_zero) rather than by rerunning the pair.
+    auto orient = [&](point2 p, point2 q, point2 r) { return arith::sgn<arith::hint::often_zero>(k, [=](auto L) { return poly::orient2d(L, p, q, r); }); };
     // r, on the line p q, lies on the closed segment p q iff it lies in its bounding box
     auto within = [](point2 p, point2 q, point2 r) {
         return (p.x <= q.x ? p.x <= r.x && r.x <= q.x : q.x <= r.x && r.x <= p.x) &&

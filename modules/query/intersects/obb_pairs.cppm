@@ -67,7 +67,7 @@ template <class K>
     const bool before = obb_before(a, b);
     const obb3& p = before ? a : b;
     const obb3& q = before ? b : a;
-    if (const int f = sat::box_box_fast(k, p, q); f >= 0) return f == 1; // the boxes read in place
+    if (const certainty f = sat::box_box_fast(k, p, q); f != certainty::uncertain) return f == certainty::yes; // the boxes read in place
     return sat::zonotopes_intersect_general(k, sat::zonotope_of(p), sat::zonotope_of(q));
 }
 

@@ -32,7 +32,7 @@ template <class K>
     if (!finite(l) || !finite(t)) return false;
     // In a filter pass, the rounded edge and face values first (tetra::rounded_line_meets).
     if (arith::rounded_stage_applies<K>())
-        if (const int m = tetra::rounded_line_meets(t, l.origin, l.direction, false); m >= 0) return m == 1;
+        if (const certainty m = tetra::rounded_line_meets(t, l.origin, l.direction, false); m != certainty::uncertain) return m == certainty::yes;
     const point3 pts[1] = {l.origin};
     return tetra::tetrahedron_meets(k, t, [&](const triangle3& face) { return intersects(k, l, face); }, pts, 1, false);
 }
@@ -71,7 +71,7 @@ template <class K>
     if (boxes_apart(k, r, t)) return false; // exact, and cheap on the commonest no
     // In a filter pass, the rounded edge and face values first (tetra::rounded_line_meets).
     if (arith::rounded_stage_applies<K>())
-        if (const int m = tetra::rounded_line_meets(t, r.origin, r.direction, true); m >= 0) return m == 1;
+        if (const certainty m = tetra::rounded_line_meets(t, r.origin, r.direction, true); m != certainty::uncertain) return m == certainty::yes;
     const point3 pts[1] = {r.origin};
     return tetra::tetrahedron_meets(k, t, [&](const triangle3& face) { return intersects(k, r, face); }, pts, 1, false);
 }
@@ -89,9 +89,9 @@ template <class K>
     if (arith::rounded_stage_applies<K>()) { // the rounded face planes of each, first
         // t's vertices against s's planes decide alone often enough that t's planes wait for them
         const tetra::rounded_located in_s = tetra::rounded_locate(s, vt, 4);
-        if (const int d = tetra::rounded_verdict(in_s, 4); d >= 0) return d == 1;
+        if (const certainty d = tetra::rounded_verdict(in_s, 4); d != certainty::uncertain) return d == certainty::yes;
         const tetra::rounded_located in_t = tetra::rounded_locate(t, vs, 4);
-        if (const int d = tetra::rounded_verdict(in_t, 4); d >= 0) return d == 1;
+        if (const certainty d = tetra::rounded_verdict(in_t, 4); d != certainty::uncertain) return d == certainty::yes;
         for (int p = 0; p < 4; ++p) // an edge of one clearly through a face of the other
             for (int q = p + 1; q < 4; ++q)
                 if (tetra::rounded_crossing(in_s, p, q) || tetra::rounded_crossing(in_t, p, q)) return true;

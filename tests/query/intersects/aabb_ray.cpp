@@ -166,15 +166,15 @@ TEST_CASE("aabb_ray: the rounded slab parameters never decide against the signs"
         if (r.integer(0, 99) == 0) o.y = r.coin() ? std::nan("") : (r.coin() ? 1.0 : -1.0) * INFINITY;
         const point3 e{o.x + d.x, o.y + d.y, o.z + d.z};
         auto check = [&]<detail::slab_extent X>(std::integral_constant<detail::slab_extent, X>) {
-            const int fast = detail::slab_parameters_decide<X>(b, o, d, e);
+            const certainty fast = detail::slab_parameters_decide<X>(b, o, d, e);
             arith::exact_kernel k;
             const bool want = detail::slab_signs<X>(k, b, o, d, e) && k.valid;
             ++n;
             if (!near) ++random_n;
-            if (fast < 0) return;
+            if (fast == certainty::uncertain) return;
             ++decided;
             if (!near) ++random_decided;
-            if ((fast == 1) != want) ++wrong;
+            if ((fast == certainty::yes) != want) ++wrong;
         };
         check(std::integral_constant<detail::slab_extent, detail::slab_extent::ray>{});
         check(std::integral_constant<detail::slab_extent, detail::slab_extent::segment>{});

@@ -64,17 +64,17 @@ TEST_CASE("aabb_tetrahedron: the rounded axes never decide against the oracle", 
         const bool finite_input = r.integer(0, 199) != 0;
         if (!finite_input) t.c.y = r.coin() ? std::nan("") : (r.coin() ? 1.0 : -1.0) * INFINITY;
         const point3 v[4] = {t.a, t.b, t.c, t.d};
-        const int fast = detail::box_triangle::rounded_hull_axes_decide(b, v, edges, faces);
+        const certainty fast = detail::box_triangle::rounded_hull_axes_decide(b, v, edges, faces);
         ++n;
         one_n += kind == 1;
-        if (fast < 0) continue;
+        if (fast == certainty::uncertain) continue;
         ++decided;
         one_decided += kind == 1;
         if (!finite_input) { // no shape: never a yes (the exact tier says no)
-            wrong += fast == 1;
+            wrong += fast == certainty::yes;
             continue;
         }
-        if ((fast == 1) != support::flat_truth(b, t)) {
+        if ((fast == certainty::yes) != support::flat_truth(b, t)) {
             if (++wrong <= 5) std::printf("  rounded axes wrong: %s %s\n", support::shape_str(b).c_str(), support::shape_str(t).c_str());
         }
     }

@@ -190,17 +190,17 @@ TEST_CASE("aabb_triangle: the rounded axes never decide against the oracle", "[a
         }();
         if (r.integer(0, 199) == 0) t.b.z = r.coin() ? std::nan("") : (r.coin() ? 1.0 : -1.0) * INFINITY;
         const point3 v[3] = {t.a, t.b, t.c};
-        const int fast = detail::box_triangle::rounded_axes_decide(b, v);
+        const certainty fast = detail::box_triangle::rounded_axes_decide(b, v);
         ++n;
         one_n += kind == 1;
-        if (fast < 0) continue;
+        if (fast == certainty::uncertain) continue;
         ++decided;
         one_decided += kind == 1;
         if (!(std::isfinite(t.b.z))) { // no shape: never a yes (the exact tier says no)
-            wrong += fast == 1;
+            wrong += fast == certainty::yes;
             continue;
         }
-        if ((fast == 1) != (skip(b, t) ? collinear_truth(b, t) : truth(b, t))) {
+        if ((fast == certainty::yes) != (skip(b, t) ? collinear_truth(b, t) : truth(b, t))) {
             if (++wrong <= 5) std::printf("  rounded axes wrong: %s\n", describe(b, t).c_str());
         }
     }

@@ -63,14 +63,14 @@ TEST_CASE("line_tetrahedron: the rounded stage never claims what the oracle deni
                                : grid();
         };
         auto [l, t] = ray ? drawn(static_cast<ray3*>(nullptr)) : drawn(static_cast<line3*>(nullptr));
-        const int got = detail::tetra::rounded_line_meets(t, l.origin, l.direction, ray);
+        const certainty got = detail::tetra::rounded_line_meets(t, l.origin, l.direction, ray);
         ++n;
         one_n += kind == 1;
-        if (got < 0) continue;
+        if (got == certainty::uncertain) continue;
         ++claimed;
         one_claimed += kind == 1;
         const bool truth = ray ? support::flat_truth(ray3{l.origin, l.direction}, t) : support::flat_truth(l, t);
-        if ((got == 1) != truth && ++wrong <= 5)
+        if ((got == certainty::yes) != truth && ++wrong <= 5)
             std::printf("  rounded %s stage wrong: %s %s\n", ray ? "ray" : "line", support::shape_str(l).c_str(), support::shape_str(t).c_str());
     }
     std::printf("[cases] tetrahedron rounded line stage: %ld cases, %ld claimed (%ld of %ld random at scale 1), wrong %ld\n", n, claimed,

@@ -89,11 +89,11 @@ TEST_CASE("point_polygon: the rounded crossing stage never claims what the oracl
         if (!detail::polygon3d::usable(k, g.g) || detail::polygon3d::plane_contact(k, g.g, x, w) != detail::polygon3d::contact::crosses) return;
         ++n;
         one_n += kind == 1;
-        const int got = detail::polygon3d::rounded_crossing(g.g, x);
-        if (got < 0) return;
+        const certainty got = detail::polygon3d::rounded_crossing(g.g, x);
+        if (got == certainty::uncertain) return;
         ++claimed;
         one_claimed += kind == 1;
-        if ((got == 1) != support::polygon3_truth(g.g, *b) && ++wrong <= 5)
+        if ((got == certainty::yes) != support::polygon3_truth(g.g, *b) && ++wrong <= 5)
             std::printf("  rounded crossing stage wrong: %s\n", support::shape_str(*b).c_str());
     };
     for (long i = 0; i < support::cases(30000); ++i) {

@@ -60,12 +60,12 @@ TEST_CASE("tetrahedron_triangle: the rounded triangle-side stage never claims wh
                             : kind == 2 ? support::flat_near<tetrahedron3, triangle3>(r)
                                         : grid();
         const point3 fv[3] = {f.a, f.b, f.c};
-        const int got = detail::tetra::rounded_triangle_side(fv, t);
+        const certainty got = detail::tetra::rounded_triangle_side(fv, t);
         ++n;
-        if (got < 0) continue;
+        if (got == certainty::uncertain) continue;
         ++claimed;
-        met += got == 1;
-        if ((got == 1) != support::flat_truth(t, f) && ++wrong <= 5)
+        met += got == certainty::yes;
+        if ((got == certainty::yes) != support::flat_truth(t, f) && ++wrong <= 5)
             std::printf("  rounded triangle side wrong: %s %s\n", support::shape_str(t).c_str(), support::shape_str(f).c_str());
     }
     // An edge of the tetrahedron through the midpoint of an edge of the triangle, its far end
@@ -83,12 +83,12 @@ TEST_CASE("tetrahedron_triangle: the rounded triangle-side stage never claims wh
         const tetrahedron3 t{point3{m.x - u.x, m.y - u.y, m.z - u.z}, q, d, e};
         const triangle3 f{a, b, c};
         const point3 fv[3] = {f.a, f.b, f.c};
-        const int got = detail::tetra::rounded_triangle_side(fv, t);
+        const certainty got = detail::tetra::rounded_triangle_side(fv, t);
         ++n, ++beside;
-        if (got < 0) continue;
+        if (got == certainty::uncertain) continue;
         ++claimed;
-        met += got == 1;
-        if ((got == 1) != support::flat_truth(t, f) && ++wrong <= 5)
+        met += got == certainty::yes;
+        if ((got == certainty::yes) != support::flat_truth(t, f) && ++wrong <= 5)
             std::printf("  rounded triangle side wrong beside an edge: %s %s\n", support::shape_str(t).c_str(), support::shape_str(f).c_str());
     }
     std::printf("[cases] tetrahedron rounded triangle side: %ld cases (%ld beside an edge), %ld claimed (%ld meets), wrong %ld\n", n, beside,
