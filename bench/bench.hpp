@@ -52,8 +52,16 @@ inline aabb3 box(point3 a, point3 b) { // the box spanned by two corners in any 
     return {{std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)}, {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)}};
 }
 inline point3 np(double x, double y, double z) { return {nudge(x), nudge(y), nudge(z)}; }
-inline void arr(point3 p, double* o) { o[0] = p.x; o[1] = p.y; o[2] = p.z; }
-inline void arr(vec3 p, double* o) { o[0] = p.x; o[1] = p.y; o[2] = p.z; }
+inline void arr(point3 p, double* o) {
+    o[0] = p.x;
+    o[1] = p.y;
+    o[2] = p.z;
+}
+inline void arr(vec3 p, double* o) {
+    o[0] = p.x;
+    o[1] = p.y;
+    o[2] = p.z;
+}
 
 // The seeded source of one case set. Every set is at scale 1 near the origin (the tests cover
 // 2^-500..2^500 and far translations), so that sets of different families measure the same thing.
@@ -99,12 +107,27 @@ void reg(const std::string& name, const std::vector<Case>& cases, const std::vec
     });
 }
 
-struct rt { ray3 r; triangle3 t; };
-struct ab { aabb3 b; ray3 r; };
-struct o3 { point3 a, b, c, d; };
-struct rs { ray3 r; sphere3 s; };
-struct ss { sphere3 a, b; };
-struct bb { aabb3 a, b; };
+struct rt {
+    ray3 r;
+    triangle3 t;
+};
+struct ab {
+    aabb3 b;
+    ray3 r;
+};
+struct o3 {
+    point3 a, b, c, d;
+};
+struct rs {
+    ray3 r;
+    sphere3 s;
+};
+struct ss {
+    sphere3 a, b;
+};
+struct bb {
+    aabb3 a, b;
+};
 
 inline std::vector<rt> ray_triangle_set(bool near) {
     std::vector<rt> v;
@@ -122,7 +145,9 @@ inline std::vector<rt> ray_triangle_set(bool near) {
             v.push_back({ray3{np(o.x, o.y, o.z), d}, triangle3{np(a.x, a.y, a.z), np(b.x, b.y, b.z), np(c.x, c.y, c.z)}});
         }
         double a_[3], b_[3], c_[3];
-        arr(v.back().t.a, a_); arr(v.back().t.b, b_); arr(v.back().t.c, c_);
+        arr(v.back().t.a, a_);
+        arr(v.back().t.b, b_);
+        arr(v.back().t.c, c_);
         if (oracle::triangle_is_degenerate(a_, b_, c_) || v.back().r.direction == vec3{0, 0, 0}) v.pop_back();
     }
     return v;
@@ -138,7 +163,8 @@ inline std::vector<ab> aabb_ray_set(bool near) {
             const point3 target{irand(0, 1) ? lo.x : hi.x, irand(0, 1) ? lo.y : hi.y, irand(0, 2) ? lo.z : (lo.z + hi.z) / 2};
             const point3 o{small(), small(), small()};
             v.push_back({aabb3{np(lo.x, lo.y, lo.z), np(hi.x, hi.y, hi.z)}, ray3{np(o.x, o.y, o.z), target - o}});
-            if (v.back().b.min.x > v.back().b.max.x || v.back().b.min.y > v.back().b.max.y || v.back().b.min.z > v.back().b.max.z) v.pop_back();
+            if (v.back().b.min.x > v.back().b.max.x || v.back().b.min.y > v.back().b.max.y || v.back().b.min.z > v.back().b.max.z)
+                v.pop_back();
         }
         if (!v.empty() && v.back().r.direction == vec3{0, 0, 0}) v.pop_back();
     }
@@ -152,7 +178,8 @@ inline std::vector<o3> orient3d_set(bool near) {
         } else { // coplanar by construction, then nudged
             const point3 a{small(), small(), small()}, b{small(), small(), small()}, c{small(), small(), small()};
             const double s = irand(-4, 4) * 0.5, t = irand(-4, 4) * 0.5;
-            const point3 d{a.x + s * (b.x - a.x) + t * (c.x - a.x), a.y + s * (b.y - a.y) + t * (c.y - a.y), a.z + s * (b.z - a.z) + t * (c.z - a.z)};
+            const point3 d{a.x + s * (b.x - a.x) + t * (c.x - a.x), a.y + s * (b.y - a.y) + t * (c.y - a.y),
+                           a.z + s * (b.z - a.z) + t * (c.z - a.z)};
             v.push_back({np(a.x * 0.1, a.y * 0.1, a.z * 0.1), np(b.x * 0.1, b.y * 0.1, b.z * 0.1), np(c.x * 0.1, c.y * 0.1, c.z * 0.1),
                          np(d.x * 0.1, d.y * 0.1, d.z * 0.1)});
         }
@@ -236,9 +263,8 @@ template <class A, class B>
     tiers(pair, dist, cs, truth, [](auto tier, const std::pair<A, B>& c) { return intersects<decltype(tier)>(c.first, c.second); });
     std::vector<bool> t;
     for (const auto& c : cs) t.push_back(truth(c));
-    reg("cgal_epick/intersects/" + pair + "/" + dist, cs, t, check::approximate, [](const std::pair<A, B>& c) {
-        return oracle::flat_intersect_epick(support::to_flat(c.first), support::to_flat(c.second));
-    });
+    reg("cgal_epick/intersects/" + pair + "/" + dist, cs, t, check::approximate,
+        [](const std::pair<A, B>& c) { return oracle::flat_intersect_epick(support::to_flat(c.first), support::to_flat(c.second)); });
 }
 template <class A, class B>
 void flat_tiers(const std::string& pair, bool near) {
@@ -343,7 +369,8 @@ template <int K, class B>
     while (cs.size() < set_size)
         if (const auto c = near ? support::kdop_near<K, B>(r) : support::kdop_random<K, B>(r)) cs.push_back(*c);
     auto truth = [](const std::pair<kdop<K>, B>& c) { return oracle::lp_intersect(support::lp(c.first), support::lp(c.second)); };
-    tiers(pair + "_" + std::to_string(K), dist, cs, truth, [](auto tier, const std::pair<kdop<K>, B>& c) { return intersects<decltype(tier)>(c.first, c.second); });
+    tiers(pair + "_" + std::to_string(K), dist, cs, truth,
+          [](auto tier, const std::pair<kdop<K>, B>& c) { return intersects<decltype(tier)>(c.first, c.second); });
 }
 // A half-space pair (tests/support/polyhedron_cases.hpp: supporting half-spaces of a cloud, or a
 // camera frustum; near-degenerate: integer normals through boundary points), the LP as truth.

@@ -35,7 +35,9 @@ int main(int argc, char** argv) {
             meshes.push_back(std::string(INCIDENCE_SOURCE_DIR) + "/build/data/meshes/" + m + ".off");
     std::filesystem::create_directories(out);
     std::string md = "# Bounding volumes on real meshes\n\nVolume and area are relative to the convex hull (CGAL convex_hull_3). "
-                     "Build: median of " + std::to_string(reps) + " runs. Test: one overlap test between two volumes of the kind "
+                     "Build: median of " +
+                     std::to_string(reps) +
+                     " runs. Test: one overlap test between two volumes of the kind "
                      "(exact tier for boxes and spheres, slab overlap for k-DOPs). Every volume of ours is checked to contain every "
                      "vertex exactly.\n";
     audit::json j;
@@ -52,9 +54,10 @@ int main(int argc, char** argv) {
         const auto rep = audit::measure_bounding_volumes(std::span<const incidence::point3>(m.vertices), reps);
         const std::string name = std::filesystem::path(file).stem().string();
         char buf[512];
-        std::snprintf(buf, sizeof buf, "\n## %s (%zu vertices; hull: %lu vertices, built by CGAL in %.2f ms)\n\n"
-                                       "| volume | build ms | volume / hull | area / hull | test ns | contains all | hull vertices |\n"
-                                       "|---|---:|---:|---:|---:|---|---:|\n",
+        std::snprintf(buf, sizeof buf,
+                      "\n## %s (%zu vertices; hull: %lu vertices, built by CGAL in %.2f ms)\n\n"
+                      "| volume | build ms | volume / hull | area / hull | test ns | contains all | hull vertices |\n"
+                      "|---|---:|---:|---:|---:|---|---:|\n",
                       name.c_str(), m.vertices.size(), rep.hull_vertices, rep.hull_ms);
         md += buf;
         j.object().kv("name", name).kv("vertices", m.vertices.size()).kv("hull_vertices", long(rep.hull_vertices));
@@ -67,7 +70,13 @@ int main(int argc, char** argv) {
             md += buf;
             if (r.ours && !r.contains_all) ++bad;
             j.object().kv("kind", r.kind).kv("source", r.source).kv("ours", r.ours).kv("build_ms", r.build_ms);
-            j.kv("vertices", long(r.vertices)).kv("failed", r.failed).kv("volume_ratio", r.volume_ratio).kv("area_ratio", r.area_ratio).kv("test_ns", r.test_ns).kv("contains_all", r.contains_all).end_object();
+            j.kv("vertices", long(r.vertices))
+                .kv("failed", r.failed)
+                .kv("volume_ratio", r.volume_ratio)
+                .kv("area_ratio", r.area_ratio)
+                .kv("test_ns", r.test_ns)
+                .kv("contains_all", r.contains_all)
+                .end_object();
         }
         j.end_array().end_object();
         md += "\nAdvice: " + rep.advice + "\n";
@@ -86,19 +95,30 @@ int main(int argc, char** argv) {
         const auto q = oracle::qhull_hull(xyz.data(), pts.size());
         char line[300];
         std::snprintf(line, sizeof line, "| %s | %zu | %d, %zu | %s |\n", what, pts.size(), h ? h.value().dimension : -1,
-                      h ? h.value().vertices.size() : 0, q.error ? "error (precision or flat input)" : (std::to_string(q.vertices) + " vertices").c_str());
+                      h ? h.value().vertices.size() : 0,
+                      q.error ? "error (precision or flat input)" : (std::to_string(q.vertices) + " vertices").c_str());
         md += line;
         j.object().kv("input", what).kv("points", pts.size()).kv("dimension", h ? h.value().dimension : -1);
-        j.kv("vertices", h ? h.value().vertices.size() : std::size_t{0}).kv("qhull_error", q.error).kv("qhull_vertices", long(q.vertices)).end_object();
+        j.kv("vertices", h ? h.value().vertices.size() : std::size_t{0})
+            .kv("qhull_error", q.error)
+            .kv("qhull_vertices", long(q.vertices))
+            .end_object();
     };
     std::vector<incidence::point3> pts;
-    for (int i = 0; i < 1000; ++i) { const double x = small(g), y = small(g); pts.push_back({x, y, x - 2 * y}); }
+    for (int i = 0; i < 1000; ++i) {
+        const double x = small(g), y = small(g);
+        pts.push_back({x, y, x - 2 * y});
+    }
     add("coplanar (z = x - 2y, integers)", pts);
     pts.clear();
-    for (int i = 0; i < 1000; ++i) { const double t = small(g); pts.push_back({t, 2 * t, -t}); }
+    for (int i = 0; i < 1000; ++i) {
+        const double t = small(g);
+        pts.push_back({t, 2 * t, -t});
+    }
     add("collinear", pts);
     pts.clear();
-    for (int i = 0; i < 1000; ++i) pts.push_back({std::nextafter(1.0, 1.0 + small(g)), std::nextafter(2.0, 2.0 + small(g)), std::nextafter(3.0, 3.0 + small(g))});
+    for (int i = 0; i < 1000; ++i)
+        pts.push_back({std::nextafter(1.0, 1.0 + small(g)), std::nextafter(2.0, 2.0 + small(g)), std::nextafter(3.0, 3.0 + small(g))});
     add("1000 points within 1 ulp of (1, 2, 3)", pts);
     pts.clear();
     for (int i = 0; i < 1000; ++i) pts.push_back({double(small(g) % 3), double(small(g) % 3), double(small(g) % 3)});

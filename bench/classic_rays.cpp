@@ -35,7 +35,11 @@ void register_classic_rays(bool near) {
         const auto cs = ray_triangle_set(near);
         auto truth = [](const rt& c) {
             double o[3], d[3], a[3], b[3], cc[3];
-            arr(c.r.origin, o); arr(c.r.direction, d); arr(c.t.a, a); arr(c.t.b, b); arr(c.t.c, cc);
+            arr(c.r.origin, o);
+            arr(c.r.direction, d);
+            arr(c.t.a, a);
+            arr(c.t.b, b);
+            arr(c.t.c, cc);
             return oracle::ray_triangle(o, d, a, b, cc);
         };
         tiers("ray_triangle", dist, cs, truth, [](auto tier, const rt& c) { return intersects<decltype(tier)>(c.r, c.t); });
@@ -52,7 +56,11 @@ void register_classic_rays(bool near) {
         // Epick builds Ray_3(point, vector) by rounding point + vector: not exact for such rays.
         reg("cgal_epick/intersects/ray_triangle/" + dist, cs, t, check::approximate, [](const rt& c) {
             double o[3], d[3], a[3], b[3], cc[3];
-            arr(c.r.origin, o); arr(c.r.direction, d); arr(c.t.a, a); arr(c.t.b, b); arr(c.t.c, cc);
+            arr(c.r.origin, o);
+            arr(c.r.direction, d);
+            arr(c.t.a, a);
+            arr(c.t.b, b);
+            arr(c.t.c, cc);
             return oracle::ray_triangle_epick(o, d, a, b, cc);
         });
         reg("cgal_epeck/intersects/ray_triangle/" + dist, cs, t, check::exact, truth);
@@ -61,7 +69,10 @@ void register_classic_rays(bool near) {
         const auto cs = aabb_ray_set(near);
         auto truth = [](const ab& c) {
             double o[3], d[3], mn[3], mx[3];
-            arr(c.r.origin, o); arr(c.r.direction, d); arr(c.b.min, mn); arr(c.b.max, mx);
+            arr(c.r.origin, o);
+            arr(c.r.direction, d);
+            arr(c.b.min, mn);
+            arr(c.b.max, mx);
             return oracle::ray_box(o, d, mn, mx);
         };
         tiers("aabb_ray", dist, cs, truth, [](auto tier, const ab& c) { return intersects<decltype(tier)>(c.b, c.r); });
@@ -74,7 +85,10 @@ void register_classic_rays(bool near) {
         });
         reg("cgal_epick/intersects/aabb_ray/" + dist, cs, t, check::approximate, [](const ab& c) {
             double o[3], d[3], mn[3], mx[3];
-            arr(c.r.origin, o); arr(c.r.direction, d); arr(c.b.min, mn); arr(c.b.max, mx);
+            arr(c.r.origin, o);
+            arr(c.r.direction, d);
+            arr(c.b.min, mn);
+            arr(c.b.max, mx);
             return oracle::ray_box_epick(o, d, mn, mx);
         });
         reg("cgal_epeck/intersects/aabb_ray/" + dist, cs, t, check::exact, truth);
@@ -85,18 +99,25 @@ void register_classic_rays(bool near) {
         std::vector<int> sgn;
         for (const auto& c : cs) {
             double a[3], b[3], cc[3], d[3];
-            arr(c.a, a); arr(c.b, b); arr(c.c, cc); arr(c.d, d);
+            arr(c.a, a);
+            arr(c.b, b);
+            arr(c.c, cc);
+            arr(c.d, d);
             sgn.push_back(oracle::orient3d(a, b, cc, d));
             t.push_back(sgn.back() > 0);
         }
-        reg("exact/orient3d/points/" + dist, cs, t, check::exact, [](const o3& c) { return orient3d(c.a, c.b, c.c, c.d) == sign::positive; });
+        reg("exact/orient3d/points/" + dist, cs, t, check::exact,
+            [](const o3& c) { return orient3d(c.a, c.b, c.c, c.d) == sign::positive; });
         reg("approximate/orient3d/points/" + dist, cs, t, check::approximate,
             [](const o3& c) { return orient3d<approximate>(c.a, c.b, c.c, c.d) == sign::positive; });
         reg("static_filter_double/orient3d/points/" + dist, cs, t, check::exact,
             [](const o3& c) { return orient3d_static_filter(c.a, c.b, c.c, c.d) == sign::positive; });
         reg("cgal_epick/orient3d/points/" + dist, cs, t, check::exact, [](const o3& c) {
             double a[3], b[3], cc[3], d[3];
-            arr(c.a, a); arr(c.b, b); arr(c.c, cc); arr(c.d, d);
+            arr(c.a, a);
+            arr(c.b, b);
+            arr(c.c, cc);
+            arr(c.d, d);
             return oracle::orient3d_epick(a, b, cc, d) > 0;
         });
     }
@@ -104,20 +125,24 @@ void register_classic_rays(bool near) {
         const auto cs = ray_sphere_set(near);
         auto truth = [](const rs& c) {
             double o[3], d[3], cc[3];
-            arr(c.r.origin, o); arr(c.r.direction, d); arr(c.s.center, cc);
+            arr(c.r.origin, o);
+            arr(c.r.direction, d);
+            arr(c.s.center, cc);
             return oracle::ray_ball(o, d, cc, c.s.radius);
         };
         tiers("ray_sphere", dist, cs, truth, [](auto tier, const rs& c) { return intersects<decltype(tier)>(c.r, c.s); });
         std::vector<bool> t;
         for (const auto& c : cs) t.push_back(truth(c));
-        reg("algebraic/intersects/ray_sphere/" + dist, cs, t, check::approximate, [](const rs& c) { return method::ray_sphere_algebraic(c.r, c.s).has_value(); });
+        reg("algebraic/intersects/ray_sphere/" + dist, cs, t, check::approximate,
+            [](const rs& c) { return method::ray_sphere_algebraic(c.r, c.s).has_value(); });
         reg("cgal_epeck/intersects/ray_sphere/" + dist, cs, t, check::exact, truth);
     }
     {
         const auto cs = sphere_sphere_set(near);
         auto truth = [](const ss& c) {
             double a[3], b[3];
-            arr(c.a.center, a); arr(c.b.center, b);
+            arr(c.a.center, a);
+            arr(c.b.center, b);
             return oracle::ball_ball(a, c.a.radius, b, c.b.radius);
         };
         tiers("sphere_sphere", dist, cs, truth, [](auto tier, const ss& c) { return intersects<decltype(tier)>(c.a, c.b); });
@@ -125,7 +150,10 @@ void register_classic_rays(bool near) {
     {
         // point x sphere: random points and balls; near: points on the sphere (3-4-5 and
         // 1-2-2 triples scaled), nudged by up to 2 ulps.
-        struct ps { point3 p; sphere3 s; };
+        struct ps {
+            point3 p;
+            sphere3 s;
+        };
         std::vector<ps> cs;
         while (cs.size() < set_size) {
             if (!near) cs.push_back({rp(), sphere3{rp(), uni(0, 1)}});
@@ -138,13 +166,17 @@ void register_classic_rays(bool near) {
         }
         auto truth = [](const ps& c) {
             double p[3], cc[3];
-            arr(c.p, p); arr(c.s.center, cc);
+            arr(c.p, p);
+            arr(c.s.center, cc);
             return oracle::point_in_ball(p, cc, c.s.radius);
         };
         tiers("point_sphere", dist, cs, truth, [](auto tier, const ps& c) { return intersects<decltype(tier)>(c.p, c.s); });
     }
     {
-        struct bp { aabb3 b; point3 p; };
+        struct bp {
+            aabb3 b;
+            point3 p;
+        };
         std::vector<bp> cs;
         while (cs.size() < set_size) {
             const aabb3 b = box(rp(), rp());
@@ -152,17 +184,22 @@ void register_classic_rays(bool near) {
         }
         auto truth = [](const bp& c) {
             double p[3], mn[3], mx[3];
-            arr(c.p, p); arr(c.b.min, mn); arr(c.b.max, mx);
+            arr(c.p, p);
+            arr(c.b.min, mn);
+            arr(c.b.max, mx);
             return oracle::point_in_box(p, mn, mx);
         };
         tiers("aabb_point", dist, cs, truth, [](auto tier, const bp& c) { return intersects<decltype(tier)>(c.b, c.p); });
         // the squared distance on the same cases, every tier (a distance is never negative: the
         // answer the timing loop checks; its values are checked in tests/query/distance/box_point.cpp)
-        tiers("aabb_point", dist, cs, [](const bp&) { return true; }, [](auto tier, const bp& c) {
-            const auto d = squared_distance<decltype(tier)>(c.b, c.p);
-            if constexpr (std::is_same_v<std::decay_t<decltype(d)>, double>) return d >= 0.0;
-            else return d.hi >= 0.0;
-        }, "distance");
+        tiers(
+            "aabb_point", dist, cs, [](const bp&) { return true; },
+            [](auto tier, const bp& c) {
+                const auto d = squared_distance<decltype(tier)>(c.b, c.p);
+                if constexpr (std::is_same_v<std::decay_t<decltype(d)>, double>) return d >= 0.0;
+                else return d.hi >= 0.0;
+            },
+            "distance");
     }
     {
         // box x ball: random boxes and balls; near: the tests' balls touching a box at a face, an
@@ -175,10 +212,13 @@ void register_classic_rays(bool near) {
         }
         auto truth = [](const std::pair<aabb3, sphere3>& c) {
             double mn[3], mx[3], cc[3];
-            arr(c.first.min, mn); arr(c.first.max, mx); arr(c.second.center, cc);
+            arr(c.first.min, mn);
+            arr(c.first.max, mx);
+            arr(c.second.center, cc);
             return oracle::ball_aabb(mn, mx, cc, c.second.radius);
         };
-        tiers("aabb_sphere", dist, cs, truth, [](auto tier, const std::pair<aabb3, sphere3>& c) { return intersects<decltype(tier)>(c.first, c.second); });
+        tiers("aabb_sphere", dist, cs, truth,
+              [](auto tier, const std::pair<aabb3, sphere3>& c) { return intersects<decltype(tier)>(c.first, c.second); });
     }
 }
 } // namespace bench

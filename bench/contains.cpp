@@ -20,8 +20,9 @@ template <class A, class B, class Gen, class Truth>
     std::vector<std::pair<A, B>> cs;
     while (cs.size() < set_size)
         if (const std::optional<std::pair<A, B>> c = gen(r, near)) cs.push_back(*c);
-    tiers(pair, near ? "near_degenerate" : "random", cs, [truth](const std::pair<A, B>& c) { return truth(c.first, c.second); },
-          [](auto tier, const std::pair<A, B>& c) { return contains<decltype(tier)>(c.first, c.second); }, "contains");
+    tiers(
+        pair, near ? "near_degenerate" : "random", cs, [truth](const std::pair<A, B>& c) { return truth(c.first, c.second); },
+        [](auto tier, const std::pair<A, B>& c) { return contains<decltype(tier)>(c.first, c.second); }, "contains");
 }
 
 // The boxes and the ball: the pair's random cases, or the holding generator.
@@ -33,7 +34,8 @@ void box_contains(const std::string& pair, bool near, Random random, Holding hol
 }
 template <class B>
 void obb_contains(const std::string& pair, bool near) {
-    box_contains<obb3, B>(pair, near, [](support::rng& r) { return support::obb_case<obb3, B>::random(r, false); }, support::obb_holding<B>);
+    box_contains<obb3, B>(
+        pair, near, [](support::rng& r) { return support::obb_case<obb3, B>::random(r, false); }, support::obb_holding<B>);
 }
 // contains(polygon3, B) for B a segment or a triangle of points_in_polygon3 (a case the generator
 // declines is drawn again).
@@ -98,7 +100,7 @@ void halfspace_contains(const std::string& pair, bool near) {
 // truth is the exact tier, checked against the oracle by the pair's test.
 template <class A, class B>
 void audit_contains(const std::string& pair, bool near) {
-    constexpr bool swapped = !requires(audit::rng & r) { audit::near_boundary<A, B>::touching(r); };
+    constexpr bool swapped = !requires(audit::rng& r) { audit::near_boundary<A, B>::touching(r); };
     audit::rng r(near ? 7 : 3);
     std::vector<std::pair<A, B>> cs;
     while (cs.size() < set_size) {
@@ -110,8 +112,9 @@ void audit_contains(const std::string& pair, bool near) {
             cs.push_back(audit::make_case<A, B>(r, level, audit::settings[0]));
         }
     }
-    tiers(pair, near ? "near_degenerate" : "random", cs, [](const std::pair<A, B>& c) { return contains<exact>(c.first, c.second); },
-          [](auto tier, const std::pair<A, B>& c) { return contains<decltype(tier)>(c.first, c.second); }, "contains");
+    tiers(
+        pair, near ? "near_degenerate" : "random", cs, [](const std::pair<A, B>& c) { return contains<exact>(c.first, c.second); },
+        [](auto tier, const std::pair<A, B>& c) { return contains<decltype(tier)>(c.first, c.second); }, "contains");
 }
 // contains(a view, a point): the intersects cases of the pair, the oracle as truth.
 
@@ -137,20 +140,25 @@ void register_contains(bool near) {
     audit_contains<frustum3, segment3>("frustum_segment", near);
     audit_contains<frustum3, tetrahedron3>("frustum_tetrahedron", near);
     view_tiers<support::mesh_store, point3, true>(
-        "mesh_point", near, [](support::rng& r, support::mesh_store& m, support::mesh_store& o, bool nr) {
+        "mesh_point", near,
+        [](support::rng& r, support::mesh_store& m, support::mesh_store& o, bool nr) {
             return nr ? support::mesh_near<point3>(r, m, o) : support::mesh_random<point3>(r, m, o);
         },
         [](const mesh3& m, const point3& p) { return support::mesh_truth(m, p); });
     view_tiers<support::polygon_store, point2, true>(
-        "polygon2_point2", near, [](support::rng& r, support::polygon_store& g, support::polygon_store& o, bool nr) {
+        "polygon2_point2", near,
+        [](support::rng& r, support::polygon_store& g, support::polygon_store& o, bool nr) {
             return nr ? support::polygon_near<point2>(r, g, o) : support::polygon_random<point2>(r, g, o);
         },
         [](const polygon2& g, const point2& p) { return support::polygon_truth(g, p); });
     view_tiers<support::polygon3_store, point3, true>(
-        "polygon_point", near, [](support::rng& r, support::polygon3_store& g, support::polygon3_store& o, bool nr) {
+        "polygon_point", near,
+        [](support::rng& r, support::polygon3_store& g, support::polygon3_store& o, bool nr) {
             support::mesh_store unused;
             for (;;)
-                if (const auto p = nr ? support::polygon3_near<point3>(r, g, o, unused) : support::polygon3_random<point3>(r, g, o, unused); p && support::finite_partner(*p)) return *p;
+                if (const auto p = nr ? support::polygon3_near<point3>(r, g, o, unused) : support::polygon3_random<point3>(r, g, o, unused);
+                    p && support::finite_partner(*p))
+                    return *p;
         },
         [](const polygon3& g, const point3& p) { return support::polygon3_truth(g, p); });
     obb_contains<point3>("obb_point", near);
@@ -158,18 +166,31 @@ void register_contains(bool near) {
     obb_contains<triangle3>("obb_triangle", near);
     obb_contains<tetrahedron3>("obb_tetrahedron", near);
     obb_contains<obb3>("obb_obb", near);
-    box_contains<aabb3, obb3>("aabb_obb", near, [](support::rng& r) { return support::obb_case<aabb3, obb3>::random(r, false); },
-                              support::aabb_holding_obb);
+    box_contains<aabb3, obb3>(
+        "aabb_obb", near, [](support::rng& r) { return support::obb_case<aabb3, obb3>::random(r, false); }, support::aabb_holding_obb);
     box_contains<obb3, sphere3>("obb_sphere", near, random_obb_ball, support::obb_holding_ball);
-    box_contains<sphere3, obb3>("sphere_obb", near, [](support::rng& r) { const auto [b, s] = random_obb_ball(r); return std::pair{s, b}; },
-                                support::ball_holding_obb);
+    box_contains<sphere3, obb3>(
+        "sphere_obb", near,
+        [](support::rng& r) {
+            const auto [b, s] = random_obb_ball(r);
+            return std::pair{s, b};
+        },
+        support::ball_holding_obb);
     box_contains<aabb3, sphere3>("aabb_sphere", near, random_aabb_ball, support::aabb_holding_ball);
-    box_contains<sphere3, aabb3>("sphere_aabb", near, [](support::rng& r) { const auto [b, s] = random_aabb_ball(r); return std::pair{s, b}; },
-                                 support::ball_holding_aabb);
-    box_contains<tetrahedron3, obb3>("tetrahedron_obb", near, [](support::rng& r) {
-        const auto [b, t] = support::obb_case<obb3, tetrahedron3>::random(r, false);
-        return std::pair{t, b};
-    }, support::tetrahedron_holding_obb);
+    box_contains<sphere3, aabb3>(
+        "sphere_aabb", near,
+        [](support::rng& r) {
+            const auto [b, s] = random_aabb_ball(r);
+            return std::pair{s, b};
+        },
+        support::ball_holding_aabb);
+    box_contains<tetrahedron3, obb3>(
+        "tetrahedron_obb", near,
+        [](support::rng& r) {
+            const auto [b, t] = support::obb_case<obb3, tetrahedron3>::random(r, false);
+            return std::pair{t, b};
+        },
+        support::tetrahedron_holding_obb);
     flat_contains<tetrahedron3, point3>("tetrahedron_point", near);
     flat_contains<tetrahedron3, segment3>("tetrahedron_segment", near);
     flat_contains<tetrahedron3, triangle3>("tetrahedron_triangle", near);
@@ -193,8 +214,7 @@ void register_contains(bool near) {
                 try {
                     (void)support::segment_in_mesh_truth(m.view(), s);
                     return s;
-                } catch (const std::runtime_error&) {
-                }
+                } catch (const std::runtime_error&) {}
             }
         },
         [](const mesh3& m, const segment3& s) { return support::segment_in_mesh_truth(m, s); });
@@ -207,8 +227,7 @@ void register_contains(bool near) {
                 try {
                     (void)support::triangle_in_mesh_truth(m.view(), t);
                     return t;
-                } catch (const std::runtime_error&) {
-                }
+                } catch (const std::runtime_error&) {}
             }
         },
         [](const mesh3& m, const triangle3& t) { return support::triangle_in_mesh_truth(m, t); });
@@ -221,8 +240,7 @@ void register_contains(bool near) {
                 try {
                     (void)support::box_in_mesh_truth(m.view(), b);
                     return b;
-                } catch (const std::runtime_error&) {
-                }
+                } catch (const std::runtime_error&) {}
             }
         },
         [](const mesh3& m, const aabb3& b) { return support::box_in_mesh_truth(m, b); });
@@ -235,7 +253,9 @@ void register_contains(bool near) {
             return nr ? support::segment_in_polygon_near(r, g) : support::segment_in_polygon_random(r, g);
         },
         [](const polygon2& g, const segment2& s) { return support::segment_in_polygon_truth(g, s); });
-    polygon3_contains<segment3>("polygon_segment", near, [](const polygon3& g, const segment3& s) { return support::segment_in_polygon3_truth(g, s); });
-    polygon3_contains<triangle3>("polygon_triangle", near, [](const polygon3& g, const triangle3& t) { return support::triangle_in_polygon3_truth(g, t); });
+    polygon3_contains<segment3>("polygon_segment", near,
+                                [](const polygon3& g, const segment3& s) { return support::segment_in_polygon3_truth(g, s); });
+    polygon3_contains<triangle3>("polygon_triangle", near,
+                                 [](const polygon3& g, const triangle3& t) { return support::triangle_in_polygon3_truth(g, t); });
 }
 } // namespace bench

@@ -22,8 +22,10 @@ void values(const std::string& pair, const std::string& dist, const std::vector<
     std::vector<bool> truth; // the exact tier, checked against the oracle in the tests
     for (const auto& c : cs) truth.push_back(intersection<exact>(c.s, c.x).has_value());
     if constexpr (has_pair<S, X>)
-        reg("exact/intersection_yes_no/" + pair + "/" + dist, cs, truth, check::exact, [](const sx<S, X>& c) { return intersects<exact>(c.s, c.x); });
-    reg("exact/intersection/" + pair + "/" + dist, cs, truth, check::exact, [](const sx<S, X>& c) { return intersection<exact>(c.s, c.x).has_value(); });
+        reg("exact/intersection_yes_no/" + pair + "/" + dist, cs, truth, check::exact,
+            [](const sx<S, X>& c) { return intersects<exact>(c.s, c.x); });
+    reg("exact/intersection/" + pair + "/" + dist, cs, truth, check::exact,
+        [](const sx<S, X>& c) { return intersection<exact>(c.s, c.x).has_value(); });
     reg("conservative/intersection/" + pair + "/" + dist, cs, truth, check::conservative,
         [](const sx<S, X>& c) { return intersection<conservative>(c.s, c.x).has_value(); });
     reg("approximate/intersection/" + pair + "/" + dist, cs, truth, check::approximate,
@@ -67,7 +69,8 @@ void register_linear(bool near) {
     {
         support::rng r = set_rng(near);
         values(pair_name("plane", lin), dist, collect<plane3, X>([&] {
-                   if constexpr (std::is_same_v<X, line3>) return of_pair<plane3, X>(near ? support::flat_near<line3, plane3>(r) : support::flat_random<line3, plane3>(r));
+                   if constexpr (std::is_same_v<X, line3>)
+                       return of_pair<plane3, X>(near ? support::flat_near<line3, plane3>(r) : support::flat_random<line3, plane3>(r));
                    else return of_pair<plane3, X>(near ? support::flat_near<plane3, X>(r) : support::flat_random<plane3, X>(r));
                }));
     }
@@ -80,13 +83,15 @@ void register_linear(bool near) {
     {
         support::rng r = set_rng(near);
         values(pair_name("tetrahedron", lin), dist, collect<tetrahedron3, X>([&] {
-                   return of_pair<tetrahedron3, X>(near ? support::flat_near<X, tetrahedron3>(r) : support::flat_random<X, tetrahedron3>(r));
+                   return of_pair<tetrahedron3, X>(near ? support::flat_near<X, tetrahedron3>(r)
+                                                        : support::flat_random<X, tetrahedron3>(r));
                }));
     }
     {
         support::rng r = set_rng(near);
         values(pair_name("obb", lin), dist, collect<obb3, X>([&] {
-                   if constexpr (std::is_same_v<X, line3>) return of_pair<obb3, X>(near ? support::obb_case<line3, obb3>::near(r) : support::obb_case<line3, obb3>::random(r));
+                   if constexpr (std::is_same_v<X, line3>)
+                       return of_pair<obb3, X>(near ? support::obb_case<line3, obb3>::near(r) : support::obb_case<line3, obb3>::random(r));
                    else return of_pair<obb3, X>(near ? support::obb_case<obb3, X>::near(r) : support::obb_case<obb3, X>::random(r));
                }));
     }
@@ -101,7 +106,8 @@ void register_linear(bool near) {
     {
         support::rng r = set_rng(near);
         values(pair_name("convex_polyhedron", lin), dist, collect<convex_polyhedron3, X>([&]() -> std::optional<sx<convex_polyhedron3, X>> {
-                   const auto p = near ? support::halfspace_near<convex_polyhedron3, X>(r) : support::halfspace_random<convex_polyhedron3, X>(r);
+                   const auto p =
+                       near ? support::halfspace_near<convex_polyhedron3, X>(r) : support::halfspace_random<convex_polyhedron3, X>(r);
                    if (!p) return std::nullopt;
                    return sx<convex_polyhedron3, X>{p->first, p->second};
                }));
@@ -118,7 +124,8 @@ void register_linear(bool near) {
         support::rng r = set_rng(near);
         values(pair_name("sphere", lin), dist, collect<sphere3, X>([&]() -> std::optional<sx<sphere3, X>> {
                    const point3 c{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)};
-                   const point3 o{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)}, e{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)};
+                   const point3 o{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)},
+                       e{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)};
                    const double radius = near ? 0.5 : r.uniform(0, 0.7);
                    if constexpr (std::is_same_v<X, segment3>) return sx<sphere3, X>{{c, radius}, {o, e}};
                    else return sx<sphere3, X>{{c, radius}, {o, e - o}};
@@ -145,8 +152,10 @@ void view_values(const std::string& pair, bool near, Gen make_case) {
     }
     std::vector<bool> truth; // the exact tier, checked against the oracle in the tests
     for (const auto& c : cs) truth.push_back(intersection<exact>(c.g.view(), c.x).has_value());
-    reg("exact/intersection_yes_no/" + pair + "/" + dist, cs, truth, check::exact, [](const view_case& c) { return intersects<exact>(c.g.view(), c.x); });
-    reg("exact/intersection/" + pair + "/" + dist, cs, truth, check::exact, [](const view_case& c) { return intersection<exact>(c.g.view(), c.x).has_value(); });
+    reg("exact/intersection_yes_no/" + pair + "/" + dist, cs, truth, check::exact,
+        [](const view_case& c) { return intersects<exact>(c.g.view(), c.x); });
+    reg("exact/intersection/" + pair + "/" + dist, cs, truth, check::exact,
+        [](const view_case& c) { return intersection<exact>(c.g.view(), c.x).has_value(); });
     reg("conservative/intersection/" + pair + "/" + dist, cs, truth, check::conservative,
         [](const view_case& c) { return intersection<conservative>(c.g.view(), c.x).has_value(); });
     reg("approximate/intersection/" + pair + "/" + dist, cs, truth, check::approximate,

@@ -58,7 +58,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (!oracle::is_rounded_min_sphere_sqradius(xyz.data(), m, w.value().squared_radius)) std::abort();
         // plain move-to-front (the fallback for many cospherical points) gives the same exact answer
         const auto mtf = bound::welzl_detail::solve(narrow ? s : s.first(m), 7, 1);
-        if (!mtf || mtf.value().squared_radius != w.value().squared_radius || !(mtf.value().sphere.center == w.value().sphere.center)) std::abort();
+        if (!mtf || mtf.value().squared_radius != w.value().squared_radius || !(mtf.value().sphere.center == w.value().sphere.center))
+            std::abort();
     } else if (w.error().code != errc::out_of_range) std::abort();
     for (const auto* sp : {&r, &a, &f}) {
         if (*sp) {
@@ -73,7 +74,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
         const obb3& b = ob->value();
         const double c[3] = {b.center.x, b.center.y, b.center.z};
-        const double ax[9] = {b.axes[0].x, b.axes[0].y, b.axes[0].z, b.axes[1].x, b.axes[1].y, b.axes[1].z, b.axes[2].x, b.axes[2].y, b.axes[2].z};
+        const double ax[9] = {b.axes[0].x, b.axes[0].y, b.axes[0].z, b.axes[1].x, b.axes[1].y,
+                              b.axes[1].z, b.axes[2].x, b.axes[2].y, b.axes[2].z};
         if (!oracle::all_in_box(xyz.data(), n, c, ax, b.half_extents.data())) std::abort();
     }
     std::vector<std::array<double, 3>> hv;

@@ -216,9 +216,7 @@ void check_polygon3(const std::array<point3, 6>& verts, std::span<const std::uin
         try {
             if constexpr (std::is_same_v<B, segment3>) truth = support::segment_in_polygon3_truth(g, b);
             else truth = support::triangle_in_polygon3_truth(g, b);
-        } catch (const std::runtime_error&) {
-            return;
-        }
+        } catch (const std::runtime_error&) { return; }
         contains_contracts_with(g, b, truth);
     }
 }
@@ -253,7 +251,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         for (int i = 0; i < reads; ++i) finite = finite && std::isfinite(v[13 + i]);
         const std::array<point3, 6> verts = planar_hexagon(v, axis);
         static constexpr std::array<std::uint32_t, 2> two_rings{{3, 6}};
-        const std::span<const std::uint32_t> ends = (data[1] & 0x40) ? std::span<const std::uint32_t>(two_rings) : std::span<const std::uint32_t>();
+        const std::span<const std::uint32_t> ends =
+            (data[1] & 0x40) ? std::span<const std::uint32_t>(two_rings) : std::span<const std::uint32_t>();
         auto run = [&](const auto& b) {
             check_polygon3(verts, ends, axis, b, finite);
             std::array<point3, 6> bent = verts; // off the plane: unchecked, every tier finishes

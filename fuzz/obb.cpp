@@ -66,7 +66,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         (void)contains<aggressive>(kd, box);
         (void)intersects<approximate>(pl, kd);
         const frustum3 fr{{plane3{{v[0], v[1], v[2]}, v[3]}, plane3{{v[4], v[5], v[6]}, v[7]}, plane3{{v[8], v[9], v[10]}, v[11]},
-                           plane3{{v[12], v[13], v[14]}, v[15]}, plane3{{v[16], v[17], v[18]}, v[19]}, plane3{{v[20], v[21], v[22]}, v[23]}}};
+                           plane3{{v[12], v[13], v[14]}, v[15]}, plane3{{v[16], v[17], v[18]}, v[19]},
+                           plane3{{v[20], v[21], v[22]}, v[23]}}};
         convex_polyhedron3 cp{};
         cp.count = size == 0 ? 0 : data[0] % 40 - 4; // outside [0, 32] too: no set
         for (unsigned i = 0; i < 32; ++i) cp.planes[i] = plane3{{v[i % 24], v[(i + 1) % 24], v[(i + 2) % 24]}, v[(i + 3) % 24]};
@@ -136,7 +137,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         check(kd, tri);
         if (contains(kd, tri) != (intersects(kd, tri.a) && intersects(kd, tri.b) && intersects(kd, tri.c))) std::abort();
         check(kd, tet);
-        if (contains(kd, tet) != (intersects(kd, tet.a) && intersects(kd, tet.b) && intersects(kd, tet.c) && intersects(kd, tet.d))) std::abort();
+        if (contains(kd, tet) != (intersects(kd, tet.a) && intersects(kd, tet.b) && intersects(kd, tet.c) && intersects(kd, tet.d)))
+            std::abort();
         if (contains(kd, p) != intersects(kd, p)) std::abort();
         // two k-DOPs (the same K, and a 14-DOP), a box: slab overlap and the Farkas certificates
         kdop<K> kd2{};
@@ -164,11 +166,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         check(h, seg);
         check(h, ray);
         check(h, line);
-        check(h, pl); // the feasibility test of possibly unbounded sets
+        check(h, pl);  // the feasibility test of possibly unbounded sets
         check(h, tri); // the triangle's edges, then the set's edges across its plane
         if (contains(h, tri) != (intersects(h, tri.a) && intersects(h, tri.b) && intersects(h, tri.c))) std::abort();
         check(h, tet); // its faces, then a vertex of the set inside it
-        if (contains(h, tet) != (intersects(h, tet.a) && intersects(h, tet.b) && intersects(h, tet.c) && intersects(h, tet.d))) std::abort();
+        if (contains(h, tet) != (intersects(h, tet.a) && intersects(h, tet.b) && intersects(h, tet.c) && intersects(h, tet.d)))
+            std::abort();
         if (contains(h, p) != intersects(h, p)) std::abort();
         if (contains(h, seg) != (intersects(h, seg.a) && intersects(h, seg.b))) std::abort();
         if (box.min.x <= box.max.x && box.min.y <= box.max.y && box.min.z <= box.max.z) { // the vertex test
@@ -194,7 +197,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         check(cp2, fr);
         // a second frustum: the planes of fr in another order of the doubles
         frustum3 fr2{};
-        for (unsigned i = 0; i < 6; ++i) fr2.planes[i] = plane3{{v[(4 * i + 5) % 24], v[(4 * i + 22) % 24], v[(4 * i + 11) % 24]}, v[(4 * i + 2) % 24]};
+        for (unsigned i = 0; i < 6; ++i)
+            fr2.planes[i] = plane3{{v[(4 * i + 5) % 24], v[(4 * i + 22) % 24], v[(4 * i + 11) % 24]}, v[(4 * i + 2) % 24]};
         check(fr, fr2);
     }
     switch (size == 0 ? 0 : data[0] % 4) {

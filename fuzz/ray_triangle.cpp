@@ -14,7 +14,6 @@ import incidence;
 
 using namespace incidence;
 
-
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     double v[18] = {};
     std::memcpy(v, data, size < sizeof v ? size : sizeof v);
@@ -58,7 +57,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         return 0; // CGAL's do_intersect requires a non-degenerate triangle
     }
     if (u_all_finite) {
-        if (!oracle::triangle_is_degenerate(v, v + 3, v + 15)) contracts(u, t, oracle::triangle_triangle(v, v + 3, v + 15, v + 6, v + 9, v + 12));
+        if (!oracle::triangle_is_degenerate(v, v + 3, v + 15))
+            contracts(u, t, oracle::triangle_triangle(v, v + 3, v + 15, v + 6, v + 9, v + 12));
         else (void)intersects<exact>(u, t);
     }
     if (u_all_finite && !(v[3] == 0 && v[4] == 0 && v[5] == 0)) {

@@ -67,9 +67,7 @@ std::optional<bool> truth(const tetrahedron3& a, const B& b) {
     } else {
         try {
             return support::flat_truth(a, b);
-        } catch (const std::runtime_error&) {
-            return std::nullopt;
-        }
+        } catch (const std::runtime_error&) { return std::nullopt; }
     }
 }
 template <class A, class B>
@@ -85,9 +83,7 @@ std::optional<bool> contains_truth(const A& a, const B& b) {
         } else {
             return support::flat_contains_truth(a, b);
         }
-    } catch (const std::runtime_error&) {
-        return std::nullopt;
-    }
+    } catch (const std::runtime_error&) { return std::nullopt; }
 }
 template <class A, class B>
 void contains_contracts(const A& a, const B& b, bool finite) {
@@ -198,27 +194,21 @@ void check_mesh(const mesh3& m, const B& b, bool finite) {
         bool in = false;
         try {
             in = support::segment_in_mesh_truth(m, b);
-        } catch (const std::runtime_error&) {
-            return;
-        }
+        } catch (const std::runtime_error&) { return; }
         contains_contracts_with(m, b, in);
     }
     if constexpr (std::is_same_v<B, aabb3>) { // contains against the oracle's cells of each plane through the box
         bool in = false;
         try {
             in = support::box_in_mesh_truth(m, b);
-        } catch (const std::runtime_error&) {
-            return;
-        }
+        } catch (const std::runtime_error&) { return; }
         contains_contracts_with(m, b, in);
     }
     if constexpr (std::is_same_v<B, triangle3>) { // contains against the oracle's chords between exact directions
         bool in = false;
         try {
             in = support::triangle_in_mesh_truth(m, b);
-        } catch (const std::runtime_error&) {
-            return;
-        }
+        } catch (const std::runtime_error&) { return; }
         contains_contracts_with(m, b, in);
     }
 }
@@ -241,15 +231,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             const double* h = w + 18;
             if (data[0] % 8 == 6) check_mesh(m, fuzz::polyhedron_from(h, 1 + data[0] / 8 % 4), finite); // 1 to 4 planes
             else if (data[0] % 8 == 5) check_mesh(m, fuzz::frustum_from(h), finite); // six planes, the doubles read again
-            else check_mesh(m, fuzz::kdop14_from(h), finite); // a 14-DOP's bounds (maybe inverted: empty)
+            else check_mesh(m, fuzz::kdop14_from(h), finite);                        // a 14-DOP's bounds (maybe inverted: empty)
             return 0;
         }
         if (data[0] & 0x40) { // a second mesh (18 doubles), or an OBB when byte 0 % 8 == 7 (its LP per triangle is slow)
             const bool box = data[0] % 8 == 7;
             for (int i = 0; i < 18 + (box ? 15 : 18); ++i) finite = finite && std::isfinite(w[i]);
-            if (box) with_shape(7, w + 18, [&](const auto& b) {
-                if constexpr (std::is_same_v<std::decay_t<decltype(b)>, obb3>) check_mesh(m, b, finite);
-            });
+            if (box)
+                with_shape(7, w + 18, [&](const auto& b) {
+                    if constexpr (std::is_same_v<std::decay_t<decltype(b)>, obb3>) check_mesh(m, b, finite);
+                });
             else check_mesh(m, mesh3{verts2, octahedron}, finite);
             return 0;
         }

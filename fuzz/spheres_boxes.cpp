@@ -14,9 +14,14 @@ import incidence;
 using namespace incidence;
 
 namespace {
-void arr(point3 p, double* o) { o[0] = p.x; o[1] = p.y; o[2] = p.z; }
+void arr(point3 p, double* o) {
+    o[0] = p.x;
+    o[1] = p.y;
+    o[2] = p.z;
+}
 aabb3 ordered(point3 a, point3 b) {
-    return {{std::fmin(a.x, b.x), std::fmin(a.y, b.y), std::fmin(a.z, b.z)}, {std::fmax(a.x, b.x), std::fmax(a.y, b.y), std::fmax(a.z, b.z)}};
+    return {{std::fmin(a.x, b.x), std::fmin(a.y, b.y), std::fmin(a.z, b.z)},
+            {std::fmax(a.x, b.x), std::fmax(a.y, b.y), std::fmax(a.z, b.z)}};
 }
 } // namespace
 
@@ -46,12 +51,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     (void)intersects<conservative>(seg, b1);
     (void)intersects<approximate>(line, b1);
     (void)intersects<aggressive>(b1, line);
-    if (intersects(b1, seg) && !(std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]) && std::isfinite(v[3]) && std::isfinite(v[4]) && std::isfinite(v[5]))) std::abort();
+    if (intersects(b1, seg) && !(std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]) && std::isfinite(v[3]) &&
+                                 std::isfinite(v[4]) && std::isfinite(v[5])))
+        std::abort();
     bool finite = true;
     for (double x : v) finite = finite && std::isfinite(x);
     if (!finite) return 0;
     double P[3], Q[3], C[3], E[3];
-    arr(p, P); arr(q, Q); arr(c, C); arr(e, E);
+    arr(p, P);
+    arr(q, Q);
+    arr(c, C);
+    arr(e, E);
     // balls need r >= 0 (a checked make() refuses negative radii)
     const sphere3 a{c, std::fabs(r1)}, b{e, std::fabs(r2)};
     contracts(p, a, oracle::point_in_ball(P, C, a.radius));
@@ -59,7 +69,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (contains(a, b) != oracle::ball_contains_ball(C, a.radius, E, b.radius)) std::abort();
     const aabb3 box = ordered(c, e), other = ordered(p, q);
     double mn[3], mx[3], omn[3], omx[3];
-    arr(box.min, mn); arr(box.max, mx); arr(other.min, omn); arr(other.max, omx);
+    arr(box.min, mn);
+    arr(box.max, mx);
+    arr(other.min, omn);
+    arr(other.max, omx);
     contracts(box, p, oracle::point_in_box(P, mn, mx));
     contracts(box, other, oracle::box_box(mn, mx, omn, omx));
     if (contains(box, other) != oracle::box_contains_box(mn, mx, omn, omx)) std::abort();
@@ -71,8 +84,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         contracts(box, line, oracle::box_line(mn, mx, P, Q));
         contracts(box, ray, oracle::ray_box(P, Q, mn, mx));
         contracts(ray, a, oracle::ray_ball(P, Q, C, a.radius));
-        if (const auto h = intersection(box, ray); h && !oracle::is_rounded_ray_box_t(P, Q, mn, mx, h->t_enter, h->t_exit))
-            std::abort();
+        if (const auto h = intersection(box, ray); h && !oracle::is_rounded_ray_box_t(P, Q, mn, mx, h->t_enter, h->t_exit)) std::abort();
         if (const auto h = intersection(ray, a); h && !oracle::is_rounded_ray_ball_t(P, Q, C, a.radius, h->t_enter)) std::abort();
     }
     return 0;

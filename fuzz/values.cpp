@@ -82,9 +82,15 @@ interval ti_of(const H& h) {
     else return h.t;
 }
 
-oracle::linear_object object_of(const ray3& r) { return {oracle::linear_object::ray, {r.origin.x, r.origin.y, r.origin.z}, {r.direction.x, r.direction.y, r.direction.z}}; }
-oracle::linear_object object_of(const line3& l) { return {oracle::linear_object::line, {l.origin.x, l.origin.y, l.origin.z}, {l.direction.x, l.direction.y, l.direction.z}}; }
-oracle::linear_object object_of(const segment3& s) { return {oracle::linear_object::segment, {s.a.x, s.a.y, s.a.z}, {s.b.x, s.b.y, s.b.z}}; }
+oracle::linear_object object_of(const ray3& r) {
+    return {oracle::linear_object::ray, {r.origin.x, r.origin.y, r.origin.z}, {r.direction.x, r.direction.y, r.direction.z}};
+}
+oracle::linear_object object_of(const line3& l) {
+    return {oracle::linear_object::line, {l.origin.x, l.origin.y, l.origin.z}, {l.direction.x, l.direction.y, l.direction.z}};
+}
+oracle::linear_object object_of(const segment3& s) {
+    return {oracle::linear_object::segment, {s.a.x, s.a.y, s.a.z}, {s.b.x, s.b.y, s.b.z}};
+}
 void arr(point3 p, double* o) { o[0] = p.x, o[1] = p.y, o[2] = p.z; }
 
 // The oracle where the shape is well formed; nullopt elsewhere.
@@ -114,7 +120,10 @@ std::optional<oracle::exact_hit> exact_of(const S& s, const X& x) {
         return oracle::exact_tetrahedron(o, v);
     } else if constexpr (std::is_same_v<S, convex_polyhedron3> || std::is_same_v<S, frustum3>) {
         std::vector<std::array<double, 4>> planes;
-        const int m = [&] { if constexpr (std::is_same_v<S, frustum3>) return 6; else return s.count; }();
+        const int m = [&] {
+            if constexpr (std::is_same_v<S, frustum3>) return 6;
+            else return s.count;
+        }();
         for (int i = 0; i < m; ++i) {
             const plane3 p = s.planes[static_cast<unsigned>(i)];
             planes.push_back({p.normal.x, p.normal.y, p.normal.z, p.offset});

@@ -128,8 +128,9 @@ inline bv_report measure_bounding_volumes(std::span<const point3> pts, int reps)
         const vec3 e = box.max - box.min;
         r.volume = e.x * e.y * e.z, r.area = 2 * (e.x * e.y + e.y * e.z + e.z * e.x);
         r.contains_all = std::all_of(pts.begin(), pts.end(), [&](point3 p) { return contains(box, p); });
-        r.test_ns = test_ns(box, size, [](aabb3 b, vec3 v) { return aabb3{b.min + v, b.max + v}; },
-                            [](const aabb3& a, const aabb3& b) { return intersects(a, b); }, reps);
+        r.test_ns = test_ns(
+            box, size, [](aabb3 b, vec3 v) { return aabb3{b.min + v, b.max + v}; },
+            [](const aabb3& a, const aabb3& b) { return intersects(a, b); }, reps);
         finish(r);
     }
     auto kdop_row = [&]<int K>(std::integral_constant<int, K>) {
@@ -144,8 +145,9 @@ inline bv_report measure_bounding_volumes(std::span<const point3> pts, int reps)
         for (double& x : c) x /= double(pts.size());
         oracle::halfspaces_volume_area(dirs.data(), k.min.data(), k.max.data(), d.size(), c, r.volume, r.area);
         r.contains_all = std::all_of(pts.begin(), pts.end(), [&](point3 p) { return bound::contains(k, p); });
-        r.test_ns = test_ns(k, size, [](const kdop<K>& a, vec3 v) { return bv_detail::moved(a, v); },
-                            [](const kdop<K>& a, const kdop<K>& b) { return slabs_overlap(a, b); }, reps);
+        r.test_ns = test_ns(
+            k, size, [](const kdop<K>& a, vec3 v) { return bv_detail::moved(a, v); },
+            [](const kdop<K>& a, const kdop<K>& b) { return slabs_overlap(a, b); }, reps);
         finish(r);
     };
     kdop_row(std::integral_constant<int, 6>{});
@@ -159,8 +161,9 @@ inline bv_report measure_bounding_volumes(std::span<const point3> pts, int reps)
         r.volume = 4.0 / 3.0 * std::numbers::pi * s.radius * s.radius * s.radius;
         r.area = 4.0 * std::numbers::pi * s.radius * s.radius;
         r.contains_all = std::all_of(pts.begin(), pts.end(), [&](point3 p) { return bound::in_ball(s.center, s.radius, p); });
-        r.test_ns = test_ns(s, size, [](sphere3 a, vec3 v) { return sphere3{a.center + v, a.radius}; },
-                            [](const sphere3& a, const sphere3& b) { return intersects(a, b); }, reps);
+        r.test_ns = test_ns(
+            s, size, [](sphere3 a, vec3 v) { return sphere3{a.center + v, a.radius}; },
+            [](const sphere3& a, const sphere3& b) { return intersects(a, b); }, reps);
         finish(r);
     };
     sphere_row("sphere (aabb)", "sphere_from_aabb: box centre, half diagonal", [&] { return bound::sphere_from_aabb(pts).value(); });
@@ -172,13 +175,17 @@ inline bv_report measure_bounding_volumes(std::span<const point3> pts, int reps)
     auto obb_row = [&](const char* kind, const char* source, auto build) {
         bv_row r{kind, source};
         obb3 b{};
-        r.build_ms = median_ms(reps, [&] { b = build(); sink = b.half_extents[0]; });
+        r.build_ms = median_ms(reps, [&] {
+            b = build();
+            sink = b.half_extents[0];
+        });
         r.volume = bound::volume(b);
         const double e0 = 2 * b.half_extents[0], e1 = 2 * b.half_extents[1], e2 = 2 * b.half_extents[2];
         r.area = 2 * (e0 * e1 + e1 * e2 + e2 * e0);
         r.contains_all = std::all_of(pts.begin(), pts.end(), [&](point3 p) { return bound::contains(b, p); });
-        r.test_ns = test_ns(b, size, [](obb3 a, vec3 v) { return obb3{a.center + v, a.axes, a.half_extents}; },
-                            [](const obb3& a, const obb3& c) { return obb_overlap(a, c); }, reps);
+        r.test_ns = test_ns(
+            b, size, [](obb3 a, vec3 v) { return obb3{a.center + v, a.axes, a.half_extents}; },
+            [](const obb3& a, const obb3& c) { return obb_overlap(a, c); }, reps);
         finish(r);
     };
     obb_row("OBB (covariance)", "obb_covariance: Gottschalk 1996", [&] { return bound::obb_covariance(pts).value(); });
@@ -225,7 +232,10 @@ inline bv_report measure_bounding_volumes(std::span<const point3> pts, int reps)
     {
         bv_row r{"convex hull", "convex_hull: Quickhull with exact orient3d"};
         bound::hull h;
-        r.build_ms = median_ms(reps, [&] { h = bound::convex_hull(pts).value(); sink = double(h.vertices.size()); });
+        r.build_ms = median_ms(reps, [&] {
+            h = bound::convex_hull(pts).value();
+            sink = double(h.vertices.size());
+        });
         r.vertices = h.vertices.size();
         double v = 0, a = 0;
         for (const auto& t : h.triangles) {
@@ -253,9 +263,10 @@ inline bv_report measure_bounding_volumes(std::span<const point3> pts, int reps)
             pick = &r;
     char buf[400];
     if (pick) {
-        std::snprintf(buf, sizeof buf, "%s: %.2fx the convex hull's volume (the tightest kind here is %.2fx), %.1f ns per overlap "
-                                       "test, built in %.2f ms. Rule: the cheapest test among the kinds within %.2fx of the "
-                                       "tightest volume.",
+        std::snprintf(buf, sizeof buf,
+                      "%s: %.2fx the convex hull's volume (the tightest kind here is %.2fx), %.1f ns per overlap "
+                      "test, built in %.2f ms. Rule: the cheapest test among the kinds within %.2fx of the "
+                      "tightest volume.",
                       pick->kind.c_str(), pick->volume_ratio, best, pick->test_ns, pick->build_ms, rep.tightness_rule);
         rep.advice = buf;
     } else {

@@ -46,8 +46,7 @@ void check_pair(tally& t, const A& a, const B& b, bool truth, double bound, cons
         if constexpr (requires { detail::intersects(mk, a, b); }) (void)detail::intersects(mk, a, b);
         else (void)detail::intersects(mk, b, a); // the pair is written in the other order
         if (mk.min_rel > bound) {
-            if (++t.approx_outside_bound <= 5)
-                std::printf("  approximate wrong at margin %g: %s\n", mk.min_rel, describe().c_str());
+            if (++t.approx_outside_bound <= 5) std::printf("  approximate wrong at margin %g: %s\n", mk.min_rel, describe().c_str());
         }
     }
 }
@@ -69,11 +68,14 @@ tally run_oracle(const char* name, long n, double bound, Gen gen, Truth truth, S
     long skipped = 0;
     for (long i = 0; i < n; ++i) {
         auto [a, b] = gen(r);
-        if (skip(a, b)) { ++skipped; continue; }
+        if (skip(a, b)) {
+            ++skipped;
+            continue;
+        }
         check_pair(t, a, b, truth(a, b), bound, [&] { return describe(a, b); });
     }
-    std::printf("[cases] %s: seed %llu, %ld generated cases skipped (oracle precondition)\n", name,
-                static_cast<unsigned long long>(seed()), skipped);
+    std::printf("[cases] %s: seed %llu, %ld generated cases skipped (oracle precondition)\n", name, static_cast<unsigned long long>(seed()),
+                skipped);
     t.print();
     require_contracts(t);
     return t;
@@ -107,7 +109,8 @@ void check_contains(tally& t, const A& a, const B& b, bool truth, double bound, 
     auto say = [&](const char* what, long& count) {
         if (++count <= 5) std::printf("  contains: %s: %s\n", what, describe().c_str());
     };
-    if (contains<exact>(a, b) != truth) say(truth ? "exact disagrees (truth: contained)" : "exact disagrees (truth: not contained)", t.exact_wrong);
+    if (contains<exact>(a, b) != truth)
+        say(truth ? "exact disagrees (truth: contained)" : "exact disagrees (truth: not contained)", t.exact_wrong);
     if (truth && !contains<conservative>(a, b)) say("conservative misses", t.conservative_violations);
     if (!truth && contains<aggressive>(a, b)) say("aggressive false yes", t.aggressive_violations);
     const certainty c = classify_contains(a, b);
@@ -120,7 +123,6 @@ void check_contains(tally& t, const A& a, const B& b, bool truth, double bound, 
         if (mk.min_rel > bound) say("approximate wrong outside its bound", t.approx_outside_bound);
     }
 }
-
 
 // contains(a, b) on `n` random and `n` near-degenerate cases of gen(rng, near) (an optional pair;
 // std::nullopt: declined), against truth(a, b) (std::runtime_error: the oracle declined), with

@@ -195,7 +195,9 @@ inline std::pair<tetrahedron3, obb3> tetrahedron_holding_obb(rng& r) {
     for (double& x : t) x = r.coin() ? 1.0 : -1.0; // the corner p
     const int w = r.integer(0, 3);
     const double base = flat ? 2.0 : 3.0;
-    const double s = w == 0 ? base : (w == 1 ? base * (1.0 + std::ldexp(1.0, -r.integer(4, 30))) : (w == 2 ? base * (1.0 - std::ldexp(1.0, -r.integer(4, 30))) : base + 1));
+    const double s = w == 0 ? base
+                            : (w == 1 ? base * (1.0 + std::ldexp(1.0, -r.integer(4, 30)))
+                                      : (w == 2 ? base * (1.0 - std::ldexp(1.0, -r.integer(4, 30))) : base + 1));
     auto along = [&](unsigned j, double f) { // p + f e_j
         double u[3] = {t[0], t[1], t[2]};
         u[j] = t[j] * (1 - 2 * f);

@@ -14,8 +14,7 @@ inline std::string str(const sphere3& s) { return "sphere " + str(s.center) + " 
 // that the filter cannot decide (touching from inside); comparisons_only: a test that is all
 // coordinate comparisons, which the filter always decides.
 template <class A, class B, class Random, class Holding>
-void contains_oracle(const std::string& name, long n, double approx_bound, Random random, Holding holding,
-                     bool comparisons_only = false) {
+void contains_oracle(const std::string& name, long n, double approx_bound, Random random, Holding holding, bool comparisons_only = false) {
     rng r(seed() + 113);
     tally t{name + " contains"};
     long yes = 0, touching = 0;
@@ -28,8 +27,7 @@ void contains_oracle(const std::string& name, long n, double approx_bound, Rando
         check_contains(t, a, b, truth, approx_bound, [&] { return str(a) + " " + str(b); });
     }
     t.print();
-    std::printf("[cases] %s contains: %ld of %ld contained, %ld of them undecided by the filter\n", name.c_str(), yes, t.n,
-                touching);
+    std::printf("[cases] %s contains: %ld of %ld contained, %ld of them undecided by the filter\n", name.c_str(), yes, t.n, touching);
     require_contracts(t);
     CHECK(yes > t.n / 5);
     CHECK(yes < t.n);

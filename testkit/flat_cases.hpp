@@ -49,11 +49,15 @@ inline incidence::point3 realise(const incidence::point3& p, transform& tr) { re
 inline incidence::segment3 realise(const incidence::segment3& s, transform& tr) { return {moved(s.a, tr), moved(s.b, tr)}; }
 inline incidence::ray3 realise(const incidence::ray3& r, transform& tr) { return {moved(r.origin, tr), moved_dir(r.direction, tr)}; }
 inline incidence::line3 realise(const incidence::line3& l, transform& tr) { return {moved(l.origin, tr), moved_dir(l.direction, tr)}; }
-inline incidence::triangle3 realise(const incidence::triangle3& t, transform& tr) { return {moved(t.a, tr), moved(t.b, tr), moved(t.c, tr)}; }
+inline incidence::triangle3 realise(const incidence::triangle3& t, transform& tr) {
+    return {moved(t.a, tr), moved(t.b, tr), moved(t.c, tr)};
+}
 inline incidence::tetrahedron3 realise(const incidence::tetrahedron3& t, transform& tr) {
     return {moved(t.a, tr), moved(t.b, tr), moved(t.c, tr), moved(t.d, tr)};
 }
-inline incidence::aabb3 realise(const incidence::aabb3& b, transform& tr) { return ordered(incidence::aabb3{moved(b.min, tr), moved(b.max, tr)}); }
+inline incidence::aabb3 realise(const incidence::aabb3& b, transform& tr) {
+    return ordered(incidence::aabb3{moved(b.min, tr), moved(b.max, tr)});
+}
 inline incidence::plane3 realise(const plane_proto& p, transform& tr) {
     const incidence::point3 x = moved(p.x, tr);
     transform unscaled = tr; // a normal is not scaled with the coordinates (n . x would overflow)
@@ -80,20 +84,20 @@ Seg segment_at(rng& r, P X, V d) {
     const double f = step(r), g = step(r);
     Seg s;
     switch (r.integer(0, 3)) {
-    case 0: s = {X, X + f * d}; break;             // starts at X
-    case 1: s = {X - f * d, X + g * d}; break;     // passes through X
+    case 0: s = {X, X + f * d}; break;               // starts at X
+    case 1: s = {X - f * d, X + g * d}; break;       // passes through X
     case 2: s = {X + f * d, X + (f + g) * d}; break; // X just before its start
-    default: s = {X, X}; break;                    // a point
+    default: s = {X, X}; break;                      // a point
     }
     return r.coin() ? s : Seg{s.b, s.a};
 }
 template <class Ray, class P, class V>
 Ray ray_at(rng& r, P X, V d) {
     switch (r.integer(0, 3)) {
-    case 0: return {X, d};                  // origin at X
-    case 1: return {X - step(r) * d, d};    // X ahead
-    case 2: return {X + step(r) * d, d};    // X behind
-    default: return {X, V{}};               // a point
+    case 0: return {X, d};               // origin at X
+    case 1: return {X - step(r) * d, d}; // X ahead
+    case 2: return {X + step(r) * d, d}; // X behind
+    default: return {X, V{}};            // a point
     }
 }
 template <class Line, class P, class V>
@@ -131,7 +135,7 @@ inline incidence::tetrahedron3 tetrahedron_at(rng& r, incidence::point3 X, incid
     const vec3 e1 = contain || r.coin() ? d : small_dir(r), e2 = small_dir(r);
     vec3 e3 = small_dir(r);
     if (r.integer(0, 11) == 0) e3 = r.coin() ? e1 + e2 : e1 * 2.0 - e2 * 0.5;
-    static constexpr double w[][3] = {{0, 0, 0},      {1, 0, 0},         {0.5, 0, 0},     {0.5, 0.5, 0},  {0.25, 0.25, 0},
+    static constexpr double w[][3] = {{0, 0, 0},         {1, 0, 0},          {0.5, 0, 0},     {0.5, 0.5, 0},    {0.25, 0.25, 0},
                                       {0.25, 0.25, 0.5}, {0.25, 0.25, 0.25}, {-0.25, 0.5, 0}, {0.5, 0.5, 0.25}, {0.75, 0.5, 0}};
     const auto& c = w[r.integer(0, 9)];
     const incidence::point3 a = X - e1 * c[0] - e2 * c[1] - e3 * c[2];
@@ -261,32 +265,32 @@ std::pair<A, B> flat_near(rng& r, bool any_scale = true) {
     using namespace incidence;
     if constexpr (flat2_shape<A>) return flat_near2<A, B>(r, any_scale);
     else {
-    const point3 X = small_point(r);
-    const vec3 d = small_dir(r);
-    typename proto_of<A>::type a{};
-    typename proto_of<B>::type b{};
-    switch (r.integer(0, 2)) {
-    case 0: // meet at X, each along its own direction
-        a = place<A>(r, X, d, false);
-        b = place<B>(r, X, r.integer(0, 3) == 0 ? d : small_dir(r), false);
-        break;
-    case 1: { // parallel: b along d (or -d, 2d), collinear or beside a in a common plane
-        a = place<A>(r, X, d, true);
-        const double k = r.integer(0, 2) == 0 ? -1.0 : (r.coin() ? 1.0 : 2.0);
-        const vec3 side = r.coin() ? vec3{0, 0, 0} : cross(d, small_dir(r)) * (r.integer(1, 2) * 0.25);
-        b = place<B>(r, X + d * (r.integer(-6, 6) * 0.25) + side, d * k, true);
-        if constexpr (std::is_same_v<A, plane3> && std::is_same_v<B, plane3>) b.n = a.n * k; // parallel planes
-        break;
-    }
-    default: { // coplanar: b at another point of a plane through X that contains d
-        const vec3 e = small_dir(r);
-        a = place<A>(r, X, d, true);
-        b = place<B>(r, X + d * (r.integer(-4, 4) * 0.25) + e * (r.integer(-4, 4) * 0.25), r.coin() ? e : d + e, true);
-        break;
-    }
-    }
-    transform tr = random_transform(r, true, any_scale);
-    return {realise(a, tr), realise(b, tr)};
+        const point3 X = small_point(r);
+        const vec3 d = small_dir(r);
+        typename proto_of<A>::type a{};
+        typename proto_of<B>::type b{};
+        switch (r.integer(0, 2)) {
+        case 0: // meet at X, each along its own direction
+            a = place<A>(r, X, d, false);
+            b = place<B>(r, X, r.integer(0, 3) == 0 ? d : small_dir(r), false);
+            break;
+        case 1: { // parallel: b along d (or -d, 2d), collinear or beside a in a common plane
+            a = place<A>(r, X, d, true);
+            const double k = r.integer(0, 2) == 0 ? -1.0 : (r.coin() ? 1.0 : 2.0);
+            const vec3 side = r.coin() ? vec3{0, 0, 0} : cross(d, small_dir(r)) * (r.integer(1, 2) * 0.25);
+            b = place<B>(r, X + d * (r.integer(-6, 6) * 0.25) + side, d * k, true);
+            if constexpr (std::is_same_v<A, plane3> && std::is_same_v<B, plane3>) b.n = a.n * k; // parallel planes
+            break;
+        }
+        default: { // coplanar: b at another point of a plane through X that contains d
+            const vec3 e = small_dir(r);
+            a = place<A>(r, X, d, true);
+            b = place<B>(r, X + d * (r.integer(-4, 4) * 0.25) + e * (r.integer(-4, 4) * 0.25), r.coin() ? e : d + e, true);
+            break;
+        }
+        }
+        transform tr = random_transform(r, true, any_scale);
+        return {realise(a, tr), realise(b, tr)};
     }
 }
 
@@ -297,11 +301,13 @@ typename proto_of<S>::type random_shape(rng& r, bool in_plane, double c) {
     auto p = [&] { return point3{r.uniform(-1, 1), r.uniform(-1, 1), in_plane ? c : r.uniform(-1, 1)}; };
     auto v = [&] { return vec3{r.uniform(-1, 1), r.uniform(-1, 1), in_plane ? 0.0 : r.uniform(-1, 1)}; };
     if constexpr (std::is_same_v<S, point3>) return p();
-    else if constexpr (std::is_same_v<S, obb3>) return obb3{p(), random_frame(r), {r.uniform(0, 0.5), r.uniform(0, 0.5), r.uniform(0, 0.5)}};
+    else if constexpr (std::is_same_v<S, obb3>)
+        return obb3{p(), random_frame(r), {r.uniform(0, 0.5), r.uniform(0, 0.5), r.uniform(0, 0.5)}};
     else if constexpr (std::is_same_v<S, segment3>) return segment3{p(), p()};
     else if constexpr (std::is_same_v<S, ray3>) return ray3{p(), v()};
     else if constexpr (std::is_same_v<S, line3>) return line3{p(), v()};
-    else if constexpr (std::is_same_v<S, plane3>) return plane_proto{in_plane && r.coin() ? vec3{0, 0, 1} : v() + vec3{0, 0, r.uniform(-1, 1)}, p()};
+    else if constexpr (std::is_same_v<S, plane3>)
+        return plane_proto{in_plane && r.coin() ? vec3{0, 0, 1} : v() + vec3{0, 0, r.uniform(-1, 1)}, p()};
     else if constexpr (std::is_same_v<S, tetrahedron3>) { // in general position: faces in a common plane are the near cases
         auto q = [&] { return point3{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)}; };
         const point3 q0 = q(), q1 = q(), q2 = q();
@@ -337,16 +343,24 @@ std::pair<A, B> flat_random(rng& r, bool any_scale = true, std::optional<bool> i
 inline std::vector<incidence::point3> same_set(const incidence::point3& p) { return {p}; }
 inline std::vector<incidence::segment3> same_set(const incidence::segment3& s) { return {{s.b, s.a}}; }
 inline std::vector<incidence::ray3> same_set(const incidence::ray3& r) { return {{r.origin, r.direction * 2.0}}; }
-inline std::vector<incidence::line3> same_set(const incidence::line3& l) { return {{l.origin, l.direction * -1.0}, {l.origin, l.direction * 2.0}}; }
-inline std::vector<incidence::plane3> same_set(const incidence::plane3& p) { return {{p.normal * -1.0, -p.offset}, {p.normal * 2.0, p.offset * 2.0}}; }
+inline std::vector<incidence::line3> same_set(const incidence::line3& l) {
+    return {{l.origin, l.direction * -1.0}, {l.origin, l.direction * 2.0}};
+}
+inline std::vector<incidence::plane3> same_set(const incidence::plane3& p) {
+    return {{p.normal * -1.0, -p.offset}, {p.normal * 2.0, p.offset * 2.0}};
+}
 inline std::vector<incidence::triangle3> same_set(const incidence::triangle3& t) { return {{t.b, t.c, t.a}, {t.a, t.c, t.b}}; }
-inline std::vector<incidence::tetrahedron3> same_set(const incidence::tetrahedron3& t) { return {{t.b, t.c, t.d, t.a}, {t.a, t.c, t.b, t.d}}; }
+inline std::vector<incidence::tetrahedron3> same_set(const incidence::tetrahedron3& t) {
+    return {{t.b, t.c, t.d, t.a}, {t.a, t.c, t.b, t.d}};
+}
 inline std::vector<incidence::aabb3> same_set(const incidence::aabb3& b) { return {b}; }
 inline std::vector<incidence::obb3> same_set(const incidence::obb3& b) { return {rewritten(b, 0), rewritten(b, 1)}; }
 inline std::vector<incidence::point2> same_set(const incidence::point2& p) { return {p}; }
 inline std::vector<incidence::segment2> same_set(const incidence::segment2& s) { return {{s.b, s.a}}; }
 inline std::vector<incidence::ray2> same_set(const incidence::ray2& r) { return {{r.origin, 2.0 * r.direction}}; }
-inline std::vector<incidence::line2> same_set(const incidence::line2& l) { return {{l.origin, -1.0 * l.direction}, {l.origin, 2.0 * l.direction}}; }
+inline std::vector<incidence::line2> same_set(const incidence::line2& l) {
+    return {{l.origin, -1.0 * l.direction}, {l.origin, 2.0 * l.direction}};
+}
 
 // Translated by v (a plane's offset moves by n . v); std::nullopt unless every coordinate
 // moved exactly.
@@ -482,7 +496,8 @@ std::pair<A, B> inside_case(rng& r) {
         int n = 4;
         if constexpr (std::is_same_v<A, aabb3>) {
             box = box_at(r, small_point(r));
-            for (int i = 0; i < 4; ++i) v[i] = point3{(i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y, i == 3 ? box.max.z : box.min.z};
+            for (int i = 0; i < 4; ++i)
+                v[i] = point3{(i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y, i == 3 ? box.max.z : box.min.z};
         } else {
             t = tetrahedron_at(r, small_point(r), small_dir(r), false);
             v[0] = t.a, v[1] = t.b, v[2] = t.c, v[3] = t.d;

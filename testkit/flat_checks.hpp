@@ -35,8 +35,10 @@ void flat_oracle(const std::string& name, long n, double approx_bound) {
     // an offset n . x that overflowed (random shapes far out at 2^500): outside the oracle's domain
     auto skip = [](const A& a, const B& b) {
         const auto fa = to_flat(a), fb = to_flat(b);
-        for (double x : fa.v) if (!std::isfinite(x)) return true;
-        for (double x : fb.v) if (!std::isfinite(x)) return true;
+        for (double x : fa.v)
+            if (!std::isfinite(x)) return true;
+        for (double x : fb.v)
+            if (!std::isfinite(x)) return true;
         return false;
     };
     auto truth = [](const A& a, const B& b) { return flat_truth(a, b); };
@@ -86,7 +88,8 @@ void flat_symmetries(const std::string& name, long n) {
         const auto bt = translated(b, v);
         if (at && bt) same(intersects(*at, *bt));
     }
-    std::printf("[cases] %s rewrites and exact translations: %ld checked (%ld pairs intersect), %ld differ\n", name.c_str(), checked, yes, bad);
+    std::printf("[cases] %s rewrites and exact translations: %ld checked (%ld pairs intersect), %ld differ\n", name.c_str(), checked, yes,
+                bad);
     CHECK(bad == 0);
     CHECK(yes > 0);
 }

@@ -65,7 +65,9 @@ S scaled(const S& s, int e) {
 }
 inline plane3 scaled(const plane3& p, int e) { return {p.normal, std::ldexp(p.offset, e)}; } // n . (2^e x) = 2^e offset
 inline obb3 scaled(const obb3& b, int e) { // the axes are directions: only the centre and extents scale
-    return {scaled(b.center, e), b.axes, {std::ldexp(b.half_extents[0], e), std::ldexp(b.half_extents[1], e), std::ldexp(b.half_extents[2], e)}};
+    return {scaled(b.center, e),
+            b.axes,
+            {std::ldexp(b.half_extents[0], e), std::ldexp(b.half_extents[1], e), std::ldexp(b.half_extents[2], e)}};
 }
 inline aabb3 tidy(aabb3 b) { // a nudge may swap a flat box's bounds
     if (b.min.x > b.max.x) std::swap(b.min.x, b.max.x);
@@ -93,7 +95,9 @@ inline kdop<14> tidy(kdop<14> b) { // a nudge may invert a flat slab
     return b;
 }
 template <class S>
-S tidy(const S& s) { return s; }
+S tidy(const S& s) {
+    return s;
+}
 
 template <class S>
 S nudged(const S& s, int ulps, rng& r) {
@@ -116,7 +120,7 @@ inline point3 int_point(rng& r, int lim = 512) {
 }
 // a^2 + b^2 + c^2 = d^2, with random signs and order: an exact point on a sphere of radius d.
 inline std::pair<vec3, double> pythagorean(rng& r) {
-    static constexpr int q[][4] = {{1, 2, 2, 3}, {2, 3, 6, 7}, {1, 4, 8, 9}, {4, 4, 7, 9}, {2, 6, 9, 11},
+    static constexpr int q[][4] = {{1, 2, 2, 3},  {2, 3, 6, 7},   {1, 4, 8, 9},    {4, 4, 7, 9},    {2, 6, 9, 11},
                                    {6, 6, 7, 11}, {3, 4, 12, 13}, {2, 10, 11, 15}, {1, 12, 12, 17}, {8, 9, 12, 17}};
     const auto& e = q[r.integer(0, 9)];
     double v[3] = {double(e[0]), double(e[1]), double(e[2])};
@@ -235,8 +239,7 @@ struct near_boundary<aabb3, ray3> {
             const auto [b, p] = near_boundary<aabb3, point3>::touching(r);
             // Through a boundary point p from outside: the ray grazes an edge/corner or enters.
             const point3 o = p + int_vec(r, 600);
-            if (o.x >= b.min.x && o.x <= b.max.x && o.y >= b.min.y && o.y <= b.max.y && o.z >= b.min.z && o.z <= b.max.z)
-                continue;
+            if (o.x >= b.min.x && o.x <= b.max.x && o.y >= b.min.y && o.y <= b.max.y && o.z >= b.min.z && o.z <= b.max.z) continue;
             return {b, ray3{o, p - o}};
         }
     }
@@ -449,7 +452,8 @@ struct near_boundary<obb3, triangle3> {
     static std::pair<obb3, triangle3> touching(rng& r) { // a vertex at p, the rest outwards
         const auto t = touching_obb(r);
         for (;;) {
-            const triangle3 u{t.p, t.p + t.o * double(r.integer(1, 200)) + int_vec(r, 100), t.p + t.o * double(r.integer(1, 200)) + int_vec(r, 100)};
+            const triangle3 u{t.p, t.p + t.o * double(r.integer(1, 200)) + int_vec(r, 100),
+                              t.p + t.o * double(r.integer(1, 200)) + int_vec(r, 100)};
             const vec3 n = cross(u.b - u.a, u.c - u.a);
             if (dot(n, n) > 1e4) return {t.box, u};
         }
@@ -470,9 +474,8 @@ struct near_boundary<obb3, plane3> {
 // A tetrahedron has X at a vertex, an edge point or a face point (a box: at a corner, an edge or
 // face point), so the other shape passes through its boundary there.
 template <class S>
-concept flat_shape = std::is_same_v<S, point3> || std::is_same_v<S, segment3> || std::is_same_v<S, ray3> ||
-                     std::is_same_v<S, line3> || std::is_same_v<S, plane3> || std::is_same_v<S, triangle3> ||
-                     std::is_same_v<S, tetrahedron3>;
+concept flat_shape = std::is_same_v<S, point3> || std::is_same_v<S, segment3> || std::is_same_v<S, ray3> || std::is_same_v<S, line3> ||
+                     std::is_same_v<S, plane3> || std::is_same_v<S, triangle3> || std::is_same_v<S, tetrahedron3>;
 inline tetrahedron3 int_tetrahedron(rng& r) {
     for (;;) {
         const point3 a = int_point(r, 400);
@@ -483,7 +486,7 @@ inline tetrahedron3 int_tetrahedron(rng& r) {
 inline point3 boundary_point(const tetrahedron3& t, rng& r) {
     const triangle3 f = t.face(r.integer(0, 3));
     const int w = r.integer(0, 2);
-    if (w == 0) return boundary_point(f, r);                     // a vertex or an edge point
+    if (w == 0) return boundary_point(f, r);                    // a vertex or an edge point
     return f.a + (f.b - f.a) * 0.25 + (f.c - f.a) * (w * 0.25); // inside the face
 }
 template <class S>
@@ -517,7 +520,7 @@ S through2(rng& r, point2 X) {
     else return line2{X - double(r.integer(0, 3)) * d, d};
 }
 template <class A, class B>
-    requires(flat2_shape<A> && flat2_shape<B>)
+requires(flat2_shape<A> && flat2_shape<B>)
 struct near_boundary<A, B> {
     static std::pair<A, B> touching(rng& r) {
         const point2 X{double(r.integer(-400, 400)), double(r.integer(-400, 400))};
@@ -526,7 +529,7 @@ struct near_boundary<A, B> {
     }
 };
 template <class A, class B>
-    requires(flat_shape<A> && flat_shape<B>)
+requires(flat_shape<A> && flat_shape<B>)
 struct near_boundary<A, B> {
     static std::pair<A, B> touching(rng& r) {
         const point3 X = int_point(r, 400);
@@ -745,7 +748,8 @@ inline halfspace_touch<frustum3> touching_frustum(rng& r) {
     const vec3 e = E - point3{0, 0, 0};
     auto through = [&](vec3 n, point3 x) { return plane3{n, dot(n, x - point3{0, 0, 0})}; };
     const frustum3 fr{{through(-f, E + f * zn), through(f, E + f * zf), plane3{-rt * p[0] - f * q[0], dot(-rt * p[0] - f * q[0], e)},
-                       plane3{rt * p[1] - f * q[1], dot(rt * p[1] - f * q[1], e)}, plane3{-up * p[2] - f * q[2], dot(-up * p[2] - f * q[2], e)},
+                       plane3{rt * p[1] - f * q[1], dot(rt * p[1] - f * q[1], e)},
+                       plane3{-up * p[2] - f * q[2], dot(-up * p[2] - f * q[2], e)},
                        plane3{up * p[3] - f * q[3], dot(up * p[3] - f * q[3], e)}}};
     const double z = r.coin() ? zn : zf;
     const bool right = r.coin(), top = r.coin();
@@ -764,7 +768,7 @@ inline vec3 outward(rng& r, vec3 o, int lim) {
     return dot(o, w) < 0 ? w * -1.0 : w;
 }
 template <class P, class B>
-    requires(std::is_same_v<P, convex_polyhedron3> || std::is_same_v<P, frustum3>)
+requires(std::is_same_v<P, convex_polyhedron3> || std::is_same_v<P, frustum3>)
 struct near_boundary<P, B> {
     static std::pair<P, B> touching(rng& r) {
         const auto t = touching_halfspaces<P>(r);
@@ -835,7 +839,7 @@ struct near_boundary<convex_polyhedron3, frustum3> { // the polyhedron first, as
     }
 };
 template <class P>
-    requires(std::is_same_v<P, convex_polyhedron3> || std::is_same_v<P, frustum3>)
+requires(std::is_same_v<P, convex_polyhedron3> || std::is_same_v<P, frustum3>)
 struct near_boundary<aabb3, P> { // the box first, as in the catalog
     static std::pair<aabb3, P> touching(rng& r) {
         const auto [p, b] = near_boundary<P, aabb3>::touching(r);

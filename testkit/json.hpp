@@ -9,8 +9,17 @@ namespace audit {
 
 class json {
 public:
-    json& open(char c) { value_prefix(); out_ += c; first_.push_back(true); return *this; }
-    json& close(char c) { out_ += c; first_.pop_back(); return *this; }
+    json& open(char c) {
+        value_prefix();
+        out_ += c;
+        first_.push_back(true);
+        return *this;
+    }
+    json& close(char c) {
+        out_ += c;
+        first_.pop_back();
+        return *this;
+    }
     json& object() { return open('{'); }
     json& end_object() { return close('}'); }
     json& array() { return open('['); }
@@ -22,21 +31,40 @@ public:
         after_key_ = true;
         return *this;
     }
-    json& str(const std::string& s) { value_prefix(); quote(s); return *this; }
+    json& str(const std::string& s) {
+        value_prefix();
+        quote(s);
+        return *this;
+    }
     json& num(double v) {
         value_prefix();
-        if (!std::isfinite(v)) { out_ += "null"; return *this; }
+        if (!std::isfinite(v)) {
+            out_ += "null";
+            return *this;
+        }
         char buf[32];
         std::snprintf(buf, sizeof buf, "%.17g", v);
         out_ += buf;
         return *this;
     }
-    json& num(long v) { value_prefix(); out_ += std::to_string(v); return *this; }
+    json& num(long v) {
+        value_prefix();
+        out_ += std::to_string(v);
+        return *this;
+    }
     json& num(int v) { return num(long(v)); }
     json& num(unsigned v) { return num(long(v)); }
     json& num(std::size_t v) { return num(long(v)); }
-    json& boolean(bool b) { value_prefix(); out_ += b ? "true" : "false"; return *this; }
-    json& null() { value_prefix(); out_ += "null"; return *this; }
+    json& boolean(bool b) {
+        value_prefix();
+        out_ += b ? "true" : "false";
+        return *this;
+    }
+    json& null() {
+        value_prefix();
+        out_ += "null";
+        return *this;
+    }
     // key/value shorthands
     json& kv(const std::string& k, const std::string& v) { return key(k).str(v); }
     json& kv(const std::string& k, const char* v) { return key(k).str(v); }

@@ -38,8 +38,8 @@ struct is_kdop<incidence::kdop<M>> : std::true_type {};
 
 // The k-DOPs of two clouds moved by one transform (nullopt when a bound overflows).
 template <int K, int M>
-std::optional<std::pair<incidence::kdop<K>, incidence::kdop<M>>> kdops_of(std::vector<incidence::point3>& P, std::vector<incidence::point3>& Q,
-                                                                          transform tr) {
+std::optional<std::pair<incidence::kdop<K>, incidence::kdop<M>>> kdops_of(std::vector<incidence::point3>& P,
+                                                                          std::vector<incidence::point3>& Q, transform tr) {
     for (auto& p : P) p = moved(p, tr);
     for (auto& p : Q) p = moved(p, tr);
     const auto a = kdop_around<K>(P);
@@ -61,7 +61,8 @@ std::optional<std::pair<incidence::kdop<K>, incidence::kdop<M>>> kdop_pair_near(
     const point3 c = small_point(r);
     std::vector<point3> P, Q;
     auto cloud = [&](std::vector<point3>& v, point3 at, int n) {
-        for (int i = 0; i < n; ++i) v.push_back({at.x + r.integer(-8, 8) * 0.25, at.y + r.integer(-8, 8) * 0.25, at.z + r.integer(-8, 8) * 0.25});
+        for (int i = 0; i < n; ++i)
+            v.push_back({at.x + r.integer(-8, 8) * 0.25, at.y + r.integer(-8, 8) * 0.25, at.z + r.integer(-8, 8) * 0.25});
     };
     cloud(P, c, r.integer(4, 8));
     const auto dirs = kdop<26>::directions();
@@ -84,7 +85,8 @@ std::optional<std::pair<incidence::kdop<K>, incidence::kdop<M>>> kdop_pair_near(
         }
     } else if (mode == 1) {
         vec3 t = X - Y;
-        const vec3 slide = cross(vec3{double(ds.x), double(ds.y), double(ds.z)}, vec3{r.integer(-4, 4) * 0.25, r.integer(-4, 4) * 0.25, r.integer(-4, 4) * 0.25});
+        const vec3 slide = cross(vec3{double(ds.x), double(ds.y), double(ds.z)},
+                                 vec3{r.integer(-4, 4) * 0.25, r.integer(-4, 4) * 0.25, r.integer(-4, 4) * 0.25});
         t = vec3{t.x + slide.x, t.y + slide.y, t.z + slide.z};
         for (const auto& p : P) Q.push_back({p.x + t.x, p.y + t.y, p.z + t.z});
     } else {
@@ -96,7 +98,8 @@ std::optional<std::pair<incidence::kdop<K>, incidence::kdop<M>>> kdop_pair_near(
 inline std::vector<incidence::point3> random_cloud(rng& r) {
     const incidence::point3 c{r.uniform(-0.6, 0.6), r.uniform(-0.6, 0.6), r.uniform(-0.6, 0.6)};
     std::vector<incidence::point3> v;
-    for (int i = r.integer(4, 8); i > 0; --i) v.push_back({c.x + r.uniform(-0.4, 0.4), c.y + r.uniform(-0.4, 0.4), c.z + r.uniform(-0.4, 0.4)});
+    for (int i = r.integer(4, 8); i > 0; --i)
+        v.push_back({c.x + r.uniform(-0.4, 0.4), c.y + r.uniform(-0.4, 0.4), c.z + r.uniform(-0.4, 0.4)});
     return v;
 }
 // Two k-DOPs, random: the k-DOPs of two clouds of 4 to 8 random points within 0.4 of centres in
@@ -114,36 +117,36 @@ std::optional<std::pair<incidence::kdop<K>, B>> kdop_near(rng& r) {
     using namespace incidence;
     if constexpr (is_kdop<B>::value) return kdop_pair_near<K, B::slabs * 2>(r);
     else {
-    const point3 c = small_point(r);
-    std::vector<point3> pts;
-    const int n = r.integer(4, 8);
-    for (int i = 0; i < n; ++i)
-        pts.push_back({c.x + r.integer(-8, 8) * 0.25, c.y + r.integer(-8, 8) * 0.25, c.z + r.integer(-8, 8) * 0.25});
-    const auto dirs = kdop<K>::directions();
-    const unsigned slab = static_cast<unsigned>(r.integer(0, K / 2 - 1));
-    const direction3 ds = dirs[slab];
-    const bool top = r.coin();
-    point3 X = pts[0];
-    auto dotd = [&](point3 p) { return ds.x * p.x + ds.y * p.y + ds.z * p.z; }; // exact: small dyadics
-    for (const auto& p : pts)
-        if (top ? dotd(p) > dotd(X) : dotd(p) < dotd(X)) X = p;
-    if (r.integer(0, 5) == 0) X = pts[0];
-    const vec3 nd{double(ds.x), double(ds.y), double(ds.z)};
-    vec3 d = small_dir(r);
-    if (r.coin()) { // along the face of the extreme direction
-        d = cross(nd, d);
-        if (d.x == 0 && d.y == 0 && d.z == 0) d = cross(nd, vec3{1, 2, 3});
-    }
-    auto b = place<B>(r, X, d, r.coin());
-    if constexpr (std::is_same_v<B, plane3>) // the face's own plane through X, either orientation: touching
-        if (r.integer(0, 2) == 0) b = {r.coin() ? nd : -nd, X};
-    if constexpr (std::is_same_v<B, tetrahedron3>)
-        if (r.integer(0, 2) == 0) b = tetrahedron_around(r, X, top ? nd : -nd);
-    transform tr = random_transform(r, true, true);
-    for (auto& p : pts) p = moved(p, tr);
-    const auto kd = kdop_around<K>(pts);
-    if (!kd) return std::nullopt;
-    return std::pair{*kd, realise(b, tr)};
+        const point3 c = small_point(r);
+        std::vector<point3> pts;
+        const int n = r.integer(4, 8);
+        for (int i = 0; i < n; ++i)
+            pts.push_back({c.x + r.integer(-8, 8) * 0.25, c.y + r.integer(-8, 8) * 0.25, c.z + r.integer(-8, 8) * 0.25});
+        const auto dirs = kdop<K>::directions();
+        const unsigned slab = static_cast<unsigned>(r.integer(0, K / 2 - 1));
+        const direction3 ds = dirs[slab];
+        const bool top = r.coin();
+        point3 X = pts[0];
+        auto dotd = [&](point3 p) { return ds.x * p.x + ds.y * p.y + ds.z * p.z; }; // exact: small dyadics
+        for (const auto& p : pts)
+            if (top ? dotd(p) > dotd(X) : dotd(p) < dotd(X)) X = p;
+        if (r.integer(0, 5) == 0) X = pts[0];
+        const vec3 nd{double(ds.x), double(ds.y), double(ds.z)};
+        vec3 d = small_dir(r);
+        if (r.coin()) { // along the face of the extreme direction
+            d = cross(nd, d);
+            if (d.x == 0 && d.y == 0 && d.z == 0) d = cross(nd, vec3{1, 2, 3});
+        }
+        auto b = place<B>(r, X, d, r.coin());
+        if constexpr (std::is_same_v<B, plane3>) // the face's own plane through X, either orientation: touching
+            if (r.integer(0, 2) == 0) b = {r.coin() ? nd : -nd, X};
+        if constexpr (std::is_same_v<B, tetrahedron3>)
+            if (r.integer(0, 2) == 0) b = tetrahedron_around(r, X, top ? nd : -nd);
+        transform tr = random_transform(r, true, true);
+        for (auto& p : pts) p = moved(p, tr);
+        const auto kd = kdop_around<K>(pts);
+        if (!kd) return std::nullopt;
+        return std::pair{*kd, realise(b, tr)};
     }
 }
 template <int K, class B>
@@ -151,19 +154,22 @@ std::optional<std::pair<incidence::kdop<K>, B>> kdop_random(rng& r) {
     using namespace incidence;
     if constexpr (is_kdop<B>::value) return kdop_pair_random<K, B::slabs * 2>(r);
     else {
-    const point3 c{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)};
-    std::vector<point3> pts;
-    const int n = r.integer(4, 8);
-    for (int i = 0; i < n; ++i) pts.push_back({c.x + r.uniform(-0.25, 0.25), c.y + r.uniform(-0.25, 0.25), c.z + r.uniform(-0.25, 0.25)});
-    transform tr = random_transform(r, false, true);
-    for (auto& p : pts) p = moved(p, tr);
-    const auto kd = kdop_around<K>(pts);
-    if (!kd) return std::nullopt;
-    return std::pair{*kd, realise(random_shape<B>(r, false, 0.0), tr)};
+        const point3 c{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)};
+        std::vector<point3> pts;
+        const int n = r.integer(4, 8);
+        for (int i = 0; i < n; ++i)
+            pts.push_back({c.x + r.uniform(-0.25, 0.25), c.y + r.uniform(-0.25, 0.25), c.z + r.uniform(-0.25, 0.25)});
+        transform tr = random_transform(r, false, true);
+        for (auto& p : pts) p = moved(p, tr);
+        const auto kd = kdop_around<K>(pts);
+        if (!kd) return std::nullopt;
+        return std::pair{*kd, realise(random_shape<B>(r, false, 0.0), tr)};
     }
 }
 template <int K>
-std::vector<incidence::kdop<K>> same_set(const incidence::kdop<K>& b) { return {b}; }
+std::vector<incidence::kdop<K>> same_set(const incidence::kdop<K>& b) {
+    return {b};
+}
 template <int K>
 bool finite_shape(const incidence::kdop<K>& b) {
     for (unsigned i = 0; i < b.min.size(); ++i)

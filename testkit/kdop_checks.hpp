@@ -25,7 +25,10 @@ void kdop_oracle(const std::string& name, long n, double approx_bound) {
                 ok = finite_shape(c->second);
                 if (ok) truth = oracle::lp_intersect_verified(lp(c->first), lp(c->second));
             }
-            if (!truth) { ++skipped; continue; } // overflowed, or the LP's certificate check declined
+            if (!truth) {
+                ++skipped;
+                continue;
+            } // overflowed, or the LP's certificate check declined
             check_pair(t, c->first, c->second, *truth, approx_bound, [&] { return shape_str(c->first) + " " + shape_str(c->second); });
             held += held_whole(c->first, c->second, *truth);
         }
@@ -62,8 +65,8 @@ void kdop_symmetries(const std::string& name, long n) {
         const auto bt = translated(b, v);
         if (at && bt) same(intersects(*at, *bt));
     }
-    std::printf("[cases] %s %d-dop rewrites and exact translations: %ld checked (%ld pairs intersect), %ld differ\n", name.c_str(), K, checked,
-                yes, bad);
+    std::printf("[cases] %s %d-dop rewrites and exact translations: %ld checked (%ld pairs intersect), %ld differ\n", name.c_str(), K,
+                checked, yes, bad);
     CHECK(bad == 0);
     CHECK(yes > 0);
 }

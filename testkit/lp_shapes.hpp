@@ -21,14 +21,19 @@ inline oracle::convex_set lp(const incidence::obb3& b) {
 inline oracle::convex_set lp(const incidence::aabb3& b) {
     oracle::convex_set s;
     s.points = {{0, 0, 0}};
-    s.generators = {{{1, 0, 0}, true, true, b.min.x, b.max.x}, {{0, 1, 0}, true, true, b.min.y, b.max.y}, {{0, 0, 1}, true, true, b.min.z, b.max.z}};
+    s.generators = {
+        {{1, 0, 0}, true, true, b.min.x, b.max.x}, {{0, 1, 0}, true, true, b.min.y, b.max.y}, {{0, 0, 1}, true, true, b.min.z, b.max.z}};
     return s;
 }
 inline oracle::convex_set lp(const incidence::point3& p) { return {{a3(p)}, {}, false, {}, 0, {}, {}}; }
 inline oracle::convex_set lp(const incidence::segment3& g) { return {{a3(g.a), a3(g.b)}, {}, false, {}, 0, {}, {}}; }
 inline oracle::convex_set lp(const incidence::triangle3& t) { return {{a3(t.a), a3(t.b), a3(t.c)}, {}, false, {}, 0, {}, {}}; }
-inline oracle::convex_set lp(const incidence::ray3& g) { return {{a3(g.origin)}, {{a3(g.direction), true, false, 0, 0}}, false, {}, 0, {}, {}}; }
-inline oracle::convex_set lp(const incidence::line3& g) { return {{a3(g.origin)}, {{a3(g.direction), false, false, 0, 0}}, false, {}, 0, {}, {}}; }
+inline oracle::convex_set lp(const incidence::ray3& g) {
+    return {{a3(g.origin)}, {{a3(g.direction), true, false, 0, 0}}, false, {}, 0, {}, {}};
+}
+inline oracle::convex_set lp(const incidence::line3& g) {
+    return {{a3(g.origin)}, {{a3(g.direction), false, false, 0, 0}}, false, {}, 0, {}, {}};
+}
 inline oracle::convex_set lp(const incidence::tetrahedron3& t) { return {{a3(t.a), a3(t.b), a3(t.c), a3(t.d)}, {}, false, {}, 0, {}, {}}; }
 inline oracle::convex_set lp(const incidence::plane3& p) { return {{}, {}, true, a3(p.normal), p.offset, {}, {}}; }
 template <int N>
@@ -40,11 +45,11 @@ oracle::convex_set lp(const incidence::kdop<N>& b) {
     return s;
 }
 
-
 // A convex polyhedron or a frustum: its half-spaces n . x <= offset.
 inline oracle::convex_set lp(const incidence::convex_polyhedron3& c) {
     oracle::convex_set s;
-    for (int i = 0; i < c.count; ++i) s.halfspaces.push_back({a3(c.planes[static_cast<unsigned>(i)].normal), c.planes[static_cast<unsigned>(i)].offset});
+    for (int i = 0; i < c.count; ++i)
+        s.halfspaces.push_back({a3(c.planes[static_cast<unsigned>(i)].normal), c.planes[static_cast<unsigned>(i)].offset});
     return s;
 }
 inline oracle::convex_set lp(const incidence::frustum3& f) {
@@ -70,7 +75,8 @@ template <class A, class B>
 bool contained_truth(const A& a, const B& b) {
     if constexpr (std::is_same_v<B, incidence::obb3>) {
         const double c[3] = {b.center.x, b.center.y, b.center.z};
-        const double axes[9] = {b.axes[0].x, b.axes[0].y, b.axes[0].z, b.axes[1].x, b.axes[1].y, b.axes[1].z, b.axes[2].x, b.axes[2].y, b.axes[2].z};
+        const double axes[9] = {b.axes[0].x, b.axes[0].y, b.axes[0].z, b.axes[1].x, b.axes[1].y,
+                                b.axes[1].z, b.axes[2].x, b.axes[2].y, b.axes[2].z};
         return oracle::box_in_constraints(c, axes, b.half_extents.data(), lp(a));
     } else {
         bool truth = true;
@@ -96,9 +102,10 @@ bool held_whole(const A& a, const B& b, bool truth) {
     } else return false;
 }
 inline void print_held_whole(const std::string& name, long held) {
-    std::printf("[cases] %s: decided by the last step (a tetrahedron holding the set whole, a box meeting the set with its centre outside it) in "
-                "%ld cases\n",
-                name.c_str(), held);
+    std::printf(
+        "[cases] %s: decided by the last step (a tetrahedron holding the set whole, a box meeting the set with its centre outside it) in "
+        "%ld cases\n",
+        name.c_str(), held);
 }
 
 } // namespace support

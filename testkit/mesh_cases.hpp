@@ -100,7 +100,8 @@ template <class B>
 B halfspace_set_at(rng& r, incidence::point3 X, transform& tr) {
     using namespace incidence;
     std::vector<point3> pts{X};
-    for (int i = r.integer(3, 7); i > 0; --i) pts.push_back(X + vec3{r.integer(-4, 4) * 0.0625, r.integer(-4, 4) * 0.0625, r.integer(-4, 4) * 0.0625});
+    for (int i = r.integer(3, 7); i > 0; --i)
+        pts.push_back(X + vec3{r.integer(-4, 4) * 0.0625, r.integer(-4, 4) * 0.0625, r.integer(-4, 4) * 0.0625});
     if constexpr (std::is_same_v<B, frustum3>) {
         halfspace_set h = frustum_near_set(r);
         for (auto& p : h.planes) p.x = X + (p.x - h.X) * 0.0625;
@@ -337,7 +338,7 @@ inline incidence::aabb3 box_in_mesh_near(rng& r, mesh_store& store) {
         const double c = axis == 0 ? centre.x : (axis == 1 ? centre.y : centre.z);
         if (*lo == *hi) {
             if (r.integer(0, 3) == 0) *(c < *lo ? hi : lo) = *lo + (*lo - c); // outward
-            else *(c < *lo ? lo : hi) = c;                                     // inward
+            else *(c < *lo ? lo : hi) = c;                                    // inward
         }
         break;
     }
@@ -407,7 +408,8 @@ inline std::array<int, 3> glued_blocks(rng& r, mesh_store& store) {
     store.v.clear();
     store.t.clear();
     const int how = r.integer(0, 3); // 0, 1 beside; 2 overlapping; 3 nested
-    const std::array<int, 3> s1 = how == 3 ? std::array<int, 3>{3, 3, 3} : std::array<int, 3>{r.integer(1, 3), r.integer(1, 3), r.integer(1, 3)};
+    const std::array<int, 3> s1 =
+        how == 3 ? std::array<int, 3>{3, 3, 3} : std::array<int, 3>{r.integer(1, 3), r.integer(1, 3), r.integer(1, 3)};
     block_mesh(r, {0, 0, 0}, s1, false, store);
     std::array<int, 3> lo2{}, s2{r.integer(1, 3), r.integer(1, 3), r.integer(1, 3)};
     for (unsigned k = 0; k < 3; ++k) lo2[k] = r.integer(-1, s1[k] - 1);

@@ -39,7 +39,10 @@ void mesh_oracle(const std::string& name, long n, double approx_bound) {
             for (const auto& p : m.vertices) finite = finite && std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
             if constexpr (std::is_same_v<B, plane3>) finite = finite && std::isfinite(b.offset);
             if constexpr (is_set_for_mesh<B>::value) finite = finite && finite_shape(b);
-            if (!finite) { ++skipped; continue; } // a far translation that overflowed
+            if (!finite) {
+                ++skipped;
+                continue;
+            } // a far translation that overflowed
             bool truth = false;
             try {
                 truth = mesh_truth(m, b);
@@ -84,12 +87,14 @@ void mesh_symmetries(const std::string& name, long n) {
         };
         for (int how = 0; how < 2; ++how) { // every triangle rotated; every triangle reversed
             rewritten = store;
-            for (auto& t : rewritten.t) t = how == 0 ? std::array<std::uint32_t, 3>{t[1], t[2], t[0]} : std::array<std::uint32_t, 3>{t[0], t[2], t[1]};
+            for (auto& t : rewritten.t)
+                t = how == 0 ? std::array<std::uint32_t, 3>{t[1], t[2], t[0]} : std::array<std::uint32_t, 3>{t[0], t[2], t[1]};
             same(intersects(rewritten.view(), b));
         }
         if constexpr (!std::is_same_v<B, mesh3> && !std::is_same_v<B, obb3>) {
             for (const auto& b2 : same_set(b)) same(intersects(m, b2));
-            const vec3 v{std::ldexp(double(r.integer(-64, 64)), r.integer(-4, 20)), std::ldexp(double(r.integer(-64, 64)), r.integer(-4, 20)),
+            const vec3 v{std::ldexp(double(r.integer(-64, 64)), r.integer(-4, 20)),
+                         std::ldexp(double(r.integer(-64, 64)), r.integer(-4, 20)),
                          std::ldexp(double(r.integer(-64, 64)), r.integer(-4, 20))};
             rewritten = store;
             bool exact_move = true;
@@ -102,7 +107,8 @@ void mesh_symmetries(const std::string& name, long n) {
             if (exact_move && bt) same(intersects(rewritten.view(), *bt));
         }
     }
-    std::printf("[cases] %s rewrites and exact translations: %ld checked (%ld pairs intersect), %ld differ\n", name.c_str(), checked, yes, bad);
+    std::printf("[cases] %s rewrites and exact translations: %ld checked (%ld pairs intersect), %ld differ\n", name.c_str(), checked, yes,
+                bad);
     CHECK(bad == 0);
     CHECK(yes > 0);
 }
@@ -112,7 +118,8 @@ void mesh_symmetries(const std::string& name, long n) {
 // must occur, "contained" in at least a twentieth. Returns how many contained cases feature(m, b)
 // holds for.
 template <class Gen, class Truth, class Feature>
-long contains_in_store(const std::string& name, long n, std::uint64_t seed_offset, double approx_bound, Gen gen, Truth truth_of, Feature feature) {
+long contains_in_store(const std::string& name, long n, std::uint64_t seed_offset, double approx_bound, Gen gen, Truth truth_of,
+                       Feature feature) {
     using namespace incidence;
     rng r(seed() + seed_offset);
     mesh_store store;

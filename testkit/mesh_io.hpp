@@ -23,9 +23,7 @@ struct mesh {
 };
 
 namespace io_detail {
-[[noreturn]] inline void fail(const std::string& file, const std::string& why) {
-    throw std::runtime_error(file + ": " + why);
-}
+[[noreturn]] inline void fail(const std::string& file, const std::string& why) { throw std::runtime_error(file + ": " + why); }
 inline void add_polygon(mesh& m, const std::vector<long>& idx, const std::string& file) {
     if (idx.size() < 3) fail(file, "a face with fewer than 3 vertices");
     for (long i : idx)

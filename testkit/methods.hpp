@@ -84,12 +84,12 @@ inline bool epick(const aabb3& b, const point3& p) {
 // The other flat pairs (points, lines, rays, segments, planes, triangles): CGAL's do_intersect
 // over Epick, as a user would call it (tests/oracle/cgal_flat.cpp).
 template <class A, class B>
-    requires(support::flat_shape<A> && support::flat_shape<B>)
+requires(support::flat_shape<A> && support::flat_shape<B>)
 bool epick(const A& a, const B& b) {
     return oracle::flat_intersect_epick(support::to_flat(a), support::to_flat(b));
 }
 template <class A, class B>
-    requires(support::flat2_shape<A> && support::flat2_shape<B>)
+requires(support::flat2_shape<A> && support::flat2_shape<B>)
 bool epick(const A& a, const B& b) {
     return oracle::flat_intersect_epick(support::to_flat(a), support::to_flat(b));
 }
@@ -104,11 +104,15 @@ inline bool epick_accepts(const triangle3& t) {
 inline bool epick_accepts(const plane3& p) { return !(p.normal.x == 0 && p.normal.y == 0 && p.normal.z == 0); }
 inline bool epick_accepts(const line3& l) { return !(l.direction.x == 0 && l.direction.y == 0 && l.direction.z == 0); }
 template <class S>
-bool epick_accepts(const S&) { return true; }
+bool epick_accepts(const S&) {
+    return true;
+}
 } // namespace peer
 
 template <class A, class B>
-[[nodiscard]] bool peer_accepts(const A& a, const B& b) { return peer::epick_accepts(a) && peer::epick_accepts(b); }
+[[nodiscard]] bool peer_accepts(const A& a, const B& b) {
+    return peer::epick_accepts(a) && peer::epick_accepts(b);
+}
 
 // A method's test, or none when only the names are wanted (the generic lambda is then never
 // instantiated).
@@ -131,8 +135,8 @@ template <bool WithTests = true, class Family>
                  test([](const auto& a, const auto& b) { return intersects<conservative>(a, b); })});
     m.push_back({"aggressive", "tier", "filter; uncertain answers no",
                  test([](const auto& a, const auto& b) { return intersects<aggressive>(a, b); })});
-    m.push_back({"approximate", "tier", f.approximate_method,
-                 test([](const auto& a, const auto& b) { return intersects<approximate>(a, b); })});
+    m.push_back(
+        {"approximate", "tier", f.approximate_method, test([](const auto& a, const auto& b) { return intersects<approximate>(a, b); })});
     m.push_back({"signs_in_double", "sign algorithm", "the exact tier's sign algorithm evaluated in plain double",
                  test([](const auto& a, const auto& b) { return catalog::signs_in_double(a, b); })});
     for (const auto& alt : f.alternatives) m.push_back({alt.name, "alternative", alt.source, alt.test});

@@ -13,17 +13,16 @@
 
 namespace support {
 
-using incidence::obb3;
-using incidence::point3;
-using incidence::vec3;
 using incidence::aabb3;
 using incidence::line3;
+using incidence::obb3;
 using incidence::plane3;
+using incidence::point3;
 using incidence::ray3;
 using incidence::segment3;
-using incidence::triangle3;
 using incidence::tetrahedron3;
-
+using incidence::triangle3;
+using incidence::vec3;
 
 inline std::array<vec3, 3> near_frame(rng& r) {
     std::array<vec3, 3> a{vec3{1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1}};
@@ -108,7 +107,6 @@ inline obb3 random_obb(rng& r, const transform& tr) {
 }
 inline point3 random_point(rng& r, const transform& tr) { return {random_coord(r, tr, 0), random_coord(r, tr, 1), random_coord(r, tr, 2)}; }
 
-
 // The same box written differently: one axis negated, the axes rotated (with their extents).
 inline obb3 rewritten(const obb3& b, int how) {
     obb3 c = b;
@@ -144,11 +142,11 @@ struct obb_case<incidence::obb3, incidence::obb3> {
         b.center = point3{b.center.x + (p.x - q.x), b.center.y + (p.y - q.y), b.center.z + (p.z - q.z)};
         const auto tr = random_transform(r, true, any_scale);
         return {moved(tr, a), moved(tr, b)};
-}
+    }
     static std::pair<incidence::obb3, incidence::obb3> random(rng& r, bool any_scale = true) {
         const auto tr = random_transform(r, false, any_scale);
         return {random_obb(r, tr), random_obb(r, tr)};
-}
+    }
 };
 
 template <>
@@ -163,11 +161,11 @@ struct obb_case<incidence::aabb3, incidence::obb3> {
         }
         const aabb3 b{moved(tr, point3{c[0] - w[0], c[1] - w[1], c[2] - w[2]}), moved(tr, point3{c[0] + w[0], c[1] + w[1], c[2] + w[2]})};
         return {ordered(b), moved(tr, o)};
-}
+    }
     static std::pair<incidence::aabb3, incidence::obb3> random(rng& r, bool any_scale = true) {
         const auto tr = random_transform(r, false, any_scale);
         return {ordered(aabb3{random_point(r, tr), random_point(r, tr)}), random_obb(r, tr)};
-}
+    }
 };
 
 template <>
@@ -175,11 +173,11 @@ struct obb_case<incidence::obb3, incidence::point3> {
     static std::pair<incidence::obb3, incidence::point3> near(rng& r, bool any_scale = true) {
         const auto [o, p, tr] = near_start(r, any_scale);
         return {moved(tr, o), moved(tr, p)};
-}
+    }
     static std::pair<incidence::obb3, incidence::point3> random(rng& r, bool any_scale = true) {
         const auto tr = random_transform(r, false, any_scale);
         return {random_obb(r, tr), random_point(r, tr)};
-}
+    }
 };
 
 template <>
@@ -191,11 +189,11 @@ struct obb_case<incidence::obb3, incidence::segment3> {
         const point3 s0 = k == 2 ? point3{p.x - v.x, p.y - v.y, p.z - v.z} : p;
         const point3 s1 = k == 1 ? p : point3{p.x + v.x, p.y + v.y, p.z + v.z};
         return {moved(tr, o), segment3{moved(tr, s0), moved(tr, s1)}};
-}
+    }
     static std::pair<incidence::obb3, incidence::segment3> random(rng& r, bool any_scale = true) {
         const auto tr = random_transform(r, false, any_scale);
         return {random_obb(r, tr), segment3{random_point(r, tr), random_point(r, tr)}};
-}
+    }
 };
 
 template <>
@@ -207,12 +205,12 @@ struct obb_case<incidence::obb3, incidence::ray3> {
         const point3 origin = start_on ? p : point3{p.x + v.x, p.y + v.y, p.z + v.z};
         const vec3 d = start_on ? v : vec3{-v.x, -v.y, -v.z};
         return {moved(tr, o), ray3{moved(tr, origin), moved_dir(tr, d)}};
-}
+    }
     static std::pair<incidence::obb3, incidence::ray3> random(rng& r, bool any_scale = true) {
         const auto tr = random_transform(r, false, any_scale);
         const vec3 d{tr.scale_only(r.uniform(-1, 1)), tr.scale_only(r.uniform(-1, 1)), tr.scale_only(r.uniform(-1, 1))};
         return {random_obb(r, tr), ray3{random_point(r, tr), d}};
-}
+    }
 };
 
 template <>
@@ -221,12 +219,12 @@ struct obb_case<incidence::line3, incidence::obb3> {
         const auto [o, p, tr] = near_start(r, any_scale);
         const vec3 v = small_vec(r);
         return {line3{moved(tr, p), moved_dir(tr, v)}, moved(tr, o)};
-}
+    }
     static std::pair<incidence::line3, incidence::obb3> random(rng& r, bool any_scale = true) {
         const auto tr = random_transform(r, false, any_scale);
         const vec3 d{tr.scale_only(r.uniform(-1, 1)), tr.scale_only(r.uniform(-1, 1)), tr.scale_only(r.uniform(-1, 1))};
         return {line3{random_point(r, tr), d}, random_obb(r, tr)};
-}
+    }
 };
 
 template <>
@@ -238,11 +236,11 @@ struct obb_case<incidence::obb3, incidence::triangle3> {
         const point3 a = edge ? point3{p.x - v.x, p.y - v.y, p.z - v.z} : p;
         const point3 b{p.x + v.x, p.y + v.y, p.z + v.z}, c{p.x + w.x, p.y + w.y, p.z + w.z};
         return {moved(tr, o), triangle3{moved(tr, a), moved(tr, b), moved(tr, c)}};
-}
+    }
     static std::pair<incidence::obb3, incidence::triangle3> random(rng& r, bool any_scale = true) {
         const auto tr = random_transform(r, false, any_scale);
         return {random_obb(r, tr), triangle3{random_point(r, tr), random_point(r, tr), random_point(r, tr)}};
-}
+    }
 };
 
 template <>
@@ -252,13 +250,13 @@ struct obb_case<incidence::obb3, incidence::plane3> {
         const vec3 n = small_vec(r);
         const point3 q = moved(tr, p);
         return {moved(tr, o), plane3{n, n.x * q.x + n.y * q.y + n.z * q.z}};
-}
+    }
     static std::pair<incidence::obb3, incidence::plane3> random(rng& r, bool any_scale = true) {
         const auto tr = random_transform(r, false, any_scale);
         const vec3 n{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)};
         const point3 q = random_point(r, tr);
         return {random_obb(r, tr), plane3{n, n.x * q.x + n.y * q.y + n.z * q.z}};
-}
+    }
 };
 
 template <>
@@ -275,11 +273,11 @@ struct obb_case<incidence::obb3, incidence::tetrahedron3> {
                        p.z - c[0] * e1.z - c[1] * e2.z - c[2] * e3.z};
         auto at = [&](vec3 e) { return moved(tr, point3{a.x + e.x, a.y + e.y, a.z + e.z}); };
         return {moved(tr, o), tetrahedron3{moved(tr, a), at(e1), at(e2), at(e3)}};
-}
+    }
     static std::pair<incidence::obb3, incidence::tetrahedron3> random(rng& r, bool any_scale = true) {
         const auto tr = random_transform(r, false, any_scale);
         return {random_obb(r, tr), tetrahedron3{random_point(r, tr), random_point(r, tr), random_point(r, tr), random_point(r, tr)}};
-}
+    }
 };
 
 } // namespace support

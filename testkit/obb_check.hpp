@@ -36,7 +36,8 @@ void run_rewritten(const char* name, long n, Near near, Random random, Variants 
         const bool e = incidence::intersects(a, b);
         for (const auto& [a2, b2] : variants(a, b, r)) {
             ++checked;
-            if (incidence::intersects(a2, b2) != e && ++bad <= 5) std::printf("  rewritten differs: %s %s\n", str(a).c_str(), str(b).c_str());
+            if (incidence::intersects(a2, b2) != e && ++bad <= 5)
+                std::printf("  rewritten differs: %s %s\n", str(a).c_str(), str(b).c_str());
         }
     }
     std::printf("[cases] %s rewritten: %ld variants, %ld differ\n", name, checked, bad);

@@ -47,14 +47,13 @@ inline std::vector<point_set> point_sets(rng& r, long n) {
     add("duplicates of 5 points", [&](long i) { return point3{double(i % 5), double((i % 5) * (i % 5)), 1.0}; });
     add("one point repeated", [&](long) { return point3{0.1, 0.2, 0.3}; });
     add("cospherical (radius 13, integer points)", [&](long) {
-        static constexpr int q[][3] = {{3, 4, 12}, {4, 3, 12}, {12, 3, 4}, {12, 4, 3}, {3, 12, 4}, {4, 12, 3}, {0, 5, 12},
-                                       {5, 0, 12}, {12, 5, 0}, {13, 0, 0}, {0, 13, 0}, {0, 0, 13}};
+        static constexpr int q[][3] = {{3, 4, 12}, {4, 3, 12}, {12, 3, 4}, {12, 4, 3}, {3, 12, 4}, {4, 12, 3},
+                                       {0, 5, 12}, {5, 0, 12}, {12, 5, 0}, {13, 0, 0}, {0, 13, 0}, {0, 0, 13}};
         const auto& e = q[r.integer(0, 11)];
         return point3{(r.coin() ? 1 : -1) * double(e[0]) + 7, (r.coin() ? 1 : -1) * double(e[1]) - 3, (r.coin() ? 1 : -1) * double(e[2])};
     });
-    add("one-ulp cluster", [&](long) {
-        return point3{nudge(1.0, r.integer(-3, 3)), nudge(-2.0, r.integer(-3, 3)), nudge(0.5, r.integer(-3, 3))};
-    });
+    add("one-ulp cluster",
+        [&](long) { return point3{nudge(1.0, r.integer(-3, 3)), nudge(-2.0, r.integer(-3, 3)), nudge(0.5, r.integer(-3, 3))}; });
     add("near 1e300", [&](long) { return point3{r.uniform(-1, 1) * 1e300, r.uniform(-1, 1) * 1e300, 1e300}; });
     add("near 1e-300", [&](long) { return point3{r.uniform(-1, 1) * 1e-300, r.uniform(-1, 1) * 1e-300, 1e-300}; });
     add("subnormal", [&](long) { return point3{r.integer(-50, 50) * 0x1p-1074, r.integer(-50, 50) * 0x1p-1074, 0.0}; });

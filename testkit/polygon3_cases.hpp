@@ -214,8 +214,10 @@ inline std::optional<std::array<incidence::point3, 3>> points_in_polygon3(rng& r
         f = small_frame(r, false);
         const auto box = detail::polygon2d::bounds(flat.view());
         auto at = [&] {
-            const double u = box.min.x + (box.max.x - box.min.x) * r.uniform(0, 1), v = box.min.y + (box.max.y - box.min.y) * r.uniform(0, 1);
-            return point2{std::ldexp(std::round(std::ldexp(u, 24)), -24), std::ldexp(std::round(std::ldexp(v, 24)), -24)}; // exact in the plane
+            const double u = box.min.x + (box.max.x - box.min.x) * r.uniform(0, 1),
+                         v = box.min.y + (box.max.y - box.min.y) * r.uniform(0, 1);
+            return point2{std::ldexp(std::round(std::ldexp(u, 24)), -24),
+                          std::ldexp(std::round(std::ldexp(v, 24)), -24)}; // exact in the plane
         };
         p2 = {at(), at(), at()};
         if (r.coin()) p2[1] = p2[0] + 0.125 * (p2[1] - p2[0]), p2[2] = p2[0] + 0.125 * (p2[2] - p2[0]);

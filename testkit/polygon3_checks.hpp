@@ -36,7 +36,10 @@ void polygon3_oracle(const std::string& name, long n, double approx_bound) {
             polygon3_store store, other;
             mesh_store mesh;
             const auto b = near ? polygon3_near<B>(r, store, other, mesh) : polygon3_random<B>(r, store, other, mesh);
-            if (!b || !finite_partner(*b)) { ++skipped; continue; }
+            if (!b || !finite_partner(*b)) {
+                ++skipped;
+                continue;
+            }
             const bool truth = polygon3_truth(store.g, *b);
             yes += truth;
             auto describe = [&] { return shape_str(store.g) + " " + partner_str(*b); };
@@ -68,7 +71,8 @@ void polygon3_symmetries(const std::string& name, long n) {
         yes += e;
         auto same = [&](bool x) {
             ++checked;
-            if (x != e && ++bad <= 5) std::printf("  %s differs: %s %s\n", name.c_str(), shape_str(store.g).c_str(), partner_str(*b).c_str());
+            if (x != e && ++bad <= 5)
+                std::printf("  %s differs: %s %s\n", name.c_str(), shape_str(store.g).c_str(), partner_str(*b).c_str());
         };
         for (int how = 0; how < 2; ++how) { // rotated rings, reversed rings
             polygon3_store w;
@@ -89,7 +93,10 @@ void polygon3_symmetries(const std::string& name, long n) {
         bool exact = true;
         for (const auto& p : store.v) {
             const auto q = shifted(p, v);
-            if (!q) { exact = false; break; }
+            if (!q) {
+                exact = false;
+                break;
+            }
             moved_store.v.push_back(*q);
         }
         if constexpr (!std::is_same_v<B, polygon3> && !std::is_same_v<B, mesh3>) {
@@ -97,7 +104,8 @@ void polygon3_symmetries(const std::string& name, long n) {
             if (exact && bt && moved_store.finish()) same(intersects(moved_store.g, *bt));
         }
     }
-    std::printf("[cases] %s rewrites and exact translations: %ld checked (%ld pairs intersect), %ld differ\n", name.c_str(), checked, yes, bad);
+    std::printf("[cases] %s rewrites and exact translations: %ld checked (%ld pairs intersect), %ld differ\n", name.c_str(), checked, yes,
+                bad);
     CHECK(bad == 0);
     CHECK(yes > 0);
 }

@@ -39,10 +39,10 @@ inline void star_ring(rng& r, int n, incidence::point2 centre, double unit, bool
         const double k = radii[r.integer(0, 2)] * unit;
         ring.push_back({centre.x + k * x, centre.y + k * y});
     };
-    for (int i = -n; i < n; ++i) add(i, -n);  // bottom, left to right
-    for (int i = -n; i < n; ++i) add(n, i);   // right, upwards
-    for (int i = n; i > -n; --i) add(i, n);   // top, right to left
-    for (int i = n; i > -n; --i) add(-n, i);  // left, downwards
+    for (int i = -n; i < n; ++i) add(i, -n); // bottom, left to right
+    for (int i = -n; i < n; ++i) add(n, i);  // right, upwards
+    for (int i = n; i > -n; --i) add(i, n);  // top, right to left
+    for (int i = n; i > -n; --i) add(-n, i); // left, downwards
     if (reversed) std::reverse(ring.begin(), ring.end());
     out.insert(out.end(), ring.begin(), ring.end());
 }
@@ -161,7 +161,9 @@ inline incidence::segment2 segment_in_polygon_random(rng& r, polygon_store& stor
     transform tr = random_transform(r, false, true);
     realise_polygon(store, tr);
     const auto box = detail::polygon2d::bounds(store.view());
-    auto at = [&] { return point2{box.min.x + (box.max.x - box.min.x) * r.uniform(0, 1), box.min.y + (box.max.y - box.min.y) * r.uniform(0, 1)}; };
+    auto at = [&] {
+        return point2{box.min.x + (box.max.x - box.min.x) * r.uniform(0, 1), box.min.y + (box.max.y - box.min.y) * r.uniform(0, 1)};
+    };
     const point2 a = at(), b = at();
     return r.coin() ? segment2{a, b} : segment2{a, a + 0.125 * (b - a)};
 }

@@ -46,8 +46,12 @@ void polygon_oracle(const std::string& name, long n, double approx_bound) {
             // the oracle's domain (Polygon_2::bounded_side needs simple rings)
             bool ok = polygon_store_finite(store) && oracle::polygon_simple(polygon_data_of(g));
             if constexpr (std::is_same_v<B, polygon2>) ok = ok && polygon_store_finite(other) && oracle::polygon_simple(polygon_data_of(b));
-            else for (double x : to_flat(b).v) ok = ok && std::isfinite(x);
-            if (!ok) { ++skipped; continue; }
+            else
+                for (double x : to_flat(b).v) ok = ok && std::isfinite(x);
+            if (!ok) {
+                ++skipped;
+                continue;
+            }
             const bool truth = polygon_truth(g, b);
             canonical(g, b, [&](const auto& x, const auto& y) {
                 check_pair(t, x, y, truth, approx_bound, [&] { return shape_str(x) + " " + shape_str(y); });
@@ -103,7 +107,8 @@ void polygon_symmetries(const std::string& name, long n) {
         } else {
             for (const auto& b2 : same_set(b)) same(intersects(g, b2));
         }
-        const vec3 v{std::ldexp(double(r.integer(-64, 64)), r.integer(-4, 20)), std::ldexp(double(r.integer(-64, 64)), r.integer(-4, 20)), 0.0};
+        const vec3 v{std::ldexp(double(r.integer(-64, 64)), r.integer(-4, 20)), std::ldexp(double(r.integer(-64, 64)), r.integer(-4, 20)),
+                     0.0};
         auto shift_all = [&](polygon_store& w) {
             for (auto& p : w.v) {
                 const auto q = translated(p, v);
@@ -121,7 +126,8 @@ void polygon_symmetries(const std::string& name, long n) {
             if (shift_all(moved_store) && bt) same(intersects(moved_store.view(), *bt));
         }
     }
-    std::printf("[cases] %s rewrites and exact translations: %ld checked (%ld pairs intersect), %ld differ\n", name.c_str(), checked, yes, bad);
+    std::printf("[cases] %s rewrites and exact translations: %ld checked (%ld pairs intersect), %ld differ\n", name.c_str(), checked, yes,
+                bad);
     CHECK(bad == 0);
     CHECK(yes > 0);
 }

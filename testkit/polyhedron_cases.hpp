@@ -52,13 +52,15 @@ inline std::string shape_str(const incidence::frustum3& f) {
 inline bool finite_shape(const incidence::convex_polyhedron3& c) {
     for (int i = 0; i < c.count; ++i) {
         const auto& p = c.planes[static_cast<unsigned>(i)];
-        if (!std::isfinite(p.offset) || !std::isfinite(p.normal.x) || !std::isfinite(p.normal.y) || !std::isfinite(p.normal.z)) return false;
+        if (!std::isfinite(p.offset) || !std::isfinite(p.normal.x) || !std::isfinite(p.normal.y) || !std::isfinite(p.normal.z))
+            return false;
     }
     return true;
 }
 inline bool finite_shape(const incidence::frustum3& f) {
     for (const auto& p : f.planes)
-        if (!std::isfinite(p.offset) || !std::isfinite(p.normal.x) || !std::isfinite(p.normal.y) || !std::isfinite(p.normal.z)) return false;
+        if (!std::isfinite(p.offset) || !std::isfinite(p.normal.x) || !std::isfinite(p.normal.y) || !std::isfinite(p.normal.z))
+            return false;
     return true;
 }
 
@@ -122,8 +124,8 @@ inline incidence::point3 extreme(const std::vector<incidence::point3>& pts, inci
 // Half-spaces kept as protos (a normal and a point on the plane) until the transform moves them.
 struct halfspace_set {
     std::vector<plane_proto> planes;
-    incidence::point3 X;     // where the other shape is placed
-    incidence::vec3 face{};  // the normal of a face through X (zero: none)
+    incidence::point3 X;    // where the other shape is placed
+    incidence::vec3 face{}; // the normal of a face through X (zero: none)
 };
 inline incidence::convex_polyhedron3 realise_polyhedron(const halfspace_set& h, transform& tr) {
     incidence::convex_polyhedron3 c{};
@@ -148,7 +150,8 @@ inline halfspace_set polyhedron_near_set(rng& r) {
     using namespace incidence;
     const point3 c = small_point(r);
     std::vector<point3> pts;
-    for (int i = r.integer(4, 8); i > 0; --i) pts.push_back({c.x + r.integer(-8, 8) * 0.25, c.y + r.integer(-8, 8) * 0.25, c.z + r.integer(-8, 8) * 0.25});
+    for (int i = r.integer(4, 8); i > 0; --i)
+        pts.push_back({c.x + r.integer(-8, 8) * 0.25, c.y + r.integer(-8, 8) * 0.25, c.z + r.integer(-8, 8) * 0.25});
     halfspace_set h;
     const int m = r.integer(0, 7) == 0 ? r.integer(1, 3) : r.integer(4, 12);
     for (int i = 0; i < m; ++i) {
@@ -168,7 +171,8 @@ inline halfspace_set polyhedron_random_set(rng& r) {
     using namespace incidence;
     const point3 c{r.uniform(-0.5, 0.5), r.uniform(-0.5, 0.5), r.uniform(-0.5, 0.5)};
     std::vector<point3> pts;
-    for (int i = r.integer(4, 8); i > 0; --i) pts.push_back({c.x + r.uniform(-0.6, 0.6), c.y + r.uniform(-0.6, 0.6), c.z + r.uniform(-0.6, 0.6)});
+    for (int i = r.integer(4, 8); i > 0; --i)
+        pts.push_back({c.x + r.uniform(-0.6, 0.6), c.y + r.uniform(-0.6, 0.6), c.z + r.uniform(-0.6, 0.6)});
     halfspace_set h;
     const int m = r.integer(0, 7) == 0 ? r.integer(1, 3) : r.integer(4, 12);
     for (int i = 0; i < m; ++i) {
@@ -192,12 +196,8 @@ inline halfspace_set frustum_near_set(rng& r) {
     for (int i = 0; i < 4; ++i) q[i] = r.integer(1, 3), p[i] = ps[r.integer(0, 2)];
     const double zn = r.integer(1, 4) * 0.25, zf = zn + r.integer(1, 8) * 0.5;
     halfspace_set h;
-    h.planes = {{-f, E + f * zn},
-                {f, E + f * zf},
-                {-rt * p[0] - f * q[0], E},
-                {rt * p[1] - f * q[1], E},
-                {-up * p[2] - f * q[2], E},
-                {up * p[3] - f * q[3], E}};
+    h.planes = {{-f, E + f * zn},           {f, E + f * zf},          {-rt * p[0] - f * q[0], E}, {rt * p[1] - f * q[1], E},
+                {-up * p[2] - f * q[2], E}, {up * p[3] - f * q[3], E}};
     // the corner at depth z, left or right, bottom or top (dyadic: q z / p with p a power of 2)
     auto corner = [&](double z, bool right, bool top) {
         const double x = right ? q[1] * z / p[1] : -q[0] * z / p[0], y = top ? q[3] * z / p[3] : -q[2] * z / p[2];
@@ -207,12 +207,27 @@ inline halfspace_set frustum_near_set(rng& r) {
     const double z = r.coin() ? zn : zf;
     const point3 a = corner(z, r.coin(), r.coin()), b = corner(z, r.coin(), r.coin());
     switch (r.integer(0, 5)) {
-    case 0: h.X = a; h.face = r.coin() ? h.planes[z == zn ? 0u : 1u].n : h.planes[2].n; break; // a corner
-    case 1: h.X = mid(a, corner(z == zn ? zf : zn, true, true)); h.face = h.planes[3].n; break; // on or near a side face
-    case 2: h.X = mid(a, b); h.face = h.planes[z == zn ? 0u : 1u].n; break;                     // an edge or the near/far face
-    case 3: h.X = mid(corner(zn, false, false), corner(zf, true, true)); break;                  // inside
-    case 4: h.X = E; h.face = h.planes[2].n; break;                                              // the eye, apex of the sides
-    default: h.X = mid(corner(z, false, true), corner(z, true, true)); h.face = h.planes[5].n; break; // a near or far edge
+    case 0:
+        h.X = a;
+        h.face = r.coin() ? h.planes[z == zn ? 0u : 1u].n : h.planes[2].n;
+        break; // a corner
+    case 1:
+        h.X = mid(a, corner(z == zn ? zf : zn, true, true));
+        h.face = h.planes[3].n;
+        break; // on or near a side face
+    case 2:
+        h.X = mid(a, b);
+        h.face = h.planes[z == zn ? 0u : 1u].n;
+        break;                                                                  // an edge or the near/far face
+    case 3: h.X = mid(corner(zn, false, false), corner(zf, true, true)); break; // inside
+    case 4:
+        h.X = E;
+        h.face = h.planes[2].n;
+        break; // the eye, apex of the sides
+    default:
+        h.X = mid(corner(z, false, true), corner(z, true, true));
+        h.face = h.planes[5].n;
+        break; // a near or far edge
     }
     return h;
 }
@@ -241,7 +256,8 @@ inline halfspace_set polyhedron_near_at(rng& r, incidence::point3 X, incidence::
 }
 
 template <class P>
-struct is_halfspace_shape : std::bool_constant<std::is_same_v<P, incidence::convex_polyhedron3> || std::is_same_v<P, incidence::frustum3>> {};
+struct is_halfspace_shape : std::bool_constant<std::is_same_v<P, incidence::convex_polyhedron3> || std::is_same_v<P, incidence::frustum3>> {
+};
 
 // P (convex_polyhedron3 or frustum3) against B, near-degenerate.
 template <class P, class B>
@@ -316,7 +332,8 @@ inline std::optional<incidence::frustum3> camera_frustum(rng& r, transform& tr) 
     const point3 eye{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)};
     const vec3 fw{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)}, up{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)};
     const double zn = r.uniform(0.05, 0.5), zf = zn + r.uniform(0.5, 3.0);
-    const auto f = frustum3::from_camera(moved(eye, tr), fw, up, r.uniform(0.3, 2.5), r.uniform(0.5, 2.0), tr.scale_only(zn), tr.scale_only(zf));
+    const auto f =
+        frustum3::from_camera(moved(eye, tr), fw, up, r.uniform(0.3, 2.5), r.uniform(0.5, 2.0), tr.scale_only(zn), tr.scale_only(zf));
     if (!f.has_value()) return std::nullopt;
     return f.value();
 }

@@ -22,7 +22,10 @@ void halfspace_oracle(const std::string& name, long n, double approx_bound) {
             const auto c = near ? halfspace_near<P, B>(r) : halfspace_random<P, B>(r);
             std::optional<bool> truth;
             if (c && finite_shape(c->second)) truth = oracle::lp_intersect_verified(lp(c->first), lp(c->second));
-            if (!truth) { ++skipped; continue; } // overflowed, or the LP's certificate check declined
+            if (!truth) {
+                ++skipped;
+                continue;
+            } // overflowed, or the LP's certificate check declined
             yes += *truth;
             check_pair(t, c->first, c->second, *truth, approx_bound, [&] { return shape_str(c->first) + " " + shape_str(c->second); });
             held += held_whole(c->first, c->second, *truth);
@@ -66,7 +69,8 @@ void halfspace_symmetries(const std::string& name, long n) {
         const auto bt = translated(b, v);
         if (at && bt) same(intersects(*at, *bt));
     }
-    std::printf("[cases] %s rewrites and exact translations: %ld checked (%ld pairs intersect), %ld differ\n", name.c_str(), checked, yes, bad);
+    std::printf("[cases] %s rewrites and exact translations: %ld checked (%ld pairs intersect), %ld differ\n", name.c_str(), checked, yes,
+                bad);
     CHECK(bad == 0);
     CHECK(yes > 0);
 }

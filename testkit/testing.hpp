@@ -79,14 +79,14 @@ inline double random_coord(rng& r, const transform& tr, int axis) { return tr.ap
 
 struct tally {
     std::string name;
-    long n = 0, exact_wrong = 0, conservative_violations = 0, aggressive_violations = 0, classify_wrong = 0,
-         approx_wrong = 0, approx_outside_bound = 0, symmetry_wrong = 0, uncertain = 0;
+    long n = 0, exact_wrong = 0, conservative_violations = 0, aggressive_violations = 0, classify_wrong = 0, approx_wrong = 0,
+         approx_outside_bound = 0, symmetry_wrong = 0, uncertain = 0;
     void print() const {
         std::printf("[cases] %s: %ld cases; exact disagreements %ld; conservative violations %ld; aggressive "
                     "violations %ld; classify wrong %ld (uncertain %ld); approximate wrong %ld, outside its "
                     "bound %ld; argument-order mismatches %ld\n",
-                    name.c_str(), n, exact_wrong, conservative_violations, aggressive_violations, classify_wrong,
-                    uncertain, approx_wrong, approx_outside_bound, symmetry_wrong);
+                    name.c_str(), n, exact_wrong, conservative_violations, aggressive_violations, classify_wrong, uncertain, approx_wrong,
+                    approx_outside_bound, symmetry_wrong);
         std::fflush(stdout);
     }
 };
@@ -104,8 +104,16 @@ inline std::string hex(double x) {
     return buf;
 }
 // A point's or vector's coordinates into a double[3] (the oracle's arrays).
-inline void arr(incidence::point3 p, double* o) { o[0] = p.x; o[1] = p.y; o[2] = p.z; }
-inline void arr(incidence::vec3 p, double* o) { o[0] = p.x; o[1] = p.y; o[2] = p.z; }
+inline void arr(incidence::point3 p, double* o) {
+    o[0] = p.x;
+    o[1] = p.y;
+    o[2] = p.z;
+}
+inline void arr(incidence::vec3 p, double* o) {
+    o[0] = p.x;
+    o[1] = p.y;
+    o[2] = p.z;
+}
 
 } // namespace support
 
@@ -144,7 +152,9 @@ struct margin_kernel {
         if (!(rel >= min_rel)) min_rel = rel;
         return incidence::arith::exact_sign(f, valid);
     }
-    void observe_compare(double a, double b) { (void)sgn([=](auto L) { return L(a) - L(b); }); }
+    void observe_compare(double a, double b) {
+        (void)sgn([=](auto L) { return L(a) - L(b); });
+    }
 };
 
 } // namespace support_margin

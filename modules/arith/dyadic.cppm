@@ -227,9 +227,9 @@ constexpr void trim(dyadic& a) {
 [[nodiscard]] constexpr double to_double(const dyadic& a) {
     if (a.is_zero()) return 0.0;
     const int len = bit_length(a);
-    const int lead = len - 1 + a.e;                             // exponent of the leading bit
-    const int low = (lead - 52) > -1074 ? lead - 52 : -1074;    // exponent of the last kept bit
-    const int drop = low - a.e;                                  // bits of the magnitude dropped
+    const int lead = len - 1 + a.e;                          // exponent of the leading bit
+    const int low = (lead - 52) > -1074 ? lead - 52 : -1074; // exponent of the last kept bit
+    const int drop = low - a.e;                              // bits of the magnitude dropped
     std::uint64_t q = 0;
     for (int k = len - 1; k >= (drop > 0 ? drop : 0); --k) q = (q << 1) | (bit(a, k) ? 1u : 0u);
     if (drop < 0) q <<= -drop;
@@ -246,8 +246,7 @@ constexpr void trim(dyadic& a) {
     std::uint64_t bits = 0;
     if (q >= (std::uint64_t{1} << 52)) {
         const int field = low_exp + 52 + 1023;
-        bits = field >= 0x7ff ? std::uint64_t{0x7ff} << 52
-                              : (static_cast<std::uint64_t>(field) << 52) | (q - (std::uint64_t{1} << 52));
+        bits = field >= 0x7ff ? std::uint64_t{0x7ff} << 52 : (static_cast<std::uint64_t>(field) << 52) | (q - (std::uint64_t{1} << 52));
     } else {
         bits = q; // subnormal
     }

@@ -43,24 +43,57 @@ struct expansion {
     int hindex = 0, ei = 0, fi = 0;
     double enow = e[0], fnow = f[0];
     double q;
-    auto next_e = [&] { if (++ei < elen) enow = e[ei]; };
-    auto next_f = [&] { if (++fi < flen) fnow = f[fi]; };
-    auto emit = [&](double hh) { if (hh != 0.0) h[hindex++] = hh; };
-    if ((fnow > enow) == (fnow > -enow)) { q = enow; next_e(); }
-    else { q = fnow; next_f(); }
+    auto next_e = [&] {
+        if (++ei < elen) enow = e[ei];
+    };
+    auto next_f = [&] {
+        if (++fi < flen) fnow = f[fi];
+    };
+    auto emit = [&](double hh) {
+        if (hh != 0.0) h[hindex++] = hh;
+    };
+    if ((fnow > enow) == (fnow > -enow)) {
+        q = enow;
+        next_e();
+    } else {
+        q = fnow;
+        next_f();
+    }
     if (ei < elen && fi < flen) {
         two_double s{};
-        if ((fnow > enow) == (fnow > -enow)) { s = fast_two_sum(enow, q); next_e(); }
-        else { s = fast_two_sum(fnow, q); next_f(); }
-        q = s.hi; emit(s.lo);
+        if ((fnow > enow) == (fnow > -enow)) {
+            s = fast_two_sum(enow, q);
+            next_e();
+        } else {
+            s = fast_two_sum(fnow, q);
+            next_f();
+        }
+        q = s.hi;
+        emit(s.lo);
         while (ei < elen && fi < flen) {
-            if ((fnow > enow) == (fnow > -enow)) { s = two_sum(q, enow); next_e(); }
-            else { s = two_sum(q, fnow); next_f(); }
-            q = s.hi; emit(s.lo);
+            if ((fnow > enow) == (fnow > -enow)) {
+                s = two_sum(q, enow);
+                next_e();
+            } else {
+                s = two_sum(q, fnow);
+                next_f();
+            }
+            q = s.hi;
+            emit(s.lo);
         }
     }
-    while (ei < elen) { const auto s = two_sum(q, enow); next_e(); q = s.hi; emit(s.lo); }
-    while (fi < flen) { const auto s = two_sum(q, fnow); next_f(); q = s.hi; emit(s.lo); }
+    while (ei < elen) {
+        const auto s = two_sum(q, enow);
+        next_e();
+        q = s.hi;
+        emit(s.lo);
+    }
+    while (fi < flen) {
+        const auto s = two_sum(q, fnow);
+        next_f();
+        q = s.hi;
+        emit(s.lo);
+    }
     if (q != 0.0 || hindex == 0) h[hindex++] = q;
     return hindex;
 }
@@ -69,7 +102,9 @@ struct expansion {
 // h must not alias e and must hold 2 elen components.
 [[nodiscard]] constexpr int scale_expansion_zeroelim(int elen, const double* e, double b, double* h) {
     int hindex = 0;
-    auto emit = [&](double hh) { if (hh != 0.0) h[hindex++] = hh; };
+    auto emit = [&](double hh) {
+        if (hh != 0.0) h[hindex++] = hh;
+    };
     auto p = two_product(e[0], b);
     double q = p.hi;
     emit(p.lo);
@@ -99,15 +134,23 @@ template <int N>
     return r;
 }
 template <int N>
-[[nodiscard]] constexpr expansion<N> abs(const expansion<N>& a) { return a.sign() < 0 ? -a : a; }
+[[nodiscard]] constexpr expansion<N> abs(const expansion<N>& a) {
+    return a.sign() < 0 ? -a : a;
+}
 template <int N, int M>
 [[nodiscard]] constexpr expansion<N + M> operator-(const expansion<N>& a, const expansion<M>& b) {
     if constexpr (N == 1 && M == 1) {
         // Two-Diff keeps the common case (difference of two inputs) cheap.
         const auto d = two_diff(a.c[0], b.c[0]);
         expansion<2> r;
-        if (d.lo != 0.0) { r.c[0] = d.lo; r.c[1] = d.hi; r.n = 2; }
-        else { r.c[0] = d.hi; r.n = 1; }
+        if (d.lo != 0.0) {
+            r.c[0] = d.lo;
+            r.c[1] = d.hi;
+            r.n = 2;
+        } else {
+            r.c[0] = d.hi;
+            r.n = 1;
+        }
         return r;
     } else {
         return a + (-b);

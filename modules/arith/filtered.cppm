@@ -58,7 +58,9 @@ template <int A, int B>
     else return filtered<(A > B ? A : B) + 1>{v, a.p + b.p};
 }
 template <int A>
-[[nodiscard]] constexpr filtered<A> operator-(filtered<A> a) { return {-a.v, a.p}; }
+[[nodiscard]] constexpr filtered<A> operator-(filtered<A> a) {
+    return {-a.v, a.p};
+}
 template <int A, int B>
 [[nodiscard]] constexpr filtered<A + B + 1> operator*(filtered<A> a, filtered<B> b) {
     if (poisoned(a, b)) return {0.0, infinity};
@@ -67,7 +69,9 @@ template <int A, int B>
 
 // |x|: the bound carries over unchanged, since | |v| - |x| | <= |v - x| and | |v| | <= p.
 template <int A>
-[[nodiscard]] constexpr filtered<A> abs(filtered<A> a) { return {abs(a.v), a.p}; }
+[[nodiscard]] constexpr filtered<A> abs(filtered<A> a) {
+    return {abs(a.v), a.p};
+}
 template <int K>
 [[nodiscard]] constexpr double error_bound(filtered<K> a) {
     constexpr double ku = K * unit_roundoff;

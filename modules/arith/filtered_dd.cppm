@@ -51,10 +51,14 @@ template <int A, int B>
     return filtered_dd<K>{r.hi, r.lo, a.p + b.p};
 }
 template <int A>
-[[nodiscard]] constexpr filtered_dd<A> operator-(const filtered_dd<A>& a) { return {-a.hi, -a.lo, a.p}; }
+[[nodiscard]] constexpr filtered_dd<A> operator-(const filtered_dd<A>& a) {
+    return {-a.hi, -a.lo, a.p};
+}
 // |x|: a normalised double-double has the sign of its leading part; the bound carries over.
 template <int A>
-[[nodiscard]] constexpr filtered_dd<A> abs(const filtered_dd<A>& a) { return a.hi < 0.0 ? -a : a; }
+[[nodiscard]] constexpr filtered_dd<A> abs(const filtered_dd<A>& a) {
+    return a.hi < 0.0 ? -a : a;
+}
 template <int A, int B>
 [[nodiscard]] constexpr auto operator-(const filtered_dd<A>& a, const filtered_dd<B>& b) {
     if constexpr (A == 0 && B == 0) {

@@ -46,13 +46,21 @@ struct v2 {
     T x, y;
 };
 template <class L>
-[[nodiscard]] constexpr auto lift(L l, point3 p) { return v3<decltype(l(0.0))>{l(p.x), l(p.y), l(p.z)}; }
+[[nodiscard]] constexpr auto lift(L l, point3 p) {
+    return v3<decltype(l(0.0))>{l(p.x), l(p.y), l(p.z)};
+}
 template <class L>
-[[nodiscard]] constexpr auto lift(L l, vec3 p) { return v3<decltype(l(0.0))>{l(p.x), l(p.y), l(p.z)}; }
+[[nodiscard]] constexpr auto lift(L l, vec3 p) {
+    return v3<decltype(l(0.0))>{l(p.x), l(p.y), l(p.z)};
+}
 template <class L>
-[[nodiscard]] constexpr auto lift(L l, point2 p) { return v2<decltype(l(0.0))>{l(p.x), l(p.y)}; }
+[[nodiscard]] constexpr auto lift(L l, point2 p) {
+    return v2<decltype(l(0.0))>{l(p.x), l(p.y)};
+}
 template <class L>
-[[nodiscard]] constexpr auto lift(L l, vec2 p) { return v2<decltype(l(0.0))>{l(p.x), l(p.y)}; }
+[[nodiscard]] constexpr auto lift(L l, vec2 p) {
+    return v2<decltype(l(0.0))>{l(p.x), l(p.y)};
+}
 
 template <class A, class B>
 [[nodiscard]] constexpr auto operator-(const v3<A>& a, const v3<B>& b) {
@@ -86,9 +94,13 @@ template <class A, class B>
     return v2<decltype(a.x - b.x)>{a.x - b.x, a.y - b.y};
 }
 template <class A, class B>
-[[nodiscard]] constexpr auto dot(const v2<A>& a, const v2<B>& b) { return a.x * b.x + a.y * b.y; }
+[[nodiscard]] constexpr auto dot(const v2<A>& a, const v2<B>& b) {
+    return a.x * b.x + a.y * b.y;
+}
 template <class A, class B>
-[[nodiscard]] constexpr auto cross(const v2<A>& a, const v2<B>& b) { return a.x * b.y - a.y * b.x; }
+[[nodiscard]] constexpr auto cross(const v2<A>& a, const v2<B>& b) {
+    return a.x * b.y - a.y * b.x;
+}
 
 // --- lifts -----------------------------------------------------------------------------------
 struct lift_double {
@@ -163,11 +175,17 @@ concept zero_operand = std::is_same_v<T, zero_input> || std::is_same_v<T, zero_n
 [[nodiscard, gnu::always_inline]] constexpr zero_node operator-(zero_input a, zero_input b) { return {a.x == b.x}; }
 [[nodiscard, gnu::always_inline]] constexpr zero_node operator+(zero_input a, zero_input b) { return {a.x == -b.x}; }
 template <zero_operand A, zero_operand B>
-[[nodiscard, gnu::always_inline]] constexpr zero_node operator+(A a, B b) { return {is_zero_node(a) && is_zero_node(b)}; }
+[[nodiscard, gnu::always_inline]] constexpr zero_node operator+(A a, B b) {
+    return {is_zero_node(a) && is_zero_node(b)};
+}
 template <zero_operand A, zero_operand B>
-[[nodiscard, gnu::always_inline]] constexpr zero_node operator-(A a, B b) { return {is_zero_node(a) && is_zero_node(b)}; }
+[[nodiscard, gnu::always_inline]] constexpr zero_node operator-(A a, B b) {
+    return {is_zero_node(a) && is_zero_node(b)};
+}
 template <zero_operand A, zero_operand B>
-[[nodiscard, gnu::always_inline]] constexpr zero_node operator*(A a, B b) { return {is_zero_node(a) || is_zero_node(b)}; }
+[[nodiscard, gnu::always_inline]] constexpr zero_node operator*(A a, B b) {
+    return {is_zero_node(a) || is_zero_node(b)};
+}
 [[nodiscard, gnu::always_inline]] constexpr zero_input operator-(zero_input a) { return {-a.x}; }
 [[nodiscard, gnu::always_inline]] constexpr zero_node operator-(zero_node a) { return a; }
 [[nodiscard, gnu::always_inline]] constexpr zero_input abs(zero_input a) { return {abs(a.x)}; }
@@ -177,7 +195,9 @@ struct lift_zero {
 };
 // Whether f is zero by structure. Sound only where its inputs are finite (finite_zero below).
 template <class F>
-[[nodiscard, gnu::always_inline]] constexpr bool zero_by_structure(const F& f) { return is_zero_node(f(lift_zero{})); }
+[[nodiscard, gnu::always_inline]] constexpr bool zero_by_structure(const F& f) {
+    return is_zero_node(f(lift_zero{}));
+}
 
 struct lift_dyadic {
     [[nodiscard]] constexpr dyadic operator()(double x) const { return to_dyadic(x); }
@@ -233,15 +253,25 @@ struct degree_span {
     static constexpr int lo = Lo, hi = Hi;
 };
 template <int A, int B, int C, int D>
-[[nodiscard]] constexpr degree_span<(A < C ? A : C), (B > D ? B : D)> operator+(degree_span<A, B>, degree_span<C, D>) { return {}; }
+[[nodiscard]] constexpr degree_span<(A < C ? A : C), (B > D ? B : D)> operator+(degree_span<A, B>, degree_span<C, D>) {
+    return {};
+}
 template <int A, int B, int C, int D>
-[[nodiscard]] constexpr degree_span<(A < C ? A : C), (B > D ? B : D)> operator-(degree_span<A, B>, degree_span<C, D>) { return {}; }
+[[nodiscard]] constexpr degree_span<(A < C ? A : C), (B > D ? B : D)> operator-(degree_span<A, B>, degree_span<C, D>) {
+    return {};
+}
 template <int A, int B, int C, int D>
-[[nodiscard]] constexpr degree_span<A + C, B + D> operator*(degree_span<A, B>, degree_span<C, D>) { return {}; }
+[[nodiscard]] constexpr degree_span<A + C, B + D> operator*(degree_span<A, B>, degree_span<C, D>) {
+    return {};
+}
 template <int A, int B>
-[[nodiscard]] constexpr degree_span<A, B> operator-(degree_span<A, B>) { return {}; }
+[[nodiscard]] constexpr degree_span<A, B> operator-(degree_span<A, B>) {
+    return {};
+}
 template <int A, int B>
-[[nodiscard]] constexpr degree_span<A, B> abs(degree_span<A, B>) { return {}; }
+[[nodiscard]] constexpr degree_span<A, B> abs(degree_span<A, B>) {
+    return {};
+}
 struct lift_degree {
     [[nodiscard]] constexpr degree_span<1, 1> operator()(double) const { return {}; }
 };
@@ -262,9 +292,7 @@ struct lift_scaled {
 
 // --- exact sign ------------------------------------------------------------------------------
 [[nodiscard]] constexpr sign to_sign(int s) { return s > 0 ? sign::positive : (s < 0 ? sign::negative : sign::zero); }
-[[nodiscard]] constexpr sign sign_of_double(double v) {
-    return v > 0.0 ? sign::positive : (v < 0.0 ? sign::negative : sign::zero);
-}
+[[nodiscard]] constexpr sign sign_of_double(double v) { return v > 0.0 ? sign::positive : (v < 0.0 ? sign::negative : sign::zero); }
 
 // The scaled filter stage. Where the permanent's estimate lies outside the filter's trusted range
 // (below 2^-850, or above 2^1000: a scene near 2^-500 or 2^500, or a high degree), the power of
@@ -291,7 +319,9 @@ template <class F>
 // overflowed.
 [[nodiscard]] constexpr bool in_trusted_range(double permanent) { return permanent >= 0x1p-850 && permanent <= 0x1p1000; }
 template <int K>
-[[nodiscard]] constexpr bool in_trusted_range(filtered<K> v) { return in_trusted_range(v.p); }
+[[nodiscard]] constexpr bool in_trusted_range(filtered<K> v) {
+    return in_trusted_range(v.p);
+}
 
 // Whether the filter's value is zero, which says that every input it read was finite, so that a
 // zero by structure (zero_by_structure) is an exact zero there: an infinite or NaN input makes
@@ -378,9 +408,13 @@ template <class F>
 struct approx_kernel {
     static constexpr value_mode values = value_mode::plain;
     template <class F>
-    [[nodiscard, gnu::always_inline]] constexpr sign sgn(const F& f) { return sign_of_double(f(lift_double{})); }
+    [[nodiscard, gnu::always_inline]] constexpr sign sgn(const F& f) {
+        return sign_of_double(f(lift_double{}));
+    }
     template <class F>
-    [[nodiscard, gnu::always_inline]] constexpr bool zero(const F& f) { return !(abs(f(lift_double{})) > 0.0); } // NaN: zero, as sgn
+    [[nodiscard, gnu::always_inline]] constexpr bool zero(const F& f) {
+        return !(abs(f(lift_double{})) > 0.0);
+    } // NaN: zero, as sgn
 };
 
 // The exact fallback's two cheap stages for a sign the filter could not prove, on the inputs times
@@ -450,7 +484,9 @@ struct filter_kernel {
     // A sign for a check whose failure decides nothing (a candidate witness point): zero when the
     // filter cannot prove it, and the query's certainty is untouched.
     template <class F>
-    [[nodiscard, gnu::always_inline]] constexpr sign probe(const F& f) { return to_sign(proven_sign(f(lift_filter{}))); }
+    [[nodiscard, gnu::always_inline]] constexpr sign probe(const F& f) {
+        return to_sign(proven_sign(f(lift_filter{})));
+    }
     // The filter, then the whole exact fallback in place (decided): for a sign that is often
     // exactly zero where the cheap stages cannot settle it, and whose failure would send the whole
     // query to the exact kernel's run, which would compute the same exact sign again.
@@ -483,12 +519,18 @@ template <class K>
 // measured slower: their filter pass is short, and the extra call changes how their bodies inline.
 struct settling_filter_kernel : filter_kernel {
     template <class F>
-    [[nodiscard, gnu::always_inline]] constexpr sign sgn(const F& f) { return settled_sgn(f); }
+    [[nodiscard, gnu::always_inline]] constexpr sign sgn(const F& f) {
+        return settled_sgn(f);
+    }
     // Every sign here is settled (exact_double settles a zero by structure too).
     template <class F>
-    [[nodiscard, gnu::always_inline]] constexpr sign structural_sgn(const F& f) { return sgn(f); }
+    [[nodiscard, gnu::always_inline]] constexpr sign structural_sgn(const F& f) {
+        return sgn(f);
+    }
     template <class F>
-    [[nodiscard, gnu::always_inline]] constexpr bool structural_zero(const F& f) { return zero(f); }
+    [[nodiscard, gnu::always_inline]] constexpr bool structural_zero(const F& f) {
+        return zero(f);
+    }
     template <class F>
     [[nodiscard, gnu::always_inline]] constexpr bool zero(const F& f) {
         const auto v = f(lift_filter{});
@@ -548,7 +590,9 @@ struct scaled_filter_kernel {
     }
     // A check whose failure decides nothing: only a proven nonzero sign counts.
     template <class F>
-    [[nodiscard, gnu::always_inline]] constexpr sign probe(const F& f) { return proven(f).value_or(sign::zero); }
+    [[nodiscard, gnu::always_inline]] constexpr sign probe(const F& f) {
+        return proven(f).value_or(sign::zero);
+    }
 };
 
 // A probe's second chance, out of line: the scaled filter, where the permanent left the filter's
@@ -565,7 +609,9 @@ struct exact_kernel {
     static constexpr value_mode values = value_mode::rounded;
     bool valid = true; // false when a predicate saw a NaN or infinite input
     template <class F>
-    [[nodiscard, gnu::always_inline]] constexpr sign sgn(const F& f) { return exact_sign(f, valid); }
+    [[nodiscard, gnu::always_inline]] constexpr sign sgn(const F& f) {
+        return exact_sign(f, valid);
+    }
     template <class F>
     [[nodiscard, gnu::always_inline]] constexpr bool zero(const F& f) {
         const auto v = f(lift_filter{});

@@ -52,7 +52,9 @@ template <class L, class E>
     else return ratio{e, l(1.0)};
 }
 template <class F, class L>
-[[nodiscard]] constexpr auto ratio_of(const F& f, L l) { return as_ratio(l, f(l)); }
+[[nodiscard]] constexpr auto ratio_of(const F& f, L l) {
+    return as_ratio(l, f(l));
+}
 
 // What a kernel's values are (kernel.cppm declares value_mode): a kernel without a mode of its own
 // (a test's observing kernel) computes plain values.
@@ -209,11 +211,13 @@ template <class F>
     if (!is_finite(guess) || guess == 0.0) guess = plain_value(f);
     if (is_finite(guess) && guess != 0.0)
         if (const auto v = round_at_midpoints(guess, [&](double c, double h) {
-                const sign d = exact_sign([=](auto L) {
-                    const auto r = ratio_of(f, L);
-                    if constexpr (same_degree<F>) return r.num * L(1.0) - (L(c) + L(h)) * r.den;
-                    else return r.num - (L(c) + L(h)) * r.den;
-                }, valid);
+                const sign d = exact_sign(
+                    [=](auto L) {
+                        const auto r = ratio_of(f, L);
+                        if constexpr (same_degree<F>) return r.num * L(1.0) - (L(c) + L(h)) * r.den;
+                        else return r.num - (L(c) + L(h)) * r.den;
+                    },
+                    valid);
                 return std::optional<sign>(d * ss);
             }))
             return *v;
@@ -299,7 +303,6 @@ template <class K, class F, class A, class B>
     }
 }
 
-
 // --- roots of a quadratic --------------------------------------------------------------------------
 // The roots t1 <= t2 of a t^2 + 2 b t + c, for a > 0 and b^2 - a c >= 0 (a caller that has proven
 // both), each coefficient a polynomial in the inputs: f(L) -> quadratic{a, b, c}. A parameter where
@@ -334,9 +337,13 @@ enum class root : unsigned char { smaller, larger };
 }
 // The two polynomials of that test: q^2 f(p / q) and q (a p / q + b).
 template <class Q, class P, class D>
-[[nodiscard]] constexpr auto root_f(const Q& e, const P& p, const D& q) { return e.a * p * p + (e.b * p * q + e.b * p * q) + e.c * q * q; }
+[[nodiscard]] constexpr auto root_f(const Q& e, const P& p, const D& q) {
+    return e.a * p * p + (e.b * p * q + e.b * p * q) + e.c * q * q;
+}
 template <class Q, class P, class D>
-[[nodiscard]] constexpr auto root_v(const Q& e, const P& p, const D& q) { return e.a * p + e.b * q; }
+[[nodiscard]] constexpr auto root_v(const Q& e, const P& p, const D& q) {
+    return e.a * p + e.b * q;
+}
 
 // The root in plain double, written so that nothing cancels.
 [[nodiscard]] constexpr double plain_root(root r, double a, double b, double c) {
@@ -377,8 +384,8 @@ template <class F>
     const auto q = f(lift_dyadic{});
     const dyadic one = to_dyadic(1.0);
     auto side = [&](const dyadic& y) { return *root_side(r, to_sign(sign_of(root_f(q, y, one))), to_sign(sign_of(root_v(q, y, one)))); };
-    return correctly_round([&](const dyadic& y) { return side(y) != sign::positive; }, [&](const dyadic& y) { return side(y) == sign::negative; },
-                           is_finite(guess) ? guess : 0.0);
+    return correctly_round([&](const dyadic& y) { return side(y) != sign::positive; },
+                           [&](const dyadic& y) { return side(y) == sign::negative; }, is_finite(guess) ? guess : 0.0);
 }
 // One Newton step from g on the double-double coefficients: the root to about twice the
 // precision of g, as g - delta (delta small beside g): the guess for a coordinate a_i + t b_i that
@@ -427,7 +434,8 @@ template <class F, class A, class B>
     const bool up = sb == sign::positive;
     if (is_finite(guess) && guess != 0.0)
         if (const auto v = round_at_midpoints(guess, [&](double c, double h) {
-                const sign s = up ? exact_root_side(f, r, [=](auto L) { return (L(c) + L(h)) - ai(L); }, [=](auto L) { return bi(L); })
+                const sign s = up ? exact_root_side(
+                                        f, r, [=](auto L) { return (L(c) + L(h)) - ai(L); }, [=](auto L) { return bi(L); })
                                   : exact_root_side(f, r, [=](auto L) { return ai(L) - (L(c) + L(h)); }, [=](auto L) { return -bi(L); });
                 return std::optional<sign>(sb * s);
             }))
@@ -438,8 +446,8 @@ template <class F, class A, class B>
         const dyadic p = up ? y - a : a - y, w = up ? d : -d;
         return sb * *root_side(r, to_sign(sign_of(root_f(q, p, w))), to_sign(sign_of(root_v(q, p, w))));
     };
-    return correctly_round([&](const dyadic& y) { return side(y) != sign::positive; }, [&](const dyadic& y) { return side(y) == sign::negative; },
-                           is_finite(guess) ? guess : 0.0);
+    return correctly_round([&](const dyadic& y) { return side(y) != sign::positive; },
+                           [&](const dyadic& y) { return side(y) == sign::negative; }, is_finite(guess) ? guess : 0.0);
 }
 
 // The point a + t b at the root t (a(L), b(L) lifted points and vectors, as in point_at; each b_i

@@ -23,8 +23,8 @@ import incidence.predicates;
 export namespace incidence::bound {
 
 struct hull {
-    int dimension = 0;                                // 0 point, 1 segment, 2 polygon, 3 polytope
-    std::vector<point3> vertices;                      // the extreme points
+    int dimension = 0;                                   // 0 point, 1 segment, 2 polygon, 3 polytope
+    std::vector<point3> vertices;                        // the extreme points
     std::vector<std::array<std::uint32_t, 3>> triangles; // 3: closed, outward; 2: a fan of the polygon
 };
 

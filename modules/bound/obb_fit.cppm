@@ -22,8 +22,10 @@ template <int I>
     const double h = b.half_extents[I];
     auto di = [=](auto L) {
         const auto d = arith::lift(L, p) - arith::lift(L, c);
-        if constexpr (I == 0) return arith::det3(d, arith::lift(L, a1) - arith::lift(L, vec3{0, 0, 0}), arith::lift(L, a2) - arith::lift(L, vec3{0, 0, 0}));
-        else if constexpr (I == 1) return arith::det3(arith::lift(L, a0) - arith::lift(L, vec3{0, 0, 0}), d, arith::lift(L, a2) - arith::lift(L, vec3{0, 0, 0}));
+        if constexpr (I == 0)
+            return arith::det3(d, arith::lift(L, a1) - arith::lift(L, vec3{0, 0, 0}), arith::lift(L, a2) - arith::lift(L, vec3{0, 0, 0}));
+        else if constexpr (I == 1)
+            return arith::det3(arith::lift(L, a0) - arith::lift(L, vec3{0, 0, 0}), d, arith::lift(L, a2) - arith::lift(L, vec3{0, 0, 0}));
         else return arith::det3(arith::lift(L, a0) - arith::lift(L, vec3{0, 0, 0}), arith::lift(L, a1) - arith::lift(L, vec3{0, 0, 0}), d);
     };
     auto D = [=](auto L) { return arith::det3(arith::lift(L, a0), arith::lift(L, a1), arith::lift(L, a2)); };
@@ -36,7 +38,8 @@ template <int I>
 [[nodiscard]] constexpr bool contains(const obb3& b, point3 p) {
     const vec3 a0 = b.axes[0], a1 = b.axes[1], a2 = b.axes[2];
     bool valid = true;
-    const sign sd = arith::exact_sign([=](auto L) { return arith::det3(arith::lift(L, a0), arith::lift(L, a1), arith::lift(L, a2)); }, valid);
+    const sign sd =
+        arith::exact_sign([=](auto L) { return arith::det3(arith::lift(L, a0), arith::lift(L, a1), arith::lift(L, a2)); }, valid);
     if (sd == sign::zero || !valid) return false;
     return obb_detail::within<0>(b, p, sd, valid) && obb_detail::within<1>(b, p, sd, valid) && obb_detail::within<2>(b, p, sd, valid);
 }
@@ -57,7 +60,8 @@ template <int I>
     for (int i = 0; i < 3; ++i) {
         const auto u = static_cast<unsigned>(i);
         c = c + axes[u] * (0.5 * lo[i] + 0.5 * hi[i]);
-        const double mag = (lo[i] < 0 ? -lo[i] : lo[i]) > (hi[i] < 0 ? -hi[i] : hi[i]) ? (lo[i] < 0 ? -lo[i] : lo[i]) : (hi[i] < 0 ? -hi[i] : hi[i]);
+        const double mag =
+            (lo[i] < 0 ? -lo[i] : lo[i]) > (hi[i] < 0 ? -hi[i] : hi[i]) ? (lo[i] < 0 ? -lo[i] : lo[i]) : (hi[i] < 0 ? -hi[i] : hi[i]);
         h[u] = (0.5 * hi[i] - 0.5 * lo[i]) + mag * 0x1p-48 + 0x1p-1060; // rounding of the projections
     }
     obb3 b{c, axes, h};

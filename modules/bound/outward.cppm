@@ -29,7 +29,7 @@ export namespace incidence::bound {
     const double m = ax > ay ? (ax > az ? ax : az) : (ay > az ? ay : az);
     if (m == 0.0 || !is_finite(m)) return m;
     if (m > 0x1p-500 && m < 0x1p500) return arith::sqrt(dot(v, v)); // squares stay normal and finite
-    const int e = arith::exponent_of(m); // scale by a power of two: exact, no 1/m overflow for subnormal m
+    const int e = arith::exponent_of(m);                            // scale by a power of two: exact, no 1/m overflow for subnormal m
     const vec3 u{arith::scale_by_power_of_two(v.x, -e), arith::scale_by_power_of_two(v.y, -e), arith::scale_by_power_of_two(v.z, -e)};
     return arith::scale_by_power_of_two(arith::sqrt(dot(u, u)), e);
 }

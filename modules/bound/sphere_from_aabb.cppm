@@ -20,8 +20,14 @@ export namespace incidence::bound {
 [[nodiscard]] constexpr result<sphere3> sphere_from_aabb(const aabb3& b) {
     if (!is_finite(b.min) || !is_finite(b.max)) return error{errc::not_finite};
     if (b.min.x > b.max.x || b.min.y > b.max.y || b.min.z > b.max.z) return error{errc::inverted_box};
-    const point3 corners[8] = {b.min, {b.max.x, b.min.y, b.min.z}, {b.min.x, b.max.y, b.min.z}, {b.max.x, b.max.y, b.min.z},
-                               {b.min.x, b.min.y, b.max.z}, {b.max.x, b.min.y, b.max.z}, {b.min.x, b.max.y, b.max.z}, b.max};
+    const point3 corners[8] = {b.min,
+                               {b.max.x, b.min.y, b.min.z},
+                               {b.min.x, b.max.y, b.min.z},
+                               {b.max.x, b.max.y, b.min.z},
+                               {b.min.x, b.min.y, b.max.z},
+                               {b.max.x, b.min.y, b.max.z},
+                               {b.min.x, b.max.y, b.max.z},
+                               b.max};
     const point3 c = centre_of(b);
     const auto r = enclosing_radius(c, std::span<const point3>(corners));
     if (!r) return r.error();

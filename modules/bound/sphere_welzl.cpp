@@ -94,8 +94,14 @@ inline double nearest(const I& n, const I& d, int s) {
         const double up = arith::next_up(r), dn = arith::next_down(r);
         const int cu = is_finite(up) ? compare_mid(n, d, s, r, up) : -1;
         const int cd = is_finite(dn) ? compare_mid(n, d, s, dn, r) : 1;
-        if (cu > 0) { r = up; continue; }
-        if (cd < 0) { r = dn; continue; }
+        if (cu > 0) {
+            r = up;
+            continue;
+        }
+        if (cd < 0) {
+            r = dn;
+            continue;
+        }
         if ((cu == 0 || cd == 0) && (std::bit_cast<std::uint64_t>(r) & 1u)) r = cu == 0 ? up : dn;
         break;
     }
@@ -103,9 +109,9 @@ inline double nearest(const I& n, const I& d, int s) {
 }
 
 struct ball {
-    iv N;     // centre = N / (D 2^shift)
-    I D;      // > 0
-    I R;      // squared radius = R / (D 2^shift)^2
+    iv N; // centre = N / (D 2^shift)
+    I D;  // > 0
+    I R;  // squared radius = R / (D 2^shift)^2
     // Filter data, all proven: |c - cd| <= delta, r_lo <= radius <= r_hi.
     point3 cd{};
     double delta = 0, r_lo = 0, r_hi = 0;
@@ -230,8 +236,8 @@ struct solver {
 // boundary (it lay outside the minimum ball of the others) and is kept as a support point from
 // the start. Leaves the ball in `out`, the points exactly on its boundary in `boundary`, and the
 // support set that defines it in `basis`.
-inline void small_ball(std::span<const point3> points, std::span<const std::uint32_t> ids, int shift, bool last_on_boundary,
-                       ball& out, std::vector<std::uint32_t>& boundary, std::vector<std::uint32_t>& basis) {
+inline void small_ball(std::span<const point3> points, std::span<const std::uint32_t> ids, int shift, bool last_on_boundary, ball& out,
+                       std::vector<std::uint32_t>& boundary, std::vector<std::uint32_t>& basis) {
     std::array<point3, pivot_cap + 1> sub{};
     for (std::size_t k = 0; k < ids.size(); ++k) sub[k] = points[ids[k]];
     solver s;
@@ -286,7 +292,7 @@ result<min_sphere> solve(std::span<const point3> points, std::uint64_t seed, std
     ball b;
     std::vector<std::uint32_t> S{0}, boundary, basis{0};
     std::vector<point3> near; // the points of the last pass not surely inside
-    { // start from point 0 and the point farthest from it (the ranking only needs to be rough)
+    {                         // start from point 0 and the point farthest from it (the ranking only needs to be rough)
         std::uint32_t far = 0;
         double best = -1.0;
         for (std::uint32_t i = 0; i < n; ++i) {
@@ -368,6 +374,5 @@ result<min_sphere> solve(std::span<const point3> points, std::uint64_t seed, std
 }
 
 } // namespace welzl_detail
-
 
 } // namespace incidence::bound

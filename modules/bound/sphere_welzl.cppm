@@ -27,8 +27,8 @@ import incidence.shapes;
 export namespace incidence::bound {
 
 struct min_sphere {
-    sphere3 sphere;                // contains every input point (outward rounded)
-    double squared_radius;         // exact minimum squared radius, correctly rounded (inf beyond binary64)
+    sphere3 sphere;                     // contains every input point (outward rounded)
+    double squared_radius;              // exact minimum squared radius, correctly rounded (inf beyond binary64)
     std::vector<std::uint32_t> support; // indices of the points on the exact minimum sphere's boundary (1..4)
 };
 

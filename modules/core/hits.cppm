@@ -53,8 +53,8 @@ struct mesh_hit {
     static constexpr std::size_t unknown = static_cast<std::size_t>(-2); // an uncertain hit's triangle
     V t;
     point_of<V> point;
-    vec_of<V> normal; // of the triangle hit (zero when inside)
-    V u, v, w;        // its barycentrics (0 when inside)
+    vec_of<V> normal;     // of the triangle hit (zero when inside)
+    V u, v, w;            // its barycentrics (0 when inside)
     std::size_t triangle; // the triangle hit, inside, or (an uncertain hit) unknown
     certainty exists = certainty::yes;
 };

@@ -10,9 +10,7 @@ export namespace incidence {
 enum class sign : signed char { negative = -1, zero = 0, positive = 1 };
 
 [[nodiscard]] constexpr sign operator-(sign s) { return static_cast<sign>(-static_cast<int>(s)); }
-[[nodiscard]] constexpr sign operator*(sign a, sign b) {
-    return static_cast<sign>(static_cast<int>(a) * static_cast<int>(b));
-}
+[[nodiscard]] constexpr sign operator*(sign a, sign b) { return static_cast<sign>(static_cast<int>(a) * static_cast<int>(b)); }
 
 // What a floating-point filter can say about a yes/no question.
 enum class certainty : unsigned char { no, yes, uncertain };
@@ -27,8 +25,8 @@ struct aggressive {};
 struct approximate {};
 
 template <class T>
-concept tier = std::is_same_v<T, exact> || std::is_same_v<T, conservative> || std::is_same_v<T, aggressive> ||
-               std::is_same_v<T, approximate>;
+concept tier =
+    std::is_same_v<T, exact> || std::is_same_v<T, conservative> || std::is_same_v<T, aggressive> || std::is_same_v<T, approximate>;
 
 // A closed interval [lo, hi] that contains the true value: what the conservative and
 // aggressive tiers return for a computed quantity (a distance, a parameter t). An end may be

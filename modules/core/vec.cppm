@@ -40,9 +40,7 @@ struct point3 {
 [[nodiscard]] constexpr vec3 operator*(double s, vec3 a) { return {s * a.x, s * a.y, s * a.z}; }
 [[nodiscard]] constexpr vec3 operator*(vec3 a, double s) { return {s * a.x, s * a.y, s * a.z}; }
 [[nodiscard]] constexpr double dot(vec3 a, vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-[[nodiscard]] constexpr vec3 cross(vec3 a, vec3 b) {
-    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
+[[nodiscard]] constexpr vec3 cross(vec3 a, vec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 [[nodiscard]] constexpr double squared_length(vec3 a) { return dot(a, a); }
 
 // Finite means neither NaN nor infinite; constexpr (std::isfinite is not, in C++20).

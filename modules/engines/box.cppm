@@ -82,8 +82,7 @@ import :engines.tetrahedron;
 export namespace incidence::detail {
 
 [[nodiscard]] constexpr bool box_inside(const double (&lo)[3], const double (&hi)[3], const aabb3& b) {
-    return b.min.x <= lo[0] && hi[0] <= b.max.x && b.min.y <= lo[1] && hi[1] <= b.max.y && b.min.z <= lo[2] &&
-           hi[2] <= b.max.z;
+    return b.min.x <= lo[0] && hi[0] <= b.max.x && b.min.y <= lo[1] && hi[1] <= b.max.y && b.min.z <= lo[2] && hi[2] <= b.max.z;
 }
 
 [[nodiscard]] constexpr bool covers(const aabb3& a, const aabb3& b, const aabb3& c) {
@@ -266,8 +265,15 @@ template <slab_extent X, class K>
     double cand[3] = {0, 0, 0};
     bool middle[3] = {true, true, true};
     for (int i = 0; i < 3; ++i) {
-        if (o[i] < mn[i]) { cand[i] = mn[i]; middle[i] = false; inside = false; }
-        else if (o[i] > mx[i]) { cand[i] = mx[i]; middle[i] = false; inside = false; }
+        if (o[i] < mn[i]) {
+            cand[i] = mn[i];
+            middle[i] = false;
+            inside = false;
+        } else if (o[i] > mx[i]) {
+            cand[i] = mx[i];
+            middle[i] = false;
+            inside = false;
+        }
     }
     if (inside) return true;
     double tmax[3] = {-1.0, -1.0, -1.0};

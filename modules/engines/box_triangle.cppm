@@ -82,7 +82,7 @@ template <box_reach Reach>
 // separate, so the signs need not test them.
 template <int NV, int NE, int NF>
 [[nodiscard]] constexpr certainty rounded_hull_axes_decide(const aabb3& b, const point3 (&v)[NV], const int (&edges)[NE][2],
-                                                     const int (&faces)[NF][3], unsigned* unclear = nullptr) {
+                                                           const int (&faces)[NF][3], unsigned* unclear = nullptr) {
     static_assert(3 * NE + NF <= 32);
     if (unclear) *unclear = ~0u;
     for (int i = 0; i < 3; ++i) { // the box's face normals: comparisons, exact
@@ -94,7 +94,7 @@ template <int NV, int NE, int NF>
     const double m[3] = {b.min.x, b.min.y, b.min.z};
     const double w[3] = {b.max.x - b.min.x, b.max.y - b.min.y, b.max.z - b.min.z};
     if (!(w[0] > 0.0 && w[1] > 0.0 && w[2] > 0.0)) return certainty::uncertain; // flat or inverted: these axes do not suffice
-    double x[NV][3], f[NE][3]; // point minus the box's min corner; edge e: v[q] - v[p]
+    double x[NV][3], f[NE][3];                                                  // point minus the box's min corner; edge e: v[q] - v[p]
     double Xk[3] = {0.0, 0.0, 0.0}, F = 0.0; // sums of |x| per axis and of |f|: NaN or infinite with any of them
     for (int p = 0; p < NV; ++p)
         for (int i = 0; i < 3; ++i) x[p][i] = at(v[p], i) - m[i], Xk[i] += arith::abs(x[p][i]);
@@ -180,7 +180,8 @@ template <box_reach Reach, bool ExactPassStage = true, class K>
             for (const point3& p : v) {
                 bool in = true;
                 for (int i = 0; i < 3 && in; ++i)
-                    in = arith::compare(k, at(p, i), at(b.min, i)) != sign::negative && arith::compare(k, at(p, i), at(b.max, i)) != sign::positive;
+                    in = arith::compare(k, at(p, i), at(b.min, i)) != sign::negative &&
+                         arith::compare(k, at(p, i), at(b.max, i)) != sign::positive;
                 if (in) return true;
             }
     }
@@ -219,9 +220,15 @@ template <box_reach Reach, bool ExactPassStage = true, class K>
         const bool in_plane[3] = {shared(a.x, bb.x, c.x), shared(a.y, bb.y, c.y), shared(a.z, bb.z, c.z)};
         auto known_zero = [&](int i) { return in_plane[(i + 1) % 3] || in_plane[(i + 2) % 3]; };
         sign s[3];
-        s[0] = known_zero(0) ? sign::zero : k.sgn([=](auto L) { return (L(bb.y) - L(a.y)) * (L(c.z) - L(a.z)) - (L(bb.z) - L(a.z)) * (L(c.y) - L(a.y)); });
-        s[1] = known_zero(1) ? sign::zero : k.sgn([=](auto L) { return (L(bb.z) - L(a.z)) * (L(c.x) - L(a.x)) - (L(bb.x) - L(a.x)) * (L(c.z) - L(a.z)); });
-        s[2] = known_zero(2) ? sign::zero : k.sgn([=](auto L) { return (L(bb.x) - L(a.x)) * (L(c.y) - L(a.y)) - (L(bb.y) - L(a.y)) * (L(c.x) - L(a.x)); });
+        s[0] = known_zero(0)
+                   ? sign::zero
+                   : k.sgn([=](auto L) { return (L(bb.y) - L(a.y)) * (L(c.z) - L(a.z)) - (L(bb.z) - L(a.z)) * (L(c.y) - L(a.y)); });
+        s[1] = known_zero(1)
+                   ? sign::zero
+                   : k.sgn([=](auto L) { return (L(bb.z) - L(a.z)) * (L(c.x) - L(a.x)) - (L(bb.x) - L(a.x)) * (L(c.z) - L(a.z)); });
+        s[2] = known_zero(2)
+                   ? sign::zero
+                   : k.sgn([=](auto L) { return (L(bb.x) - L(a.x)) * (L(c.y) - L(a.y)) - (L(bb.y) - L(a.y)) * (L(c.x) - L(a.x)); });
         if (s[0] != sign::zero || s[1] != sign::zero || s[2] != sign::zero) {
             // the corner farthest along n (hi) and along -n (lo)
             point3 hi = b.min, lo = b.max;

@@ -178,22 +178,29 @@ constexpr decltype(auto) with_family(int family, F&& f, const Con& con, const Mo
 // sign(t_a - t_b) for two constraint bounds; lower (B > 0) or upper (B < 0) each.
 template <class K, class... Con>
 [[nodiscard]] constexpr sign compare_bounds(K& k, family_bound a, bool a_lower, family_bound b, bool b_lower, const Con&... cons) {
-    return with_family(a.family, [&](const auto& ca) {
-        return with_family(b.family, [&](const auto& cb) {
-            // t_a - t_b = (A_b B_a - A_a B_b) / (B_a B_b)
-            const sign s = k.sgn([=, ia = a.index, ib = b.index](auto L) {
-                const auto ga = ca(ia, L);
-                const auto gb = cb(ib, L);
-                return gb.a * ga.b - ga.a * gb.b;
-            });
-            return a_lower == b_lower ? s : -s;
-        }, cons...);
-    }, cons...);
+    return with_family(
+        a.family,
+        [&](const auto& ca) {
+            return with_family(
+                b.family,
+                [&](const auto& cb) {
+                    // t_a - t_b = (A_b B_a - A_a B_b) / (B_a B_b)
+                    const sign s = k.sgn([=, ia = a.index, ib = b.index](auto L) {
+                        const auto ga = ca(ia, L);
+                        const auto gb = cb(ib, L);
+                        return gb.a * ga.b - ga.a * gb.b;
+                    });
+                    return a_lower == b_lower ? s : -s;
+                },
+                cons...);
+        },
+        cons...);
 }
 // The object's part in the set given by families (con_f, m_f): one clip per family, then the ranges
 // met. The values as clipped_values gives them.
 template <class K, class... Con>
-[[nodiscard]] constexpr std::optional<span_hit<arith::value_t<K>>> clip_families(K& k, const linear3& s, const std::pair<Con, int>&... fams) {
+[[nodiscard]] constexpr std::optional<span_hit<arith::value_t<K>>> clip_families(K& k, const linear3& s,
+                                                                                 const std::pair<Con, int>&... fams) {
     family_bound lower, upper;
     int f = 0;
     bool empty = false;
@@ -211,23 +218,28 @@ template <class K, class... Con>
     };
     (one(fams), ...);
     if (empty) return std::nullopt;
-    if (lower.index >= 0 && upper.index >= 0 && compare_bounds(k, lower, true, upper, false, fams.first...) == sign::positive) return std::nullopt;
+    if (lower.index >= 0 && upper.index >= 0 && compare_bounds(k, lower, true, upper, false, fams.first...) == sign::positive)
+        return std::nullopt;
     constexpr double inf = __builtin_huge_val();
     const double lo = s.kind == extent::line ? -inf : 0.0, hi = s.kind == extent::segment ? 1.0 : inf;
     span_hit<arith::value_t<K>> h{arith::exact_value(k, lo), arith::exact_value(k, hi), arith::exact_point(k, s.o)};
     auto O = [=](auto L) { return s.O(L); };
     auto D = [=](auto L) { return s.D(L); };
     if (upper.index >= 0)
-        h.t_exit = with_family(upper.family, [&](const auto& c) { return arith::value(k, bound_parameter(c, upper.index)); }, fams.first...);
+        h.t_exit =
+            with_family(upper.family, [&](const auto& c) { return arith::value(k, bound_parameter(c, upper.index)); }, fams.first...);
     if (lower.index >= 0) {
-        h.t_enter = with_family(lower.family, [&](const auto& c) { return arith::value(k, bound_parameter(c, lower.index)); }, fams.first...);
-        h.point = with_family(lower.family, [&](const auto& c) { return arith::point_at(k, bound_parameter(c, lower.index), O, D); }, fams.first...);
+        h.t_enter =
+            with_family(lower.family, [&](const auto& c) { return arith::value(k, bound_parameter(c, lower.index)); }, fams.first...);
+        h.point = with_family(
+            lower.family, [&](const auto& c) { return arith::point_at(k, bound_parameter(c, lower.index), O, D); }, fams.first...);
     } else if (s.kind == extent::line && upper.index >= 0) {
-        const bool behind = with_family(upper.family, [&](const auto& c) {
-            return k.sgn([=, u = upper.index](auto L) { return c(u, L).a; }) == sign::negative;
-        }, fams.first...);
+        const bool behind = with_family(
+            upper.family, [&](const auto& c) { return k.sgn([=, u = upper.index](auto L) { return c(u, L).a; }) == sign::negative; },
+            fams.first...);
         if (behind)
-            h.point = with_family(upper.family, [&](const auto& c) { return arith::point_at(k, bound_parameter(c, upper.index), O, D); }, fams.first...);
+            h.point = with_family(
+                upper.family, [&](const auto& c) { return arith::point_at(k, bound_parameter(c, upper.index), O, D); }, fams.first...);
     }
     return h;
 }

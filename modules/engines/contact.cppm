@@ -39,10 +39,10 @@ enum class end_kind : unsigned char { domain, plane_crossing, edge_clip, segment
 
 struct contact_end {
     end_kind kind = end_kind::domain;
-    double bound = 0.0;         // domain: the object's own bound
-    point3 p{}, q{}, r{};       // the plane's, edge's or segment's points (on_line: p)
-    int axis = 2;               // the projection of edge_clip and segment_cross
-    sign den = sign::positive;  // the sign of the ratio's denominator
+    double bound = 0.0;        // domain: the object's own bound
+    point3 p{}, q{}, r{};      // the plane's, edge's or segment's points (on_line: p)
+    int axis = 2;              // the projection of edge_clip and segment_cross
+    sign den = sign::positive; // the sign of the ratio's denominator
 };
 
 // A range of parameters, enter <= exit.
@@ -110,7 +110,8 @@ template <class K>
                 const auto a = t1(L);
                 const auto b = t2(L);
                 return a.num * b.den - b.num * a.den;
-            }) * e1.den * e2.den;
+            }) * e1.den *
+                   e2.den;
         });
     });
 }
@@ -123,8 +124,8 @@ template <class K>
             compare_ends(k, b.exit, a.exit, s) == sign::positive ? b.exit : a.exit};
 }
 template <class K>
-[[nodiscard]] constexpr std::optional<contact_span> hull_of(K& k, const std::optional<contact_span>& a, const std::optional<contact_span>& b,
-                                                            const linear3& s) {
+[[nodiscard]] constexpr std::optional<contact_span> hull_of(K& k, const std::optional<contact_span>& a,
+                                                            const std::optional<contact_span>& b, const linear3& s) {
     if (!a) return b;
     if (!b) return a;
     return hull_of(k, *a, *b, s);
@@ -147,7 +148,8 @@ template <class K>
     if (k.sgn([=](auto L) { return arith::det3(s.D(L), arith::lift(L, p) - s.O(L), arith::lift(L, q) - s.O(L)); }) != sign::zero)
         return std::nullopt; // skew
     for (int axis = 0; axis < 3; ++axis) {
-        const sign c = arith::sgn<arith::hint::structural>(k, [=](auto L) { return pick(arith::cross(s.D(L), arith::lift(L, q) - arith::lift(L, p)), axis); });
+        const sign c = arith::sgn<arith::hint::structural>(
+            k, [=](auto L) { return pick(arith::cross(s.D(L), arith::lift(L, q) - arith::lift(L, p)), axis); });
         if (c == sign::zero) continue;
         // crossing in the common plane: t c = cross2(p - o, q - p), u c = cross2(p - o, D)
         auto lower = [&](bool of_s) { // cross2(p - o, q - p) (t c) or cross2(p - o, D) (u c)
@@ -168,14 +170,16 @@ template <class K>
         };
         auto part = [&](bool of_s, bool is_upper) { return is_upper ? upper(of_s) : lower(of_s); };
         if (part(false, false) == -c || part(false, true) == -c) return std::nullopt; // u outside [0, 1]
-        if (s.bounded_below() && part(true, false) == -c) return std::nullopt;      // t < 0
-        if (s.bounded_above() && part(true, true) == -c) return std::nullopt;       // t > 1
+        if (s.bounded_below() && part(true, false) == -c) return std::nullopt;        // t < 0
+        if (s.bounded_above() && part(true, true) == -c) return std::nullopt;         // t > 1
         const contact_end e{end_kind::segment_cross, 0.0, p, q, {}, axis, c};
         return contact_span{e, e};
     }
     // parallel: on s's line, then the range between the end points' positions
     for (int axis = 0; axis < 3; ++axis)
-        if (!arith::is_zero<arith::hint::structural>(k, [=](auto L) { return pick(arith::cross(s.D(L), arith::lift(L, p) - s.O(L)), axis); })) return std::nullopt;
+        if (!arith::is_zero<arith::hint::structural>(k,
+                                                     [=](auto L) { return pick(arith::cross(s.D(L), arith::lift(L, p) - s.O(L)), axis); }))
+            return std::nullopt;
     const contact_end ep{end_kind::on_line, 0.0, p}, eq{end_kind::on_line, 0.0, q};
     const bool p_first = k.sgn([=](auto L) { return arith::dot(arith::lift(L, q) - arith::lift(L, p), s.D(L)); }) != sign::negative;
     contact_span r{p_first ? ep : eq, p_first ? eq : ep};
@@ -238,7 +242,8 @@ template <class K>
         if (e.bound == 1.0) return arith::exact_point(k, s.q);
         return arith::exact_point(k, s.o); // 0, or a point object's own point
     }
-    return with_ratio(e, s, [&](const auto& t) { return arith::point_at(k, t, [=](auto L) { return s.O(L); }, [=](auto L) { return s.D(L); }); });
+    return with_ratio(e, s,
+                      [&](const auto& t) { return arith::point_at(k, t, [=](auto L) { return s.O(L); }, [=](auto L) { return s.D(L); }); });
 }
 
 } // namespace incidence::detail

@@ -116,9 +116,13 @@ struct plane_rows {
     [[nodiscard]] constexpr bool zero(unsigned x) const { return zero_normal(p, x); }
     [[nodiscard]] constexpr bool parallel(unsigned x, unsigned y) const { return parallel_normals(p, x, y); }
     template <class L>
-    [[nodiscard]] constexpr auto normal(L l, unsigned x) const { return arith::lift(l, p[x].normal); }
+    [[nodiscard]] constexpr auto normal(L l, unsigned x) const {
+        return arith::lift(l, p[x].normal);
+    }
     template <class L>
-    [[nodiscard]] constexpr auto offset(L l, unsigned x) const { return l(p[x].offset); }
+    [[nodiscard]] constexpr auto offset(L l, unsigned x) const {
+        return l(p[x].offset);
+    }
 };
 
 // A vertex of the set of the `total` half-spaces n_i . x <= c_i: rows i, j and l, with
@@ -248,7 +252,7 @@ template <int D>
 struct result {
     bool feasible = true;
     std::array<double, D> x{};
-    std::array<unsigned, D> tight{};  // the rows through x
+    std::array<unsigned, D> tight{};   // the rows through x
     std::array<unsigned, D + 1> why{}; // infeasible: rows with no common point
     int nwhy = 0;
 };
@@ -335,7 +339,8 @@ inline constexpr std::array<double, 3> generic_direction{1.0, 0x1.6a09e667f3bcdp
 // f: the direction to minimise along; seed: the order the rows are taken in
 inline constexpr std::uint64_t first_seed = 0x9e3779b97f4a7c15u;
 template <class Rows>
-[[nodiscard]] constexpr guess guess_of(const Rows& rows, const std::array<double, 3>& f = generic_direction, std::uint64_t seed = first_seed) {
+[[nodiscard]] constexpr guess guess_of(const Rows& rows, const std::array<double, 3>& f = generic_direction,
+                                       std::uint64_t seed = first_seed) {
     const unsigned total = rows.size();
     if (total > max_rows) return {};
     std::array<row<3>, max_rows> in;
@@ -378,11 +383,15 @@ struct picked_rows {
     [[nodiscard]] constexpr bool zero(unsigned x) const { return rows->zero(at[x]); }
     [[nodiscard]] constexpr bool parallel(unsigned x, unsigned y) const { return rows->parallel(at[x], at[y]); }
     template <class L>
-    [[nodiscard]] constexpr auto normal(L l, unsigned x) const { return rows->normal(l, at[x]); }
+    [[nodiscard]] constexpr auto normal(L l, unsigned x) const {
+        return rows->normal(l, at[x]);
+    }
     template <class L>
-    [[nodiscard]] constexpr auto offset(L l, unsigned x) const { return rows->offset(l, at[x]); }
+    [[nodiscard]] constexpr auto offset(L l, unsigned x) const {
+        return rows->offset(l, at[x]);
+    }
     template <class K, class Det>
-        requires requires(const Rows& r, K& k, const Det& det) { r.triple_sign(k, 0u, 1u, 2u, det); }
+    requires requires(const Rows& r, K& k, const Det& det) { r.triple_sign(k, 0u, 1u, 2u, det); }
     [[nodiscard]] constexpr sign triple_sign(K& k, unsigned i, unsigned j, unsigned l, const Det& det) const {
         return rows->triple_sign(k, at[i], at[j], at[l], det);
     }
@@ -404,7 +413,8 @@ template <class K, class Rows>
         for (unsigned j = i + 1; j < total; ++j) {
             if (rows.zero(j) || rows.parallel(i, j)) continue;
             auto w = [=](auto L) { return arith::cross(rows.normal(L, i), rows.normal(L, j)); };
-            if (arith::sgn<arith::hint::often_zero>(k, [=](auto L) { return w(L).x; }) == sign::zero && arith::sgn<arith::hint::often_zero>(k, [=](auto L) { return w(L).y; }) == sign::zero &&
+            if (arith::sgn<arith::hint::often_zero>(k, [=](auto L) { return w(L).x; }) == sign::zero &&
+                arith::sgn<arith::hint::often_zero>(k, [=](auto L) { return w(L).y; }) == sign::zero &&
                 arith::sgn<arith::hint::often_zero>(k, [=](auto L) { return w(L).z; }) == sign::zero)
                 continue;
             pair = true;
@@ -412,11 +422,11 @@ template <class K, class Rows>
             for (unsigned r = 0; r < total && inside; ++r) {
                 if (r == i || r == j) continue;
                 inside = arith::sgn<arith::hint::decisive>(k, [=](auto L) {
-                    const auto wv = w(L);
-                    const auto nh = rows.normal(L, r);
-                    return rows.offset(L, r) * arith::dot(wv, wv) -
-                           (rows.offset(L, i) * arith::det3(nh, rows.normal(L, j), wv) + rows.offset(L, j) * arith::det3(nh, wv, rows.normal(L, i)));
-                }) != sign::negative;
+                             const auto wv = w(L);
+                             const auto nh = rows.normal(L, r);
+                             return rows.offset(L, r) * arith::dot(wv, wv) - (rows.offset(L, i) * arith::det3(nh, rows.normal(L, j), wv) +
+                                                                              rows.offset(L, j) * arith::det3(nh, wv, rows.normal(L, i)));
+                         }) != sign::negative;
             }
             if (inside) return false;
         }
@@ -430,9 +440,9 @@ template <class K, class Rows>
         for (unsigned r = 0; r < total && inside; ++r) {
             if (r == i) continue;
             inside = arith::sgn<arith::hint::decisive>(k, [=](auto L) {
-                const auto ni = rows.normal(L, i);
-                return rows.offset(L, r) * arith::dot(ni, ni) - rows.offset(L, i) * arith::dot(rows.normal(L, r), ni);
-            }) != sign::negative;
+                         const auto ni = rows.normal(L, i);
+                         return rows.offset(L, r) * arith::dot(ni, ni) - rows.offset(L, i) * arith::dot(rows.normal(L, r), ni);
+                     }) != sign::negative;
         }
         if (inside) return false;
     }
@@ -586,7 +596,8 @@ struct vertex_guesses {
                 bool inside = true;
                 for (int r = 0; r < m && inside; ++r) {
                     if (r == i || r == j || r == l) continue;
-                    inside = dot(planes[r].normal, v) - planes[r].offset <= 0x1p-30 * (norm1(planes[r].normal) * size + arith::abs(planes[r].offset));
+                    inside = dot(planes[r].normal, v) - planes[r].offset <=
+                             0x1p-30 * (norm1(planes[r].normal) * size + arith::abs(planes[r].offset));
                 }
                 if (!inside) continue;
                 const auto u = static_cast<unsigned>(out.n++);
@@ -605,7 +616,8 @@ template <class K>
 [[nodiscard]] constexpr certainty side_at_vertex(K& k, const plane3* planes, int m, const std::array<int, 3>& t, vec3 g, double e) {
     if (t[0] < 0) return certainty::uncertain;
     const plane3 a = planes[t[0]], b = planes[t[1]], c = planes[t[2]];
-    const sign d = arith::sgn<arith::hint::optional>(k, [=](auto L) { return arith::det3(arith::lift(L, a.normal), arith::lift(L, b.normal), arith::lift(L, c.normal)); });
+    const sign d = arith::sgn<arith::hint::optional>(
+        k, [=](auto L) { return arith::det3(arith::lift(L, a.normal), arith::lift(L, b.normal), arith::lift(L, c.normal)); });
     if (d == sign::zero) return certainty::uncertain;
     // g . V - e D, with g . (n_j x n_l) = det(g, n_j, n_l)
     const sign along = arith::sgn<arith::hint::optional>(k, [=](auto L) {
@@ -622,16 +634,20 @@ template <class K>
                 const auto na = arith::lift(L, a.normal), nb = arith::lift(L, b.normal), nc = arith::lift(L, c.normal);
                 const auto nh = arith::lift(L, h.normal);
                 return L(h.offset) * arith::det3(na, nb, nc) -
-                       (L(a.offset) * arith::det3(nh, nb, nc) + L(b.offset) * arith::det3(nh, nc, na) + L(c.offset) * arith::det3(nh, na, nb));
+                       (L(a.offset) * arith::det3(nh, nb, nc) + L(b.offset) * arith::det3(nh, nc, na) +
+                        L(c.offset) * arith::det3(nh, na, nb));
             });
             if (s != d) return certainty::uncertain;
         }
         return certainty::yes;
     }
     // g . v < e: no if the multipliers y = (det(g, n_j, n_l), det(n_i, g, n_l), det(n_i, n_j, g)) / D are positive
-    const sign y0 = arith::sgn<arith::hint::optional>(k, [=](auto L) { return arith::det3(arith::lift(L, g), arith::lift(L, b.normal), arith::lift(L, c.normal)); });
-    const sign y1 = arith::sgn<arith::hint::optional>(k, [=](auto L) { return arith::det3(arith::lift(L, a.normal), arith::lift(L, g), arith::lift(L, c.normal)); });
-    const sign y2 = arith::sgn<arith::hint::optional>(k, [=](auto L) { return arith::det3(arith::lift(L, a.normal), arith::lift(L, b.normal), arith::lift(L, g)); });
+    const sign y0 = arith::sgn<arith::hint::optional>(
+        k, [=](auto L) { return arith::det3(arith::lift(L, g), arith::lift(L, b.normal), arith::lift(L, c.normal)); });
+    const sign y1 = arith::sgn<arith::hint::optional>(
+        k, [=](auto L) { return arith::det3(arith::lift(L, a.normal), arith::lift(L, g), arith::lift(L, c.normal)); });
+    const sign y2 = arith::sgn<arith::hint::optional>(
+        k, [=](auto L) { return arith::det3(arith::lift(L, a.normal), arith::lift(L, b.normal), arith::lift(L, g)); });
     return y0 == d && y1 == d && y2 == d ? certainty::no : certainty::uncertain;
 }
 
@@ -649,7 +665,8 @@ template <class K>
     if (!__builtin_is_constant_evaluated() && m > 8) {
         const plane_rows view{planes, static_cast<unsigned>(m)};
         auto triple = [](const seidel_lp::guess& g) {
-            return g.vertex ? std::array<int, 3>{static_cast<int>(g.r[0]), static_cast<int>(g.r[1]), static_cast<int>(g.r[2])} : std::array<int, 3>{-1, -1, -1};
+            return g.vertex ? std::array<int, 3>{static_cast<int>(g.r[0]), static_cast<int>(g.r[1]), static_cast<int>(g.r[2])}
+                            : std::array<int, 3>{-1, -1, -1};
         };
         least = triple(seidel_lp::guess_of(view, {p.normal.x, p.normal.y, p.normal.z}));
         greatest = triple(seidel_lp::guess_of(view, {-p.normal.x, -p.normal.y, -p.normal.z}));
@@ -742,8 +759,9 @@ template <class K>
         auto strictly_in = [&](const plane3* p, int m) {
             for (int r = 0; r < m && strictly; ++r) {
                 const plane3 h = p[r];
-                strictly = arith::sgn<arith::hint::optional>(k, [=](auto L) { return L(h.offset) * L(1.0) - arith::dot(arith::lift(L, h.normal), arith::lift(L, w)); }) ==
-                           sign::positive;
+                strictly = arith::sgn<arith::hint::optional>(k, [=](auto L) {
+                               return L(h.offset) * L(1.0) - arith::dot(arith::lift(L, h.normal), arith::lift(L, w));
+                           }) == sign::positive;
             }
         };
         strictly_in(a, ma);

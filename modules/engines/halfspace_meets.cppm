@@ -132,8 +132,9 @@ template <class K, class Points>
         bool beyond = true;
         for (std::size_t v = 0; v < n && beyond; ++v) {
             const point3 x = point(v);
-            beyond = arith::sgn<arith::hint::optional>(k, [=](auto L) { return L(h.offset) * L(1.0) - arith::dot(arith::lift(L, h.normal), arith::lift(L, x)); }) ==
-                     sign::negative;
+            beyond = arith::sgn<arith::hint::optional>(k, [=](auto L) {
+                         return L(h.offset) * L(1.0) - arith::dot(arith::lift(L, h.normal), arith::lift(L, x));
+                     }) == sign::negative;
         }
         if (beyond) return true;
     }
@@ -147,8 +148,11 @@ template <class K>
     constexpr int capacity = convex_polyhedron3::capacity;
     const point3 corner[3] = {t.a, t.b, t.c};
     // a degenerate triangle is its edges
-    auto normal = [=](auto L) { return arith::cross(arith::lift(L, t.b) - arith::lift(L, t.a), arith::lift(L, t.c) - arith::lift(L, t.a)); };
-    if (arith::sgn<arith::hint::often_zero>(k, [=](auto L) { return normal(L).x; }) == sign::zero && arith::sgn<arith::hint::often_zero>(k, [=](auto L) { return normal(L).y; }) == sign::zero &&
+    auto normal = [=](auto L) {
+        return arith::cross(arith::lift(L, t.b) - arith::lift(L, t.a), arith::lift(L, t.c) - arith::lift(L, t.a));
+    };
+    if (arith::sgn<arith::hint::often_zero>(k, [=](auto L) { return normal(L).x; }) == sign::zero &&
+        arith::sgn<arith::hint::often_zero>(k, [=](auto L) { return normal(L).y; }) == sign::zero &&
         arith::sgn<arith::hint::often_zero>(k, [=](auto L) { return normal(L).z; }) == sign::zero)
         return false;
     // the vertices of Q: planes i and j of P crossing H at v = V / D
@@ -197,7 +201,9 @@ template <class K>
                 };
             };
             // settled: a third plane through the point, or an ulp off it, is common (see first_row_vertex)
-            auto decided = [&](int r) { return r < m ? arith::sgn<arith::hint::often_zero>(k, in_plane(r)) : arith::sgn<arith::hint::often_zero>(k, in_edge(r - m)); };
+            auto decided = [&](int r) {
+                return r < m ? arith::sgn<arith::hint::often_zero>(k, in_plane(r)) : arith::sgn<arith::hint::often_zero>(k, in_edge(r - m));
+            };
             // a half-space proven violated skips the pair; the proven ones are kept
             bool out = false;
             for (int r = 0; r < m && !out; ++r) {
@@ -245,7 +251,8 @@ struct set_vertex_point {
     plane3 a, c, e;
     template <class L>
     [[nodiscard]] constexpr auto weighted(L lift) const {
-        return std::pair{vertex_numerator(lift, a, c, e), arith::det3(arith::lift(lift, a.normal), arith::lift(lift, c.normal), arith::lift(lift, e.normal))};
+        return std::pair{vertex_numerator(lift, a, c, e),
+                         arith::det3(arith::lift(lift, a.normal), arith::lift(lift, c.normal), arith::lift(lift, e.normal))};
     }
     [[nodiscard]] constexpr bool near(const aabb3&) const { return true; }
     [[nodiscard]] constexpr bool x_ray_misses(const aabb3&) const { return false; }
@@ -315,7 +322,8 @@ struct frame_rows {
     [[nodiscard]] constexpr sign triple_sign(K& k, unsigned i, unsigned j, unsigned l, const Det& det) const {
         if (i < 6 || j < 6 || l < 6) return arith::sgn<arith::hint::often_zero>(k, det);
         const vec3 a = p[i - 6].normal, c = p[j - 6].normal, e = p[l - 6].normal;
-        const sign n = arith::sgn<arith::hint::often_zero>(k, [=](auto L) { return arith::det3(arith::lift(L, a), arith::lift(L, c), arith::lift(L, e)); });
+        const sign n = arith::sgn<arith::hint::often_zero>(
+            k, [=](auto L) { return arith::det3(arith::lift(L, a), arith::lift(L, c), arith::lift(L, e)); });
         return axes == sign::positive ? n : axes == sign::negative ? -n : sign::zero;
     }
     // The decided sign of c_h D - n_h . V (vertex_of_rows) for four planes of the set is sign(det A)
@@ -362,7 +370,8 @@ template <class K>
                  sign::negative;
     }
     if (centre) return true;
-    const sign axes = arith::sgn<arith::hint::often_zero>(k, [=](auto L) { return arith::det3(arith::lift(L, b.axes[0]), arith::lift(L, b.axes[1]), arith::lift(L, b.axes[2])); });
+    const sign axes = arith::sgn<arith::hint::often_zero>(
+        k, [=](auto L) { return arith::det3(arith::lift(L, b.axes[0]), arith::lift(L, b.axes[1]), arith::lift(L, b.axes[2])); });
     return first_row_vertex(k, frame_rows{planes, static_cast<unsigned>(m), &b, axes}).found;
 }
 // Is the whole box inside the m half-spaces? (Every plane read, so a NaN gives no in the exact tier.)
@@ -427,7 +436,8 @@ template <class K>
             }
             if (!in) continue;
             if (arith::rounded_stage_applies<K>())
-                if (const certainty s = polygon3d::rounded_inside(g, Vl.kept, Dl.kept); s != certainty::uncertain) return s == certainty::yes;
+                if (const certainty s = polygon3d::rounded_inside(g, Vl.kept, Dl.kept); s != certainty::uncertain)
+                    return s == certainty::yes;
             return polygon3d::inside(k, g, polygon3d::at_homogeneous<decltype(V), decltype(D)>{V, D, d});
         }
     }

@@ -61,8 +61,7 @@ template <slab_extent X, class K>
 // axis-parallel object (comparisons only; b_i is then exactly zero).
 template <slab_extent X>
 [[nodiscard, gnu::always_inline]] constexpr bool still(vec3 n, point3 o, vec3 u, point3 e) {
-    if constexpr (X == slab_extent::segment)
-        return (n.x == 0.0 || e.x == o.x) && (n.y == 0.0 || e.y == o.y) && (n.z == 0.0 || e.z == o.z);
+    if constexpr (X == slab_extent::segment) return (n.x == 0.0 || e.x == o.x) && (n.y == 0.0 || e.y == o.y) && (n.z == 0.0 || e.z == o.z);
     else return (n.x == 0.0 || u.x == 0.0) && (n.y == 0.0 || u.y == 0.0) && (n.z == 0.0 || u.z == 0.0);
 }
 
@@ -145,10 +144,12 @@ template <slab_extent X, class K>
 [[nodiscard]] constexpr bool halfspaces(K& k, const plane3* planes, int m, point3 o, vec3 u, point3 e) {
     constexpr int capacity = convex_polyhedron3::capacity;
     if (!well_formed(planes, m, capacity) || !finite(o) || !finite(u) || !finite(e)) return false;
-    if constexpr (std::is_same_v<K, arith::approx_kernel>) return stored_halfspaces<X, arith::lift_double>(planes, m, o, u, e) == certainty::yes;
+    if constexpr (std::is_same_v<K, arith::approx_kernel>)
+        return stored_halfspaces<X, arith::lift_double>(planes, m, o, u, e) == certainty::yes;
     // not for a point (e = o): one sign per plane, nothing to keep
     if (arith::rounded_stage_applies<K>() && !(X == slab_extent::segment && o == e))
-        if (const certainty r = stored_halfspaces<X, arith::lift_filter>(planes, m, o, u, e); r != certainty::uncertain) return r == certainty::yes;
+        if (const certainty r = stored_halfspaces<X, arith::lift_filter>(planes, m, o, u, e); r != certainty::uncertain)
+            return r == certainty::yes;
     int lower = -1, upper = -1; // the tightest lower and upper bound so far
     for (int i = 0; i < m; ++i) {
         const vec3 n = planes[i].normal;
@@ -160,7 +161,9 @@ template <slab_extent X, class K>
             else s = k.sgn([=](auto L) { return arith::dot(arith::lift(L, n), arith::lift(L, u)); });
         }
         // c - n . o: the origin's side (needed when parallel, or for an upper bound at t >= 0)
-        auto inside_at_origin = [&] { return k.sgn([=](auto L) { return L(c) * L(1.0) - arith::dot(arith::lift(L, n), arith::lift(L, o)); }); };
+        auto inside_at_origin = [&] {
+            return k.sgn([=](auto L) { return L(c) * L(1.0) - arith::dot(arith::lift(L, n), arith::lift(L, o)); });
+        };
         if (s == sign::zero) {
             if (inside_at_origin() == sign::negative) return false;
             continue;

@@ -93,7 +93,9 @@ struct terms {
     return {t(d.x, x), t(d.y, y), t(d.z, z)};
 }
 template <class L>
-[[nodiscard]] constexpr auto sum(L l, const terms& t) { return l(t.x) + l(t.y) + l(t.z); }
+[[nodiscard]] constexpr auto sum(L l, const terms& t) {
+    return l(t.x) + l(t.y) + l(t.z);
+}
 
 // The generalised slab test for o + t u (X: ray, segment with end point e, or line) against the
 // m <= 13 slabs mn[i] <= dirs[i] . x <= mx[i]: one instantiation per kernel for every K.
@@ -147,8 +149,7 @@ template <slab_extent X, class K>
                 v = k.sgn([=](auto L) {
                     return (L(Fj) - sum(L, Aj)) * (sum(L, Bi) - sum(L, Ai)) - (L(Ni) - sum(L, Ai)) * (sum(L, Bj) - sum(L, Aj));
                 });
-            else
-                v = k.sgn([=](auto L) { return (L(Fj) - sum(L, Aj)) * sum(L, Bi) - (L(Ni) - sum(L, Ai)) * sum(L, Bj); });
+            else v = k.sgn([=](auto L) { return (L(Fj) - sum(L, Aj)) * sum(L, Bi) - (L(Ni) - sum(L, Ai)) * sum(L, Bj); });
             if (v * s[ui] * s[uj] == sign::negative) return false;
         }
     }
@@ -217,7 +218,8 @@ constexpr void for_each_circuit(F emit) {
     for (int i = 0; i < m; ++i)
         for (int j = i + 1; j < m; ++j)
             for (int l = j + 1; l < m; ++l) {
-                const ivec a = to_ivec(d[static_cast<unsigned>(i)]), b = to_ivec(d[static_cast<unsigned>(j)]), c = to_ivec(d[static_cast<unsigned>(l)]);
+                const ivec a = to_ivec(d[static_cast<unsigned>(i)]), b = to_ivec(d[static_cast<unsigned>(j)]),
+                           c = to_ivec(d[static_cast<unsigned>(l)]);
                 if (idet(a, b, c) != 0) continue;
                 const ivec nrm = icross(a, b); // the directions are pairwise independent
                 const long long v[3] = {idot(nrm, icross(b, c)), idot(nrm, icross(c, a)), idot(nrm, icross(a, b))};
@@ -328,7 +330,8 @@ inline constexpr int union_k = A == B ? A : (A == 6 ? B : (B == 6 ? A : 26));
 // Narrows the bounds lo, hi of kdop<U> (set[j]: bounded yet) by those of a, a k-DOP whose
 // directions are among U's.
 template <int U, int A, class Kern>
-constexpr void narrow(Kern& k, const kdop<A>& a, std::array<double, U / 2>& lo, std::array<double, U / 2>& hi, std::array<bool, U / 2>& set) {
+constexpr void narrow(Kern& k, const kdop<A>& a, std::array<double, U / 2>& lo, std::array<double, U / 2>& hi,
+                      std::array<bool, U / 2>& set) {
     const auto da = kdop<A>::directions();
     const auto du = kdop<U>::directions();
     for (unsigned i = 0; i < da.size(); ++i) {

@@ -50,7 +50,9 @@ struct basic_linear {
     extent kind;
 
     template <class L>
-    [[nodiscard]] constexpr auto O(L l) const { return arith::lift(l, o); }
+    [[nodiscard]] constexpr auto O(L l) const {
+        return arith::lift(l, o);
+    }
     template <class L>
     [[nodiscard]] constexpr auto D(L l) const {
         if (kind == extent::segment) return arith::lift(l, q) - arith::lift(l, o);
@@ -58,7 +60,7 @@ struct basic_linear {
         return arith::lift(l, d) - arith::lift(l, Vec{});
     }
     [[nodiscard]] constexpr bool is_point() const { return kind == extent::segment ? o == q : d == Vec{}; }
-    [[nodiscard]] constexpr bool bounded_below() const { return kind != extent::line; } // t >= 0
+    [[nodiscard]] constexpr bool bounded_below() const { return kind != extent::line; }    // t >= 0
     [[nodiscard]] constexpr bool bounded_above() const { return kind == extent::segment; } // t <= 1
 };
 using linear3 = basic_linear<point3, vec3>;
@@ -120,8 +122,7 @@ struct box2 {
     return b;
 }
 [[nodiscard]] constexpr bool boxes_meet(const aabb3& a, const aabb3& b) {
-    return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y && a.min.z <= b.max.z &&
-           b.min.z <= a.max.z;
+    return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y && a.min.z <= b.max.z && b.min.z <= a.max.z;
 }
 [[nodiscard]] constexpr bool boxes_meet(const box2& a, const box2& b) {
     return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y;
@@ -240,10 +241,10 @@ template <class K, class Lin>
         });
     };
     if (!s.bounded_below() && !r.bounded_below()) return finite(s.o) && finite(r.o); // two lines cross; origins unread
-    if (s.bounded_below() && lower(true) == -c) return false;  // t < 0
-    if (s.bounded_above() && upper(true) == -c) return false;  // t > 1
-    if (r.bounded_below() && lower(false) == -c) return false; // u < 0
-    if (r.bounded_above() && upper(false) == -c) return false; // u > 1
+    if (s.bounded_below() && lower(true) == -c) return false;                        // t < 0
+    if (s.bounded_above() && upper(true) == -c) return false;                        // t > 1
+    if (r.bounded_below() && lower(false) == -c) return false;                       // u < 0
+    if (r.bounded_above() && upper(false) == -c) return false;                       // u > 1
     return true;
 }
 
@@ -254,8 +255,7 @@ template <class K, class Lin>
     const sign c = k.sgn([&](auto L) { return arith::cross(drop_axis(s.D(L), axis), drop_axis(r.D(L), axis)); });
     if (c != sign::zero) return crossing_2d(k, s, r, axis, c);
     // Parallel in the plane: r must lie on s's line.
-    if (!arith::is_zero(k, [&](auto L) { return arith::cross(drop_axis(s.D(L), axis), drop_axis(r.O(L) - s.O(L), axis)); }))
-        return false;
+    if (!arith::is_zero(k, [&](auto L) { return arith::cross(drop_axis(s.D(L), axis), drop_axis(r.O(L) - s.O(L), axis)); })) return false;
     return collinear_overlap(k, s, r);
 }
 
@@ -286,7 +286,9 @@ template <class K, class Lin>
     return lex_compare(x, y, 4) < 0;
 }
 [[nodiscard]] constexpr bool before(point2 a, point2 b) { return before(a, vec2{0, 0}, b, vec2{0, 0}); }
-[[nodiscard]] constexpr bool before(const segment2& s, const segment2& t) { return before(s.a, vec2{s.b.x, s.b.y}, t.a, vec2{t.b.x, t.b.y}); }
+[[nodiscard]] constexpr bool before(const segment2& s, const segment2& t) {
+    return before(s.a, vec2{s.b.x, s.b.y}, t.a, vec2{t.b.x, t.b.y});
+}
 [[nodiscard]] constexpr bool before(const ray2& s, const ray2& t) { return before(s.origin, s.direction, t.origin, t.direction); }
 [[nodiscard]] constexpr bool before(const line2& s, const line2& t) { return before(s.origin, s.direction, t.origin, t.direction); }
 
@@ -301,14 +303,14 @@ template <class K>
     const linear3& r = swap ? s0 : r0;
     if (s.is_point()) { // both points
         const point3 a = s.o, b = r.o;
-        return arith::is_zero(k, [&](auto L) { return L(a.x) - L(b.x); }) &&
-               arith::is_zero(k, [&](auto L) { return L(a.y) - L(b.y); }) &&
+        return arith::is_zero(k, [&](auto L) { return L(a.x) - L(b.x); }) && arith::is_zero(k, [&](auto L) { return L(a.y) - L(b.y); }) &&
                arith::is_zero(k, [&](auto L) { return L(a.z) - L(b.z); });
     }
     // These signs are zero for coplanar objects, by structure in one plane z = c: the filter pass
     // proves those zeros (hint::structural), so such a pair needs no exact pass.
     if (!r.is_point()) {
-        if (!arith::is_zero<arith::hint::structural>(k, [&](auto L) { return arith::det3(s.D(L), r.D(L), r.O(L) - s.O(L)); })) return false; // skew
+        if (!arith::is_zero<arith::hint::structural>(k, [&](auto L) { return arith::det3(s.D(L), r.D(L), r.O(L) - s.O(L)); }))
+            return false; // skew
         for (int axis = 0; axis < 3; ++axis) {
             const auto component = [&](auto L) { return pick(arith::cross(s.D(L), r.D(L)), axis); };
             // In a filter pass the structure first (compares only): the skew test's zero above
@@ -322,7 +324,8 @@ template <class K>
     }
     // Parallel, or r a point: r must lie on s's line.
     for (int axis = 0; axis < 3; ++axis)
-        if (!arith::is_zero<arith::hint::structural>(k, [&](auto L) { return pick(arith::cross(s.D(L), r.O(L) - s.O(L)), axis); })) return false;
+        if (!arith::is_zero<arith::hint::structural>(k, [&](auto L) { return pick(arith::cross(s.D(L), r.O(L) - s.O(L)), axis); }))
+            return false;
     return collinear_overlap(k, s, r);
 }
 
@@ -334,8 +337,7 @@ template <class K>
     const linear2& r = swap ? s0 : r0;
     if (s.is_point()) { // both points
         const point2 a = s.o, b = r.o;
-        return arith::is_zero(k, [&](auto L) { return L(a.x) - L(b.x); }) &&
-               arith::is_zero(k, [&](auto L) { return L(a.y) - L(b.y); });
+        return arith::is_zero(k, [&](auto L) { return L(a.x) - L(b.x); }) && arith::is_zero(k, [&](auto L) { return L(a.y) - L(b.y); });
     }
     if (!r.is_point()) return linear_linear_2d(k, s, r, 0);
     if (!arith::is_zero(k, [&](auto L) { return arith::cross(s.D(L), r.O(L) - s.O(L)); })) return false;

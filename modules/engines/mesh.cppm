@@ -243,9 +243,9 @@ template <class K, class Q>
             bool collinear = true;
             for (int axis = 0; axis < 3 && collinear; ++axis)
                 collinear = arith::is_zero(k, [=](auto L) {
-                                const auto n = arith::cross(arith::lift(L, b) - arith::lift(L, a), arith::lift(L, cc) - arith::lift(L, a));
-                                return axis == 0 ? n.x : (axis == 1 ? n.y : n.z);
-                            });
+                    const auto n = arith::cross(arith::lift(L, b) - arith::lift(L, a), arith::lift(L, cc) - arith::lift(L, a));
+                    return axis == 0 ? n.x : (axis == 1 ? n.y : n.z);
+                });
             if (!collinear) return std::nullopt;
             continue;
         }
@@ -422,7 +422,9 @@ template <class U, class V>
 struct sweep_s {
     double c[3] = {0.0, 0.0, 0.0};
     template <class L>
-    [[nodiscard]] constexpr auto lift(L l) const { return l(c[0]) + l(c[1]) + l(c[2]); }
+    [[nodiscard]] constexpr auto lift(L l) const {
+        return l(c[0]) + l(c[1]) + l(c[2]);
+    }
 };
 
 // The triangle a b c swept from its apex a by chords to e(s) = b + s (c - b), seen along `axis`
@@ -512,11 +514,17 @@ struct s_chord {
     sweep_s s;
     int before_sign = 1;
     template <class L>
-    [[nodiscard]] constexpr auto dir(L lift) const { return fr.dir(lift, s); }
+    [[nodiscard]] constexpr auto dir(L lift) const {
+        return fr.dir(lift, s);
+    }
     template <class L, class T>
-    [[nodiscard]] constexpr auto num(L lift, const T& x) const { return lift(1.0) * x; }
+    [[nodiscard]] constexpr auto num(L lift, const T& x) const {
+        return lift(1.0) * x;
+    }
     template <class L, class N, class D>
-    [[nodiscard]] constexpr auto before(L, const N& n, const D& d) const { return d - n; }
+    [[nodiscard]] constexpr auto before(L, const N& n, const D& d) const {
+        return d - n;
+    }
 };
 // The direction of a sector's bound from the apex, of degree 4 and pointing into the triangle:
 // e(s) - a times D for a direction s = N / D (D > 0; s = 0 and 1 as the planes through b and c
@@ -557,7 +565,9 @@ struct pair_chord {
         return arith::v3<T>{v0.x * x0 + v1.x * x1, v0.y * x0 + v1.y * x1, v0.z * x0 + v1.z * x1};
     }
     template <class L, class T>
-    [[nodiscard]] constexpr const T& num(L, const T& x) const { return x; }
+    [[nodiscard]] constexpr const T& num(L, const T& x) const {
+        return x;
+    }
     template <class L, class N, class D>
     [[nodiscard]] constexpr auto before(L lift, const N& n, const D& d) const {
         const auto B = arith::lift(lift, fr.b);
@@ -616,7 +626,8 @@ template <class K>
 // The sweep from fr.a (see the top comment). `free_apex`: fr.a lies on no triangle and inside,
 // and `near` lists every triangle meeting t; else every triangle is followed.
 template <class K>
-[[nodiscard]] constexpr sweep_result sweep(K& k, const mesh3& m, const sweep_frame& fr, bool free_apex, const std::vector<std::size_t>& near) {
+[[nodiscard]] constexpr sweep_result sweep(K& k, const mesh3& m, const sweep_frame& fr, bool free_apex,
+                                           const std::vector<std::size_t>& near) {
     const point3 A = fr.a, B = fr.b, C = fr.c;
     const int axis = fr.axis;
     const point3 ek = unit(axis);
@@ -632,9 +643,9 @@ template <class K>
         d.flip = den == sign::negative;
         const bool inside = with_dir(fr, d, [&](auto f) {
             return k.sgn([=](auto L) { return f(L).first; }) == sign::positive && k.sgn([=](auto L) {
-                       const auto [n, dd] = f(L);
-                       return dd - n;
-                   }) == sign::positive;
+                const auto [n, dd] = f(L);
+                return dd - n;
+            }) == sign::positive;
         });
         if (inside) into.push_back(d);
     };
@@ -666,7 +677,8 @@ template <class K>
                 const auto d = at.fraction(L, pq).second;
                 const auto U = arith::lift(L, u0) - arith::lift(L, A);
                 using T = decltype(F.x - U.x * d);
-                return cross_along(axis, arith::lift(L, u1) - arith::lift(L, u0), arith::v3<T>{F.x - U.x * d, F.y - U.y * d, F.z - U.z * d});
+                return cross_along(axis, arith::lift(L, u1) - arith::lift(L, u0),
+                                   arith::v3<T>{F.x - U.x * d, F.y - U.y * d, F.z - U.z * d});
             });
         };
         const point3 corner[3] = {A, B, C};
@@ -684,10 +696,10 @@ template <class K>
         bool collinear = true;
         for (int ax = 0; ax < 3 && collinear; ++ax)
             collinear = arith::is_zero(k, [=](auto L) {
-                            const auto P = arith::lift(L, v[0]);
-                            const auto n = arith::cross(arith::lift(L, v[1]) - P, arith::lift(L, v[2]) - P);
-                            return ax == 0 ? n.x : (ax == 1 ? n.y : n.z);
-                        });
+                const auto P = arith::lift(L, v[0]);
+                const auto n = arith::cross(arith::lift(L, v[1]) - P, arith::lift(L, v[2]) - P);
+                return ax == 0 ? n.x : (ax == 1 ? n.y : n.z);
+            });
         if (collinear) return; // no interior: neither crossed nor covering
         for (int j = 0; j < 3; ++j) {
             const point3 p = v[j], q = v[(j + 1) % 3];
@@ -699,7 +711,8 @@ template <class K>
             };
             if (o[j] == sign::zero && !(p.x == A.x && p.y == A.y && p.z == A.z)) // a vertex in H: the plane through a, p and e_k
                 if (std::vector<sweep_dir>* d = to(sweep_end{true, p})) keep_dir(sweep_dir{segment_param{A, A, p, origin, ek}}, *d);
-            if ((o[j] == sign::positive && o[(j + 1) % 3] == sign::negative) || (o[j] == sign::negative && o[(j + 1) % 3] == sign::positive))
+            if ((o[j] == sign::positive && o[(j + 1) % 3] == sign::negative) ||
+                (o[j] == sign::negative && o[(j + 1) % 3] == sign::positive))
                 if (std::vector<sweep_dir>* d = to(crossing_end(p, q))) // an edge across H: the plane through a, p, q
                     keep_dir(sweep_dir{segment_param{A, A, p, A, q}}, *d);
         }
@@ -870,9 +883,8 @@ template <class K>
             while (first > 0 && cuts[first - 1].pos == cuts[i].pos) --first;
             if (first == i) continue;
             const sign par = with_line_dir(fr, lines[cuts[first].line], [&](auto fx) {
-                return with_line_dir(fr, lines[cuts[i].line], [&](auto fy) {
-                    return k.sgn([=](auto L) { return cross_along(axis, fx(L), fy(L)); });
-                });
+                return with_line_dir(fr, lines[cuts[i].line],
+                                     [&](auto fy) { return k.sgn([=](auto L) { return cross_along(axis, fx(L), fy(L)); }); });
             });
             if (par != sign::zero) return sweep_result::retry;
         }
@@ -904,7 +916,8 @@ template <class K>
     // the same for a pair chord: its direction parallel to none
     auto generic_pair = [&](const pair_chord& c) {
         for (const sweep_dir& d : far_dirs)
-            if (arith::is_zero(k, [=](auto L) { return cross_along(axis, c.dir(L), bound_vector(L, fr, sector_bound{d, false})); })) return false;
+            if (arith::is_zero(k, [=](auto L) { return cross_along(axis, c.dir(L), bound_vector(L, fr, sector_bound{d, false})); }))
+                return false;
         return true;
     };
     // a sector's bound: a direction (an edge's crossing z with its D's sign), or for s = 0 (b) or
@@ -914,7 +927,9 @@ template <class K>
     const bool descends = along == 0 ? C.x < B.x : (along == 1 ? C.y < B.y : C.z < B.z);
     auto bound_of = [&](const sweep_dir* d, bool end) {
         if (d == nullptr)
-            return sector_bound{sweep_dir{segment_param{end ? C : B, origin, unit((along + 1) % 3), origin, unit((along + 2) % 3)}, false, {}, descends}, false};
+            return sector_bound{
+                sweep_dir{segment_param{end ? C : B, origin, unit((along + 1) % 3), origin, unit((along + 2) % 3)}, false, {}, descends},
+                false};
         bool negate = false;
         if (d->on_edge) {
             const segment_param at = d->plane;
@@ -925,9 +940,9 @@ template <class K>
     };
     // the side of b c that a lies on, seen along the axis
     const int side_a = k.sgn([=](auto L) {
-                           const auto Bl = arith::lift(L, B);
-                           return cross_along(axis, arith::lift(L, C) - Bl, arith::lift(L, A) - Bl);
-                       }) == sign::positive
+        const auto Bl = arith::lift(L, B);
+        return cross_along(axis, arith::lift(L, C) - Bl, arith::lift(L, A) - Bl);
+    }) == sign::positive
                            ? 1
                            : -1;
     const sweep_dir* lo = nullptr; // s = 0
@@ -1056,7 +1071,8 @@ template <class K>
 template <class K>
 [[nodiscard]] constexpr bool coplanar(K& k, const triangle3& r, const triangle3& f) {
     for (const point3& p : {f.a, f.b, f.c})
-        if (!same(p, r.a) && !same(p, r.b) && !same(p, r.c) && !arith::is_zero(k, [=](auto L) { return poly::orient3d(L, r.a, r.b, r.c, p); }))
+        if (!same(p, r.a) && !same(p, r.b) && !same(p, r.c) &&
+            !arith::is_zero(k, [=](auto L) { return poly::orient3d(L, r.a, r.b, r.c, p); }))
             return false;
     return true;
 }

@@ -211,9 +211,9 @@ template <class K, class Edges, class Q>
     (void)edges([&](point2 a, point2 b) {
         auto above = [&](point2 w) { // w.y > V.y / W
             return k.sgn([=](auto L) {
-                       const auto [V, W] = q.weighted(L);
-                       return L(w.y) * W - V.y;
-                   }) == sign::positive;
+                const auto [V, W] = q.weighted(L);
+                return L(w.y) * W - V.y;
+            }) == sign::positive;
         };
         const bool a_above = above(a), b_above = above(b);
         if (a_above == b_above) return false;
@@ -259,7 +259,7 @@ template <class K, class Edges>
         return false;
     });
     if (!met) return inside_weighted(k, edges, point2_at{a, b, 0.0}); // wholly off the boundary
-    const bool flip = a.y != b.y ? b.y < a.y : b.x > a.x; // the sign of u x (b - a)
+    const bool flip = a.y != b.y ? b.y < a.y : b.x > a.x;             // the sign of u x (b - a)
     const param2 start{a, o, u, flip}, end{b, o, u, flip};
     auto decide = [&](const auto& q) {
         for (const auto& [p, r] : along) { // on the edge p r: (V - W p) . (r - p) >= 0 and (V - W r) . (p - r) >= 0

@@ -72,7 +72,9 @@ template <class L>
     return arith::cross(arith::lift(l, g.vertices[g.plane_vertices[1]]) - a, arith::lift(l, g.vertices[g.plane_vertices[2]]) - a);
 }
 template <class T>
-[[nodiscard]] constexpr T component(const arith::v3<T>& v, int axis) { return axis == 0 ? v.x : (axis == 1 ? v.y : v.z); }
+[[nodiscard]] constexpr T component(const arith::v3<T>& v, int axis) {
+    return axis == 0 ? v.x : (axis == 1 ? v.y : v.z);
+}
 // The polygon is a set: well formed, and n has a nonzero component along the axis (so the
 // projection is one to one on H).
 template <class K>
@@ -105,9 +107,13 @@ template <class F>
 
 // The projected coordinates (u, v) of a lifted 3D vector: (y, z), (z, x) or (x, y).
 template <class T>
-[[nodiscard]] constexpr T u_of(const arith::v3<T>& p, int axis) { return axis == 0 ? p.y : (axis == 1 ? p.z : p.x); }
+[[nodiscard]] constexpr T u_of(const arith::v3<T>& p, int axis) {
+    return axis == 0 ? p.y : (axis == 1 ? p.z : p.x);
+}
 template <class T>
-[[nodiscard]] constexpr T v_of(const arith::v3<T>& p, int axis) { return axis == 0 ? p.z : (axis == 1 ? p.x : p.y); }
+[[nodiscard]] constexpr T v_of(const arith::v3<T>& p, int axis) {
+    return axis == 0 ? p.z : (axis == 1 ? p.x : p.y);
+}
 
 // A point of H given as V / D: V(L) and D(L) lifted expressions, d the sign of D (not zero).
 template <class VF, class DF>
@@ -138,9 +144,7 @@ template <class K, class At>
             s = k.sgn([=](auto L) { return (L(b.x) - L(a.x)) * (L(p.y) - L(a.y)) - (L(b.y) - L(a.y)) * (L(p.x) - L(a.x)); });
         } else {
             // w.y > p.y with p = V / D: sign(w.y D - V.v) times sign(D)
-            auto above = [&](point2 w) {
-                return k.sgn([=](auto L) { return L(w.y) * at.D(L) - v_of(at.V(L), axis); }) == at.d;
-            };
+            auto above = [&](point2 w) { return k.sgn([=](auto L) { return L(w.y) * at.D(L) - v_of(at.V(L), axis); }) == at.d; };
             a_above = above(a), b_above = above(b);
             if (a_above == b_above) return false;
             auto left = [&](point2 w) { return k.sgn([=](auto L) { return u_of(at.V(L), axis) - L(w.x) * at.D(L); }) == at.d; };
@@ -171,7 +175,7 @@ template <class K>
     // t = n . (a - o) / w within the object's range
     const sign t = k.sgn([=](auto L) { return arith::dot(normal(L, g), arith::lift(L, a) - x.O(L)); });
     if (x.bounded_below() && t != sign::zero && t != w) return contact::none; // t < 0
-    if (x.bounded_above()) { // t <= 1: n . (a - q) zero or of the other sign than w
+    if (x.bounded_above()) {                                                  // t <= 1: n . (a - q) zero or of the other sign than w
         const sign e = k.sgn([=](auto L) { return arith::dot(normal(L, g), arith::lift(L, a) - arith::lift(L, x.q)); });
         if (e == w) return contact::none;
     }
@@ -293,12 +297,13 @@ template <class K>
     switch (plane_contact(k, g, x, w)) {
     case contact::none: return false;
     case contact::lies_in:
-        return any_edge(g, [&](const segment3& e) {
-                   const linear3 s = as_linear(e);
-                   // the 2D step takes a first object that is not a point
-                   if (s.is_point() || x.is_point()) return linear_linear(k, s, x);
-                   return linear_linear_2d(k, s, x, g.axis);
-               }) ||
+        return any_edge(g,
+                        [&](const segment3& e) {
+                            const linear3 s = as_linear(e);
+                            // the 2D step takes a first object that is not a point
+                            if (s.is_point() || x.is_point()) return linear_linear(k, s, x);
+                            return linear_linear_2d(k, s, x, g.axis);
+                        }) ||
                inside(k, g, at_double{x.o});
     default:
         if (arith::rounded_stage_applies<K>()) // P clearly off every edge too (rounded_crossing)

@@ -29,51 +29,69 @@ template <class S>
 concept kdop_shape = requires { std::remove_const_t<S>::slabs; } && shape_of<S, kdop<std::remove_const_t<S>::slabs * 2>>;
 
 template <class S, class V>
-    requires shape_of<S, point3>
-constexpr void lengths(S& p, V& v) { v(p.x), v(p.y), v(p.z); }
+requires shape_of<S, point3>
+constexpr void lengths(S& p, V& v) {
+    v(p.x), v(p.y), v(p.z);
+}
 template <class S, class V>
-    requires shape_of<S, point2>
-constexpr void lengths(S& p, V& v) { v(p.x), v(p.y); }
+requires shape_of<S, point2>
+constexpr void lengths(S& p, V& v) {
+    v(p.x), v(p.y);
+}
 template <class S, class V>
-    requires shape_of<S, segment3> || shape_of<S, segment2>
-constexpr void lengths(S& s, V& v) { lengths(s.a, v), lengths(s.b, v); }
+requires shape_of<S, segment3> || shape_of<S, segment2>
+constexpr void lengths(S& s, V& v) {
+    lengths(s.a, v), lengths(s.b, v);
+}
 template <class S, class V>
-    requires shape_of<S, ray3> || shape_of<S, line3> || shape_of<S, ray2> || shape_of<S, line2>
-constexpr void lengths(S& r, V& v) { lengths(r.origin, v); } // directions are kept
+requires shape_of<S, ray3> || shape_of<S, line3> || shape_of<S, ray2> || shape_of<S, line2>
+constexpr void lengths(S& r, V& v) {
+    lengths(r.origin, v);
+} // directions are kept
 template <class S, class V>
-    requires shape_of<S, plane3>
-constexpr void lengths(S& p, V& v) { v(p.offset); } // the normal is kept
+requires shape_of<S, plane3>
+constexpr void lengths(S& p, V& v) {
+    v(p.offset);
+} // the normal is kept
 template <class S, class V>
-    requires shape_of<S, triangle3>
-constexpr void lengths(S& t, V& v) { lengths(t.a, v), lengths(t.b, v), lengths(t.c, v); }
+requires shape_of<S, triangle3>
+constexpr void lengths(S& t, V& v) {
+    lengths(t.a, v), lengths(t.b, v), lengths(t.c, v);
+}
 template <class S, class V>
-    requires shape_of<S, tetrahedron3>
-constexpr void lengths(S& t, V& v) { lengths(t.a, v), lengths(t.b, v), lengths(t.c, v), lengths(t.d, v); }
+requires shape_of<S, tetrahedron3>
+constexpr void lengths(S& t, V& v) {
+    lengths(t.a, v), lengths(t.b, v), lengths(t.c, v), lengths(t.d, v);
+}
 template <class S, class V>
-    requires shape_of<S, aabb3>
-constexpr void lengths(S& b, V& v) { lengths(b.min, v), lengths(b.max, v); }
+requires shape_of<S, aabb3>
+constexpr void lengths(S& b, V& v) {
+    lengths(b.min, v), lengths(b.max, v);
+}
 template <class S, class V>
-    requires shape_of<S, obb3>
+requires shape_of<S, obb3>
 constexpr void lengths(S& b, V& v) { // the axes are kept
     lengths(b.center, v);
     for (auto& h : b.half_extents) v(h);
 }
 template <class S, class V>
-    requires shape_of<S, sphere3>
-constexpr void lengths(S& s, V& v) { lengths(s.center, v), v(s.radius); }
+requires shape_of<S, sphere3>
+constexpr void lengths(S& s, V& v) {
+    lengths(s.center, v), v(s.radius);
+}
 template <class S, class V>
-    requires kdop_shape<S>
+requires kdop_shape<S>
 constexpr void lengths(S& k, V& v) {
     for (auto& x : k.min) v(x);
     for (auto& x : k.max) v(x);
 }
 template <class S, class V>
-    requires shape_of<S, frustum3>
+requires shape_of<S, frustum3>
 constexpr void lengths(S& f, V& v) {
     for (auto& p : f.planes) lengths(p, v);
 }
 template <class S, class V>
-    requires shape_of<S, convex_polyhedron3>
+requires shape_of<S, convex_polyhedron3>
 constexpr void lengths(S& c, V& v) { // a count outside [0, capacity] is no set: left as it is
     for (int i = 0; i < c.count && i < convex_polyhedron3::capacity; ++i) lengths(c.planes[static_cast<unsigned>(i)], v);
 }
@@ -107,19 +125,25 @@ concept scalable = requires(S& s, scaling& v) { lengths(s, v); };
 // oriented boxes, k-DOPs, frustums, convex polyhedra, spheres' radii aside) mix magnitudes that one
 // factor for all cannot bring together: measured slower, so they have no inputs() here.
 template <class S, class V>
-    requires shape_of<S, point3> || shape_of<S, point2> || shape_of<S, segment3> || shape_of<S, segment2> ||
-             shape_of<S, triangle3> || shape_of<S, tetrahedron3> || shape_of<S, aabb3>
-constexpr void inputs(const S& s, V& v) { lengths(s, v); }
+requires shape_of<S, point3> || shape_of<S, point2> || shape_of<S, segment3> || shape_of<S, segment2> || shape_of<S, triangle3> ||
+         shape_of<S, tetrahedron3> || shape_of<S, aabb3>
+constexpr void inputs(const S& s, V& v) {
+    lengths(s, v);
+}
 template <class S, class V>
-    requires shape_of<S, ray3> || shape_of<S, line3>
-constexpr void inputs(const S& r, V& v) { lengths(r.origin, v), v(r.direction.x), v(r.direction.y), v(r.direction.z); }
+requires shape_of<S, ray3> || shape_of<S, line3>
+constexpr void inputs(const S& r, V& v) {
+    lengths(r.origin, v), v(r.direction.x), v(r.direction.y), v(r.direction.z);
+}
 template <class S, class V>
-    requires shape_of<S, ray2> || shape_of<S, line2>
-constexpr void inputs(const S& r, V& v) { lengths(r.origin, v), v(r.direction.x), v(r.direction.y); }
+requires shape_of<S, ray2> || shape_of<S, line2>
+constexpr void inputs(const S& r, V& v) {
+    lengths(r.origin, v), v(r.direction.x), v(r.direction.y);
+}
 template <class S>
 concept view_shape = shape_of<S, polygon2> || shape_of<S, polygon3> || shape_of<S, mesh3>;
 template <class S, class V>
-    requires view_shape<S>
+requires view_shape<S>
 constexpr void inputs(const S& s, V& v) {
     for (const auto& p : s.vertices) lengths(p, v);
 }

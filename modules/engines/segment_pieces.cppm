@@ -41,9 +41,9 @@ constexpr void merge_sort(std::vector<T>& v, const Less& less) {
 template <class K, class Frac, class P>
 [[nodiscard]] constexpr bool inside_unit(K& k, const Frac& fraction, const P& p) {
     return k.sgn([=](auto L) { return fraction(L, p).first; }) == sign::positive && k.sgn([=](auto L) {
-               const auto [n, d] = fraction(L, p);
-               return d - n;
-           }) == sign::positive;
+        const auto [n, d] = fraction(L, p);
+        return d - n;
+    }) == sign::positive;
 }
 
 // Adds the parameter p to `params` (made D > 0 by its `flip`) when it lies strictly inside (0, 1);

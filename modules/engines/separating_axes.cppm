@@ -67,8 +67,14 @@ struct zonotope {
     return z;
 }
 [[nodiscard]] constexpr zonotope zonotope_of(const aabb3& b) {
-    return {b.min, b.max, {direction{{1, 0, 0}, {0, 0, 0}}, direction{{0, 1, 0}, {0, 0, 0}}, direction{{0, 0, 1}, {0, 0, 0}}},
-            {b.max.x, b.max.y, b.max.z}, {-b.min.x, -b.min.y, -b.min.z}, 3, {}, reach::none};
+    return {b.min,
+            b.max,
+            {direction{{1, 0, 0}, {0, 0, 0}}, direction{{0, 1, 0}, {0, 0, 0}}, direction{{0, 0, 1}, {0, 0, 0}}},
+            {b.max.x, b.max.y, b.max.z},
+            {-b.min.x, -b.min.y, -b.min.z},
+            3,
+            {},
+            reach::none};
 }
 [[nodiscard]] constexpr zonotope zonotope_of(const segment3& s) {
     return {s.a, s.b, {direction{{s.b.x, s.b.y, s.b.z}, {s.a.x, s.a.y, s.a.z}}, {}, {}}, {1, 0, 0}, {0, 0, 0}, 1, {}, reach::none};
@@ -85,9 +91,7 @@ struct zonotope {
 [[nodiscard]] constexpr bool well_formed(const obb3& b) {
     return b.half_extents[0] >= 0.0 && b.half_extents[1] >= 0.0 && b.half_extents[2] >= 0.0;
 }
-[[nodiscard]] constexpr bool well_formed(const aabb3& b) {
-    return b.min.x <= b.max.x && b.min.y <= b.max.y && b.min.z <= b.max.z;
-}
+[[nodiscard]] constexpr bool well_formed(const aabb3& b) { return b.min.x <= b.max.x && b.min.y <= b.max.y && b.min.z <= b.max.z; }
 
 // |x| in any number type (found by argument-dependent lookup for the tests' own types).
 template <class T>
@@ -97,9 +101,13 @@ template <class T>
 }
 
 template <class L>
-[[nodiscard]] constexpr auto lift(L l, const direction& d) { return arith::lift(l, d.to) - arith::lift(l, d.from); }
+[[nodiscard]] constexpr auto lift(L l, const direction& d) {
+    return arith::lift(l, d.to) - arith::lift(l, d.from);
+}
 template <class L>
-[[nodiscard]] constexpr auto centre2(L l, const zonotope& z) { return arith::lift(l, z.cp) + arith::lift(l, z.cq); }
+[[nodiscard]] constexpr auto centre2(L l, const zonotope& z) {
+    return arith::lift(l, z.cp) + arith::lift(l, z.cq);
+}
 // Twice the projected radius of z's bounded part along w (unused generators have zero extent).
 template <class L, class W>
 [[nodiscard]] constexpr auto radius2(L l, const zonotope& z, const W& w) {
@@ -135,7 +143,9 @@ constexpr void add_generators(directions& ds, const zonotope& z) {
 
 // Candidate axes, each a generic function of the lift: w(L).
 template <class L>
-[[nodiscard]] constexpr auto axis_cross(L l, const direction& a, const direction& b) { return arith::cross(lift(l, a), lift(l, b)); }
+[[nodiscard]] constexpr auto axis_cross(L l, const direction& a, const direction& b) {
+    return arith::cross(lift(l, a), lift(l, b));
+}
 
 // Visit the axes until `separates(w, perpendicular)` says yes; true when one did. `perpendicular`
 // says the axis is perpendicular to the unbounded direction by construction (u x g, (g x u) x u),
@@ -204,9 +214,9 @@ template <class K>
             }
         }
         return k.sgn([=](auto L) {
-                   const auto w = axis(L);
-                   return L(1.0) * magnitude(arith::dot(w, centre2(L, b) - centre2(L, a))) - radius2(L, a, w) - radius2(L, b, w);
-               }) == sign::positive;
+            const auto w = axis(L);
+            return L(1.0) * magnitude(arith::dot(w, centre2(L, b) - centre2(L, a))) - radius2(L, a, w) - radius2(L, b, w);
+        }) == sign::positive;
     };
     auto offset = [=](auto L) { return centre2(L, b) - centre2(L, a); };
     return !some_axis_separates(k, ds, false, ds.n, separates, offset);
@@ -235,9 +245,9 @@ template <class K>
     add_generators(ds, in);
     auto pokes_out = [&](auto axis, bool) {
         return k.sgn([=](auto L) {
-                   const auto w = axis(L);
-                   return L(1.0) * magnitude(arith::dot(w, centre2(L, in) - centre2(L, out))) + radius2(L, in, w) - radius2(L, out, w);
-               }) == sign::positive;
+            const auto w = axis(L);
+            return L(1.0) * magnitude(arith::dot(w, centre2(L, in) - centre2(L, out))) + radius2(L, in, w) - radius2(L, out, w);
+        }) == sign::positive;
     };
     auto offset = [=](auto L) { return centre2(L, in) - centre2(L, out); };
     return !some_axis_separates(k, ds, false, ds.n, pokes_out, offset);
@@ -260,17 +270,29 @@ template <class K>
 // sign_of(v, kind): +1 proven positive, -1 proven negative or zero-or-less, 0 unknown; kind says
 // which of the five families v belongs to, for a bound per family (box_box_bounds).
 template <class L>
-[[nodiscard]] constexpr auto box_generator(L l, const zonotope& z, unsigned i) { return lift(l, z.g[i]); }
+[[nodiscard]] constexpr auto box_generator(L l, const zonotope& z, unsigned i) {
+    return lift(l, z.g[i]);
+}
 template <class L>
-[[nodiscard]] constexpr auto box_generator(L l, const obb3& b, unsigned i) { return arith::lift(l, b.axes[i]); }
+[[nodiscard]] constexpr auto box_generator(L l, const obb3& b, unsigned i) {
+    return arith::lift(l, b.axes[i]);
+}
 template <class L>
-[[nodiscard]] constexpr auto box_centre2(L l, const zonotope& z) { return centre2(l, z); }
+[[nodiscard]] constexpr auto box_centre2(L l, const zonotope& z) {
+    return centre2(l, z);
+}
 template <class L>
-[[nodiscard]] constexpr auto box_centre2(L l, const obb3& b) { return arith::lift(l, b.center) + arith::lift(l, b.center); }
+[[nodiscard]] constexpr auto box_centre2(L l, const obb3& b) {
+    return arith::lift(l, b.center) + arith::lift(l, b.center);
+}
 template <class L>
-[[nodiscard]] constexpr auto box_extent2(L l, const zonotope& z, unsigned i) { return l(z.hp[i]) + l(z.hq[i]); }
+[[nodiscard]] constexpr auto box_extent2(L l, const zonotope& z, unsigned i) {
+    return l(z.hp[i]) + l(z.hq[i]);
+}
 template <class L>
-[[nodiscard]] constexpr auto box_extent2(L l, const obb3& b, unsigned i) { return l(b.half_extents[i]) + l(b.half_extents[i]); }
+[[nodiscard]] constexpr auto box_extent2(L l, const obb3& b, unsigned i) {
+    return l(b.half_extents[i]) + l(b.half_extents[i]);
+}
 [[nodiscard]] constexpr bool box_solid(const zonotope& z) { return z.hp[0] != -z.hq[0] && z.hp[1] != -z.hq[1] && z.hp[2] != -z.hq[2]; }
 [[nodiscard]] constexpr bool box_solid(const obb3& b) { return b.half_extents[0] != 0 && b.half_extents[1] != 0 && b.half_extents[2] != 0; }
 
@@ -344,7 +366,8 @@ template <class L, class BoxA, class BoxB, class Sign>
     for (unsigned i = 0; i < 3; ++i)
         for (unsigned j = 0; j < 3; ++j) {
             const unsigned i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-            if (axis(one * magnitude(dot(A[i], E[j])) - (hA[i1] * NA[i2][j] + hA[i2] * NA[i1][j]) - (hB[j1] * NB[i][j2] + hB[j2] * NB[i][j1]),
+            if (axis(one * magnitude(dot(A[i], E[j])) - (hA[i1] * NA[i2][j] + hA[i2] * NA[i1][j]) -
+                         (hB[j1] * NB[i][j2] + hB[j2] * NB[i][j1]),
                      edge_pair))
                 return certainty::no;
         }
@@ -384,13 +407,16 @@ struct box_magnitudes {
         return largest(abs(t.x) + abs(f.x), abs(t.y) + abs(f.y), abs(t.z) + abs(f.z));
     };
     auto h = [&](unsigned i) { return abs(z.hp[i]) + abs(z.hq[i]); };
-    return {largest(g(0), g(1), g(2)), largest(h(0), h(1), h(2)), {abs(z.cp.x) + abs(z.cq.x), abs(z.cp.y) + abs(z.cq.y), abs(z.cp.z) + abs(z.cq.z)}};
+    return {largest(g(0), g(1), g(2)),
+            largest(h(0), h(1), h(2)),
+            {abs(z.cp.x) + abs(z.cq.x), abs(z.cp.y) + abs(z.cq.y), abs(z.cp.z) + abs(z.cq.z)}};
 }
 [[nodiscard]] constexpr box_magnitudes magnitudes_of(const obb3& b) {
     using arith::abs;
     auto g = [&](unsigned i) { return largest(abs(b.axes[i].x), abs(b.axes[i].y), abs(b.axes[i].z)); };
     const auto& h = b.half_extents;
-    return {largest(g(0), g(1), g(2)), 2.0 * largest(abs(h[0]), abs(h[1]), abs(h[2])),
+    return {largest(g(0), g(1), g(2)),
+            2.0 * largest(abs(h[0]), abs(h[1]), abs(h[2])),
             {2.0 * abs(b.center.x), 2.0 * abs(b.center.y), 2.0 * abs(b.center.z)}};
 }
 struct box_box_bounds {
@@ -427,7 +453,8 @@ template <class K, class BoxA, class BoxB>
         // First the double values against the bounds from the inputs' maxima (no permanent is
         // computed: the filtered type's permanents are dead code here, only its K is read), then,
         // if some sign was too close to call, the filter with every permanent.
-        if (coordinate_axis_separates(arith::lift_filter{}, a, b, [](const auto& v) { return arith::proven_sign(v); })) return certainty::no;
+        if (coordinate_axis_separates(arith::lift_filter{}, a, b, [](const auto& v) { return arith::proven_sign(v); }))
+            return certainty::no;
         if (const certainty r = box_box_bounded_pass(a, b); r != certainty::uncertain) return r;
         return box_box_pass(arith::lift_filter{}, a, b, [](const auto& v, box_axis_kind) { return arith::proven_sign(v); });
     } else if constexpr (std::is_same_v<K, arith::approx_kernel>) {
@@ -458,10 +485,8 @@ template <class K>
                 return far ? gap - radius2(L, a, w) : gap + radius2(L, a, w);
             });
         };
-        if (beyond(v[0], true) == sign::positive)
-            return beyond(v[1], true) == sign::positive && beyond(v[2], true) == sign::positive;
-        if (beyond(v[0], false) == sign::negative)
-            return beyond(v[1], false) == sign::negative && beyond(v[2], false) == sign::negative;
+        if (beyond(v[0], true) == sign::positive) return beyond(v[1], true) == sign::positive && beyond(v[2], true) == sign::positive;
+        if (beyond(v[0], false) == sign::negative) return beyond(v[1], false) == sign::negative && beyond(v[2], false) == sign::negative;
         return false;
     };
     const point3 v0 = v[0];
@@ -475,10 +500,12 @@ export namespace incidence::detail {
 // The boxes in a fixed order (lexicographic on their numbers), so that the plain-double tier
 // also answers the same for (a, b) and (b, a).
 [[nodiscard]] constexpr bool obb_before(const obb3& a, const obb3& b) {
-    const double x[15] = {a.center.x, a.center.y, a.center.z, a.axes[0].x, a.axes[0].y, a.axes[0].z, a.axes[1].x, a.axes[1].y,
-                          a.axes[1].z, a.axes[2].x, a.axes[2].y, a.axes[2].z, a.half_extents[0], a.half_extents[1], a.half_extents[2]};
-    const double y[15] = {b.center.x, b.center.y, b.center.z, b.axes[0].x, b.axes[0].y, b.axes[0].z, b.axes[1].x, b.axes[1].y,
-                          b.axes[1].z, b.axes[2].x, b.axes[2].y, b.axes[2].z, b.half_extents[0], b.half_extents[1], b.half_extents[2]};
+    const double x[15] = {a.center.x,  a.center.y,  a.center.z,        a.axes[0].x,       a.axes[0].y,
+                          a.axes[0].z, a.axes[1].x, a.axes[1].y,       a.axes[1].z,       a.axes[2].x,
+                          a.axes[2].y, a.axes[2].z, a.half_extents[0], a.half_extents[1], a.half_extents[2]};
+    const double y[15] = {b.center.x,  b.center.y,  b.center.z,        b.axes[0].x,       b.axes[0].y,
+                          b.axes[0].z, b.axes[1].x, b.axes[1].y,       b.axes[1].z,       b.axes[2].x,
+                          b.axes[2].y, b.axes[2].z, b.half_extents[0], b.half_extents[1], b.half_extents[2]};
     for (int i = 0; i < 15; ++i)
         if (x[i] != y[i]) return x[i] < y[i];
     return true;

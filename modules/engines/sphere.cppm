@@ -54,7 +54,8 @@ namespace ball {
     const double l2 = dot(l, l);
     const double a = dot(r.direction, r.direction);
     const bool inside = l2 <= r2;
-    if (!(a > 0.0)) return inside ? std::optional{span_hit<double>{0.0, __builtin_huge_val(), r.origin, certainty::uncertain}} : std::nullopt;
+    if (!(a > 0.0))
+        return inside ? std::optional{span_hit<double>{0.0, __builtin_huge_val(), r.origin, certainty::uncertain}} : std::nullopt;
     const double len = arith::sqrt(a);
     const double sproj = dot(l, r.direction) / len;
     if (!inside && sproj < 0.0) return std::nullopt; // outside and pointing away

@@ -75,7 +75,6 @@ import :engines.triangle;
 
 export namespace incidence::detail {
 
-
 namespace tetra {
 
 [[nodiscard]] constexpr point3 vertex(const tetrahedron3& t, int i) { return i == 0 ? t.a : (i == 1 ? t.b : (i == 2 ? t.c : t.d)); }
@@ -375,8 +374,8 @@ struct rounded_located {
         const int e = fbc[f];
         const double D = a[0] * c[e][0] + a[1] * c[e][1] + a[2] * c[e][2];
         const double eD = 0x1p-48 * (arith::abs(a[0]) * m[e][0] + arith::abs(a[1]) * m[e][1] + arith::abs(a[2]) * m[e][2]) + 0x1p-700;
-        if (S * D > eD) return certainty::yes;  // crossed ahead of o
-        if (S * D < -eD) continue; // crossed behind o
+        if (S * D > eD) return certainty::yes; // crossed ahead of o
+        if (S * D < -eD) continue;             // crossed behind o
         misses = false;
     }
     return misses ? certainty::no : certainty::uncertain;
@@ -563,12 +562,12 @@ template <class K, class Normal>
     const vec3 a0 = b.axes[0], a1 = b.axes[1], a2 = b.axes[2];
     const double h0 = b.half_extents[0], h1 = b.half_extents[1], h2 = b.half_extents[2];
     return k.sgn([=](auto L) {
-               const auto n = normal(L);
-               const auto reach = L(h0) * sat::magnitude(arith::dot(n, arith::lift(L, a0))) +
-                                  L(h1) * sat::magnitude(arith::dot(n, arith::lift(L, a1))) +
-                                  L(h2) * sat::magnitude(arith::dot(n, arith::lift(L, a2)));
-               return L(tau) * arith::dot(n, arith::lift(L, c) - arith::lift(L, q)) - reach;
-           }) != sign::negative;
+        const auto n = normal(L);
+        const auto reach = L(h0) * sat::magnitude(arith::dot(n, arith::lift(L, a0))) +
+                           L(h1) * sat::magnitude(arith::dot(n, arith::lift(L, a1))) +
+                           L(h2) * sat::magnitude(arith::dot(n, arith::lift(L, a2)));
+        return L(tau) * arith::dot(n, arith::lift(L, c) - arith::lift(L, q)) - reach;
+    }) != sign::negative;
 }
 // Does the box lie in the zero set of the affine function f? zero(x, true) says f(x) = 0 for a
 // point, zero(x, false) that f's linear part vanishes on the vector x: the centre, and each axis

@@ -72,9 +72,7 @@ template <class K>
     const sign nd = arith::sgn<arith::hint::structural>(k, [=](auto L) { return arith::dot(n_of(L), s.D(L)); });
     if (nd != sign::zero) {
         auto w = [&](point3 u, point3 v) {
-            return k.sgn([=](auto L) {
-                return arith::det3(s.D(L), arith::lift(L, u) - s.O(L), arith::lift(L, v) - s.O(L));
-            });
+            return k.sgn([=](auto L) { return arith::det3(s.D(L), arith::lift(L, u) - s.O(L), arith::lift(L, v) - s.O(L)); });
         };
         if (w(b, c) == -nd || w(c, a) == -nd || w(a, b) == -nd) return false;
         const sign num = k.sgn([=](auto L) { return arith::dot(n_of(L), arith::lift(L, a) - s.O(L)); });
@@ -89,7 +87,8 @@ template <class K>
         const sign na = arith::sgn<arith::hint::structural>(k, [=](auto L) { return pick(n_of(L), axis); });
         if (na == sign::zero) continue;
         // Non-degenerate triangle, line parallel to its plane: coplanar iff the origin is in it.
-        if (!arith::is_zero<arith::hint::structural>(k, [=](auto L) { return arith::dot(n_of(L), arith::lift(L, a) - s.O(L)); })) return false;
+        if (!arith::is_zero<arith::hint::structural>(k, [=](auto L) { return arith::dot(n_of(L), arith::lift(L, a) - s.O(L)); }))
+            return false;
         if (in_projected_triangle(k, s.o, t, axis, na)) return true; // s.o is in the plane
         return linear_linear_2d(k, s, as_linear(segment3{a, b}), axis) || linear_linear_2d(k, s, as_linear(segment3{b, c}), axis) ||
                linear_linear_2d(k, s, as_linear(segment3{c, a}), axis);
@@ -117,7 +116,8 @@ template <class K>
 template <class K>
 [[nodiscard]] constexpr bool point_in_triangle(K& k, point3 x, const triangle3& t) {
     const point3 a = t.a, b = t.b, c = t.c;
-    if (!arith::is_zero<arith::hint::structural>(k, [=](auto L) { return poly::orient3d(L, a, b, c, x); })) return false; // see linear_triangle
+    if (!arith::is_zero<arith::hint::structural>(k, [=](auto L) { return poly::orient3d(L, a, b, c, x); }))
+        return false; // see linear_triangle
     for (int axis = 0; axis < 3; ++axis) {
         const sign na = arith::sgn<arith::hint::structural>(k, [=](auto L) {
             const auto A = arith::lift(L, a);
@@ -130,11 +130,15 @@ template <class K>
     const linear3 px{x, vec3{0, 0, 0}, x, extent::segment};
     auto on_edge = [&](point3 p, point3 q) {
         for (int axis = 0; axis < 3; ++axis) {
-            const sign m = k.sgn([=](auto L) { return pick(arith::cross(arith::lift(L, q) - arith::lift(L, p), arith::lift(L, x) - arith::lift(L, p)), axis); });
+            const sign m = k.sgn([=](auto L) {
+                return pick(arith::cross(arith::lift(L, q) - arith::lift(L, p), arith::lift(L, x) - arith::lift(L, p)), axis);
+            });
             if (m != sign::zero) return false;
         }
-        const sign d0 = k.sgn([=](auto L) { return arith::dot(arith::lift(L, x) - arith::lift(L, p), arith::lift(L, q) - arith::lift(L, p)); });
-        const sign d1 = k.sgn([=](auto L) { return arith::dot(arith::lift(L, q) - arith::lift(L, x), arith::lift(L, q) - arith::lift(L, p)); });
+        const sign d0 =
+            k.sgn([=](auto L) { return arith::dot(arith::lift(L, x) - arith::lift(L, p), arith::lift(L, q) - arith::lift(L, p)); });
+        const sign d1 =
+            k.sgn([=](auto L) { return arith::dot(arith::lift(L, q) - arith::lift(L, x), arith::lift(L, q) - arith::lift(L, p)); });
         if (p == q) return x == p;
         return d0 != sign::negative && d1 != sign::negative;
     };
@@ -149,7 +153,11 @@ template <class K>
     if (arith::abs(d[1]) > arith::abs(d[kz])) kz = 1;
     if (arith::abs(d[2]) > arith::abs(d[kz])) kz = 2;
     int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
-    if (d[kz] < 0.0) { const int tmp = kx; kx = ky; ky = tmp; }
+    if (d[kz] < 0.0) {
+        const int tmp = kx;
+        kx = ky;
+        ky = tmp;
+    }
     if (!(d[kz] != 0.0)) return std::nullopt;
     const double sx = d[kx] / d[kz], sy = d[ky] / d[kz], sz = 1.0 / d[kz];
     const vec3 av = tri.a - r.origin, bv = tri.b - r.origin, cv = tri.c - r.origin;
@@ -200,9 +208,7 @@ template <class K>
 
 template <class K>
 [[nodiscard]] constexpr bool triangles_meet(K& k, const triangle3& p, const triangle3& q) {
-    auto orient = [&](point3 a, point3 b, point3 c, point3 d) {
-        return k.sgn([=](auto L) { return poly::orient3d(L, a, b, c, d); });
-    };
+    auto orient = [&](point3 a, point3 b, point3 c, point3 d) { return k.sgn([=](auto L) { return poly::orient3d(L, a, b, c, d); }); };
     const point3 P[3] = {p.a, p.b, p.c}, Q[3] = {q.a, q.b, q.c};
     // The signs of t's vertices against u's plane, into s: one_side when all three lie strictly on
     // one side, straddles when none is zero, touches at the first zero (the remaining signs unset).
@@ -229,8 +235,7 @@ template <class K>
     auto edge = [&](point3 x, point3 y, const triangle3& t) {
         return linear_triangle(k, linear3{x, vec3{0, 0, 0}, y, extent::segment}, t);
     };
-    return edge(p.a, p.b, q) || edge(p.b, p.c, q) || edge(p.c, p.a, q) || edge(q.a, q.b, p) || edge(q.b, q.c, p) ||
-           edge(q.c, q.a, p);
+    return edge(p.a, p.b, q) || edge(p.b, p.c, q) || edge(p.c, p.a, q) || edge(q.a, q.b, p) || edge(q.b, q.c, p) || edge(q.c, q.a, p);
 }
 
 // Separating-axis test in plain double (see the top comment); closed triangles, touching counts.
@@ -243,8 +248,10 @@ template <class K>
         double qmin = dot(axis, Q[0] - point3{0, 0, 0}), qmax = qmin;
         for (int i = 1; i < 3; ++i) {
             const double x = dot(axis, P[i] - point3{0, 0, 0}), y = dot(axis, Q[i] - point3{0, 0, 0});
-            pmin = x < pmin ? x : pmin; pmax = x > pmax ? x : pmax;
-            qmin = y < qmin ? y : qmin; qmax = y > qmax ? y : qmax;
+            pmin = x < pmin ? x : pmin;
+            pmax = x > pmax ? x : pmax;
+            qmin = y < qmin ? y : qmin;
+            qmax = y > qmax ? y : qmax;
         }
         return pmax < qmin || qmax < pmin;
     };

@@ -33,17 +33,14 @@ template <class Lf>
         const auto alift = ad.x * ad.x + ad.y * ad.y;
         const auto blift = bd.x * bd.x + bd.y * bd.y;
         const auto clift = cd.x * cd.x + cd.y * cd.y;
-        return alift * (bd.x * cd.y - cd.x * bd.y) + blift * (cd.x * ad.y - ad.x * cd.y) +
-               clift * (ad.x * bd.y - bd.x * ad.y);
+        return alift * (bd.x * cd.y - cd.x * bd.y) + blift * (cd.x * ad.y - ad.x * cd.y) + clift * (ad.x * bd.y - bd.x * ad.y);
     }
 }
 template <class Lf>
-[[nodiscard]] constexpr auto insphere(Lf L, const point3& a, const point3& b, const point3& c, const point3& d,
-                                      const point3& e) {
+[[nodiscard]] constexpr auto insphere(Lf L, const point3& a, const point3& b, const point3& c, const point3& d, const point3& e) {
     {
         const auto E = arith::lift(L, e);
-        const auto ae = arith::lift(L, a) - E, be = arith::lift(L, b) - E, ce = arith::lift(L, c) - E,
-                   de = arith::lift(L, d) - E;
+        const auto ae = arith::lift(L, a) - E, be = arith::lift(L, b) - E, ce = arith::lift(L, c) - E, de = arith::lift(L, d) - E;
         const auto ab = ae.x * be.y - be.x * ae.y, bc = be.x * ce.y - ce.x * be.y;
         const auto cd = ce.x * de.y - de.x * ce.y, da = de.x * ae.y - ae.x * de.y;
         const auto ac = ae.x * ce.y - ce.x * ae.y, bd = be.x * de.y - de.x * be.y;

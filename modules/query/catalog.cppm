@@ -36,14 +36,14 @@ template <class A, class B, std::size_t N>
 struct family {
     using first_type = A;
     using second_type = B;
-    const char* name;  // the pair, <shape>_<shape> in lexicographic order
-    const char* table; // its body is a row of modules/query/<table>.cppm
+    const char* name;   // the pair, <shape>_<shape> in lexicographic order
+    const char* table;  // its body is a row of modules/query/<table>.cppm
     const char* fuzzer; // fuzz/<fuzzer>.cpp runs it against the oracle
     // The approximate tier is wrong only where a deciding sign lies within this fraction of its
     // permanent (the sum of its monomials' magnitudes) of zero, for inputs whose nonzero magnitudes
     // lie in [2^-500, 2^500]; 0: every tier is exact (comparisons alone decide).
     double approximate_bound;
-    const char* oracle; // what the tests check the exact tier against
+    const char* oracle;             // what the tests check the exact tier against
     const char* approximate_method; // what the approximate tier runs
     std::array<alternative<A, B>, N> alternatives;
 };
@@ -54,6 +54,7 @@ template <class A, class B>
     return detail::intersects(k, a, b);
 }
 
+// clang-format off: one row per family, as the table reads
 inline constexpr std::tuple families{
     family<point3, sphere3, 0>{"point_sphere", "intersects/sphere_pairs", "spheres_boxes", 0x1p-40, "exact squared distances over Epeck (testkit/oracle/cgal_oracle.cpp)", "signs in double", {}},
     family<sphere3, sphere3, 0>{"sphere_sphere", "intersects/sphere_pairs", "spheres_boxes", 0x1p-40, "exact squared distances over Epeck (testkit/oracle/cgal_oracle.cpp)", "signs in double", {}},
@@ -188,6 +189,7 @@ inline constexpr std::tuple families{
                                  [](const frustum3& f, const obb3& b) { return method::frustum_obb_decomposition(f, b); }}}}},
     family<kdop<14>, obb3, 0>{"kdop_obb", "intersects/kdop_pairs", "obb", 0x1p-40, "exact LP, CGAL QP_solver over Gmpzf (testkit/oracle/cgal_lp.cpp)", "signs in double", {}},
 };
+// clang-format on
 
 inline constexpr std::size_t family_count = std::tuple_size_v<decltype(families)>;
 
@@ -200,6 +202,7 @@ constexpr void for_each_family(F&& f) {
 // The pairs of a mesh or a polygon: mesh3 and polygon2 are views of arrays their caller owns, so
 // they are listed apart from `families`, whose shapes the audit generates, moves and nudges as
 // values; the README table and the catalog test read both lists.
+// clang-format off: one row per family, as the table reads
 inline constexpr std::tuple view_families{
     family<mesh3, point3, 0>{"mesh_point", "intersects/mesh_pairs", "solids", 0x1p-36, "triangles by CGAL Epeck, inside by exact crossing parity (testkit/oracle/cgal_mesh.cpp)", "signs in double", {}},
     family<mesh3, segment3, 0>{"mesh_segment", "intersects/mesh_pairs", "solids", 0x1p-36, "triangles by CGAL Epeck, inside by exact crossing parity (testkit/oracle/cgal_mesh.cpp)", "signs in double", {}},
@@ -234,6 +237,7 @@ inline constexpr std::tuple view_families{
     family<frustum3, polygon3, 0>{"frustum_polygon", "intersects/halfspace_pairs", "flat", 0x1p-40, "exact LP, CGAL QP_solver over Gmpzf (testkit/oracle/cgal_lp.cpp)", "signs in double", {}},
     family<kdop<14>, polygon3, 0>{"kdop_polygon", "intersects/kdop_pairs", "flat", 0x1p-40, "exact LP, CGAL QP_solver over Gmpzf (testkit/oracle/cgal_lp.cpp)", "signs in double", {}},
 };
+// clang-format on
 template <class F>
 constexpr void for_each_listed_family(F&& f) {
     for_each_family(f);
@@ -246,6 +250,7 @@ template <class A, class B>
 using containment = family<A, B, 0>;
 inline constexpr const char* lp = "exact LP, CGAL QP_solver over Gmpzf (testkit/oracle/cgal_lp.cpp)";
 inline constexpr const char* epeck = "CGAL Epeck (testkit/oracle/cgal_oracle.cpp)";
+// clang-format off: one row per family, as the table reads
 inline constexpr std::tuple containments{
     containment<aabb3, aabb3>{"aabb_aabb", "contains/box_pairs", "spheres_boxes", 0, epeck, "comparisons (exact)", {}},
     containment<aabb3, point3>{"aabb_point", "contains/box_pairs", "spheres_boxes", 0, epeck, "comparisons (exact)", {}},
@@ -299,6 +304,7 @@ inline constexpr std::tuple containments{
     containment<polygon3, segment3>{"polygon_segment", "contains/polygon_pairs", "flat", 0x1p-40, "CGAL triangulation (testkit/oracle/cgal_polygon.cpp)", "signs in double", {}},
     containment<polygon3, triangle3>{"polygon_triangle", "contains/polygon_pairs", "flat", 0x1p-40, "CGAL triangulation (testkit/oracle/cgal_polygon.cpp)", "signs in double", {}},
 };
+// clang-format on
 
 // intersection(a, b): where a line, a ray or a segment meets a set. One table, one test
 // (tests/query/intersection/linear_pairs.cpp) for all; the approximate tier's stated bound is the
@@ -308,6 +314,7 @@ using value_family = family<A, B, 0>;
 inline constexpr const char* values_oracle = "exact values over CGAL Epeck (testkit/oracle/cgal_values.cpp)";
 inline constexpr const char* clip = "the same clip in double";
 inline constexpr const char* contact = "the same contact in double";
+// clang-format off: one row per family, as the table reads
 inline constexpr std::tuple value_families{
     value_family<aabb3, ray3>{"aabb_ray", "intersection/linear_pairs", "values", 0, values_oracle, clip, {}},
     value_family<aabb3, segment3>{"aabb_segment", "intersection/linear_pairs", "values", 0, values_oracle, clip, {}},
@@ -343,12 +350,15 @@ inline constexpr std::tuple value_families{
     value_family<mesh3, segment3>{"mesh_segment", "intersection/linear_pairs", "values", 0, values_oracle, contact, {}},
     value_family<mesh3, line3>{"line_mesh", "intersection/linear_pairs", "values", 0, values_oracle, contact, {}},
 };
+// clang-format on
 
 // squared_distance(a, b) and max_squared_distance(a, b); the approximate tier's stated bound is
 // gamma_5 relative (modules/query/distance/box_point.cppm): 0 here.
+// clang-format off: one row per family, as the table reads
 inline constexpr std::tuple distances{
     family<aabb3, point3, 0>{"aabb_point", "distance/box_point", "spheres_boxes", 0, "exact squared distances over Epeck (testkit/oracle/cgal_oracle.cpp)", "the same sum in double", {}},
 };
+// clang-format on
 
 // The approximate tier's stated margin of the yes/no pair `name` (tests read it here).
 [[nodiscard]] constexpr double approximate_bound(std::string_view name) {

@@ -14,13 +14,13 @@ export namespace incidence {
 
 // Is b inside a (closed sets)?
 template <tier Tier = exact, class A, class B>
-    requires requires(arith::filter_kernel& k, const A& a, const B& b) { detail::contains(k, a, b); }
+requires requires(arith::filter_kernel& k, const A& a, const B& b) { detail::contains(k, a, b); }
 [[nodiscard]] constexpr bool contains(const A& a, const B& b) {
     return detail::decide_pair<Tier>(a, b, detail::contains_body{});
 }
 
 template <class A, class B>
-    requires requires(arith::filter_kernel& k, const A& a, const B& b) { detail::contains(k, a, b); }
+requires requires(arith::filter_kernel& k, const A& a, const B& b) { detail::contains(k, a, b); }
 [[nodiscard]] constexpr certainty classify_contains(const A& a, const B& b) {
     return detail::classify_pair(a, b, detail::contains_body{});
 }

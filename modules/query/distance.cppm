@@ -14,23 +14,35 @@ import :tiers;
 namespace incidence::detail {
 struct nearest_body {
     template <class K, class A, class B>
-    [[nodiscard]] constexpr auto operator()(K& k, const A& a, const B& b) const { return detail::squared_distance(k, a, b, distance_kind::nearest); }
+    [[nodiscard]] constexpr auto operator()(K& k, const A& a, const B& b) const {
+        return detail::squared_distance(k, a, b, distance_kind::nearest);
+    }
 };
 struct farthest_body {
     template <class K, class A, class B>
-    [[nodiscard]] constexpr auto operator()(K& k, const A& a, const B& b) const { return detail::squared_distance(k, a, b, distance_kind::farthest); }
+    [[nodiscard]] constexpr auto operator()(K& k, const A& a, const B& b) const {
+        return detail::squared_distance(k, a, b, distance_kind::farthest);
+    }
 };
 } // namespace incidence::detail
 
 export namespace incidence {
 
 template <tier Tier = exact>
-[[nodiscard]] constexpr auto squared_distance(const aabb3& b, const point3& p) { return detail::value_pair<Tier>(b, p, detail::nearest_body{}); }
+[[nodiscard]] constexpr auto squared_distance(const aabb3& b, const point3& p) {
+    return detail::value_pair<Tier>(b, p, detail::nearest_body{});
+}
 template <tier Tier = exact>
-[[nodiscard]] constexpr auto squared_distance(const point3& p, const aabb3& b) { return squared_distance<Tier>(b, p); }
+[[nodiscard]] constexpr auto squared_distance(const point3& p, const aabb3& b) {
+    return squared_distance<Tier>(b, p);
+}
 template <tier Tier = exact>
-[[nodiscard]] constexpr auto max_squared_distance(const aabb3& b, const point3& p) { return detail::value_pair<Tier>(b, p, detail::farthest_body{}); }
+[[nodiscard]] constexpr auto max_squared_distance(const aabb3& b, const point3& p) {
+    return detail::value_pair<Tier>(b, p, detail::farthest_body{});
+}
 template <tier Tier = exact>
-[[nodiscard]] constexpr auto max_squared_distance(const point3& p, const aabb3& b) { return max_squared_distance<Tier>(b, p); }
+[[nodiscard]] constexpr auto max_squared_distance(const point3& p, const aabb3& b) {
+    return max_squared_distance<Tier>(b, p);
+}
 
 } // namespace incidence

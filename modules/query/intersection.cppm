@@ -21,7 +21,9 @@ template <class A, class B>
 concept finds = requires(arith::filter_kernel& k, const A& a, const B& b) { detail::intersection(k, a, b); };
 struct intersection_body {
     template <class K, class A, class B>
-    [[nodiscard]] constexpr auto operator()(K& k, const A& a, const B& b) const { return detail::intersection(k, a, b); }
+    [[nodiscard]] constexpr auto operator()(K& k, const A& a, const B& b) const {
+        return detail::intersection(k, a, b);
+    }
 };
 } // namespace incidence::detail
 
@@ -31,7 +33,7 @@ template <class A, class B>
 concept has_intersection = detail::finds<A, B> || detail::finds<B, A>;
 
 template <tier Tier = exact, class A, class B>
-    requires has_intersection<A, B>
+requires has_intersection<A, B>
 [[nodiscard]] constexpr auto intersection(const A& a, const B& b) {
     if constexpr (detail::finds<A, B>) return detail::find_pair<Tier>(a, b, detail::intersection_body{});
     else return detail::find_pair<Tier>(b, a, detail::intersection_body{});

@@ -20,18 +20,14 @@ concept canonical_pair = requires(arith::filter_kernel& k, const A& a, const B& 
 template <class A, class B>
 concept has_pair = canonical_pair<A, B> || canonical_pair<B, A>;
 
-
 // Does a meet b? Closed sets: touching counts.
 template <tier Tier = exact, class A, class B>
-    requires has_pair<A, B>
+requires has_pair<A, B>
 [[nodiscard]] constexpr bool intersects(const A& a, const B& b) {
     if constexpr (canonical_pair<A, B>) {
-        if constexpr (std::is_same_v<Tier, approximate> && detail::approximate_override<A, B>)
-            return detail::intersects_approximate(a, b);
-        else if constexpr (detail::by_comparisons<A, B>)
-            return detail::decide_pair<approximate>(a, b, detail::intersects_body{});
-        else
-            return detail::decide_pair<Tier>(a, b, detail::intersects_body{});
+        if constexpr (std::is_same_v<Tier, approximate> && detail::approximate_override<A, B>) return detail::intersects_approximate(a, b);
+        else if constexpr (detail::by_comparisons<A, B>) return detail::decide_pair<approximate>(a, b, detail::intersects_body{});
+        else return detail::decide_pair<Tier>(a, b, detail::intersects_body{});
     } else {
         return intersects<Tier>(b, a);
     }
@@ -39,7 +35,7 @@ template <tier Tier = exact, class A, class B>
 
 // The floating-point filter's verdict alone: yes, no, or uncertain (never wrong).
 template <class A, class B>
-    requires has_pair<A, B>
+requires has_pair<A, B>
 [[nodiscard]] constexpr certainty classify(const A& a, const B& b) {
     if constexpr (canonical_pair<A, B>) {
         return detail::classify_pair(a, b, detail::intersects_body{});

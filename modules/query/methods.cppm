@@ -19,9 +19,7 @@ namespace method {
 [[nodiscard]] constexpr std::optional<triangle_hit<double>> ray_triangle_moller_trumbore(const ray3& r, const triangle3& t) {
     return detail::ray_triangle_moller_trumbore(r, t);
 }
-[[nodiscard]] constexpr std::optional<span_hit<double>> aabb_ray_slab(const aabb3& b, const ray3& r) {
-    return detail::aabb_ray_slab(b, r);
-}
+[[nodiscard]] constexpr std::optional<span_hit<double>> aabb_ray_slab(const aabb3& b, const ray3& r) { return detail::aabb_ray_slab(b, r); }
 [[nodiscard]] constexpr bool aabb_ray_woo(const aabb3& b, const ray3& r) { return detail::aabb_ray_woo(b, r); }
 [[nodiscard]] constexpr std::optional<span_hit<double>> ray_sphere_geometric(const ray3& r, const sphere3& s) {
     return detail::ray_sphere_geometric(r, s);
@@ -32,13 +30,13 @@ namespace method {
 [[nodiscard]] constexpr bool aabb_segment_slab(const aabb3& b, const segment3& s) { return detail::aabb_segment_slab(b, s); }
 [[nodiscard]] constexpr bool aabb_line_slab(const aabb3& b, const line3& l) { return detail::aabb_line_slab(b, l); }
 [[nodiscard]] constexpr bool aabb_triangle_sat(const aabb3& b, const triangle3& t) { return detail::aabb_triangle_sat(b, t); }
-[[nodiscard]] constexpr bool triangle_triangle_sat(const triangle3& p, const triangle3& q) {
-    return detail::triangle_triangle_sat(p, q);
-}
+[[nodiscard]] constexpr bool triangle_triangle_sat(const triangle3& p, const triangle3& q) { return detail::triangle_triangle_sat(p, q); }
 [[nodiscard]] constexpr bool obb_obb_gottschalk(const obb3& a, const obb3& b) { return detail::obb_obb_gottschalk(a, b); }
 [[nodiscard]] constexpr bool aabb_frustum_culling(const aabb3& b, const frustum3& f) { return detail::aabb_frustum_culling(b, f); }
 [[nodiscard]] constexpr bool aabb_frustum_sat(const aabb3& b, const frustum3& f) { return detail::aabb_frustum_sat(b, f); }
-[[nodiscard]] constexpr bool aabb_frustum_decomposition(const aabb3& b, const frustum3& f) { return detail::aabb_frustum_decomposition(b, f); }
+[[nodiscard]] constexpr bool aabb_frustum_decomposition(const aabb3& b, const frustum3& f) {
+    return detail::aabb_frustum_decomposition(b, f);
+}
 [[nodiscard]] constexpr bool frustum_obb_sat(const frustum3& f, const obb3& b) { return detail::frustum_obb_sat(f, b); }
 [[nodiscard]] constexpr bool frustum_obb_decomposition(const frustum3& f, const obb3& b) { return detail::frustum_obb_decomposition(f, b); }
 } // namespace method

@@ -18,7 +18,8 @@ concept approximate_override = requires(const A& a, const B& b) { detail::inters
 // as the approximate tier does, without a filter pass around it (bench/NOTES.md: the pass kept the
 // compiler from turning its early exits into a branch-free chain).
 template <class A, class B>
-concept by_comparisons = requires { requires detail::decided_by_comparisons(static_cast<const A*>(nullptr), static_cast<const B*>(nullptr)); };
+concept by_comparisons =
+    requires { requires detail::decided_by_comparisons(static_cast<const A*>(nullptr), static_cast<const B*>(nullptr)); };
 
 // The tiers that filter (exact, conservative, aggressive) and classify, for one canonical pair:
 // body(k, a, b) is the pair's kernel-generic body. When the filter cannot decide, its last
@@ -36,7 +37,8 @@ inline constexpr bool scaled_by_inputs =
 // at once; in the plane (degree 2 or 3) the filter's own range reaches much further, so there the
 // scaled pass only follows a first pass that failed out of range.
 template <class A, class B>
-inline constexpr bool scaled_first = scaled_by_inputs<A, B> && !detail::scene::shape_of<A, polygon2> && !detail::scene::shape_of<B, polygon2>;
+inline constexpr bool scaled_first =
+    scaled_by_inputs<A, B> && !detail::scene::shape_of<A, polygon2> && !detail::scene::shape_of<B, polygon2>;
 // The pass with every input scaled by 2^-top as it is lifted, top = the exponent of the largest
 // input; nullopt when the pair is near scale 1 already (or has a value that is not finite).
 // Run time only (arith::lift_scaled_filter).
@@ -108,11 +110,15 @@ template <class A, class B, class Body>
 }
 struct intersects_body {
     template <class K, class A, class B>
-    [[nodiscard]] constexpr bool operator()(K& k, const A& a, const B& b) const { return detail::intersects(k, a, b); }
+    [[nodiscard]] constexpr bool operator()(K& k, const A& a, const B& b) const {
+        return detail::intersects(k, a, b);
+    }
 };
 struct contains_body {
     template <class K, class A, class B>
-    [[nodiscard]] constexpr bool operator()(K& k, const A& a, const B& b) const { return detail::contains(k, a, b); }
+    [[nodiscard]] constexpr bool operator()(K& k, const A& a, const B& b) const {
+        return detail::contains(k, a, b);
+    }
 };
 } // namespace incidence::detail
 

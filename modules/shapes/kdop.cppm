@@ -16,7 +16,7 @@ struct direction3 {
 };
 
 template <int K>
-    requires(K == 6 || K == 14 || K == 18 || K == 26)
+requires(K == 6 || K == 14 || K == 18 || K == 26)
 struct kdop {
     static constexpr int slabs = K / 2;
     std::array<double, K / 2> min;

@@ -14,7 +14,8 @@ struct obb3 {
     std::array<vec3, 3> axes;
     std::array<double, 3> half_extents;
 
-    [[nodiscard]] static constexpr result<obb3> make(point3 center, const std::array<vec3, 3>& axes, const std::array<double, 3>& half_extents) {
+    [[nodiscard]] static constexpr result<obb3> make(point3 center, const std::array<vec3, 3>& axes,
+                                                     const std::array<double, 3>& half_extents) {
         if (!is_finite(center)) return error{errc::not_finite};
         for (int i = 0; i < 3; ++i) {
             const auto u = static_cast<unsigned>(i);

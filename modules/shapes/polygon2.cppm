@@ -25,9 +25,7 @@ struct polygon2 {
 
     [[nodiscard]] constexpr std::size_t rings() const { return ring_ends.empty() ? 1 : ring_ends.size(); }
     [[nodiscard]] constexpr std::size_t ring_begin(std::size_t i) const { return i == 0 ? 0 : ring_ends[i - 1]; }
-    [[nodiscard]] constexpr std::size_t ring_end(std::size_t i) const {
-        return ring_ends.empty() ? vertices.size() : ring_ends[i];
-    }
+    [[nodiscard]] constexpr std::size_t ring_end(std::size_t i) const { return ring_ends.empty() ? vertices.size() : ring_ends[i]; }
     // Ring ends increase strictly up to the number of vertices, and there is a vertex.
     [[nodiscard]] constexpr bool indices_valid() const {
         if (vertices.empty()) return false;
@@ -66,7 +64,7 @@ struct polygon2 {
                     for (std::size_t j = rj == ri ? i + 1 : ring_begin(rj); j < ring_end(rj); ++j) {
                         const std::size_t j2 = next(j, ring_begin(rj), ring_end(rj));
                         const point2 c = vertices[j], d = vertices[j2];
-                        if (j == i2 || j2 == i) { // consecutive: they share one vertex
+                        if (j == i2 || j2 == i) {         // consecutive: they share one vertex
                             const bool forward = j == i2; // a -> b == c -> d
                             const point2 p = forward ? a : c, q = forward ? b : a, r = forward ? d : b;
                             // p -> q -> r: only q shared, unless r folds back onto p -> q
@@ -83,9 +81,7 @@ struct polygon2 {
 private:
     [[nodiscard]] static constexpr sign orientation(point2 a, point2 b, point2 c) {
         arith::exact_kernel k;
-        return k.sgn([=](auto L) {
-            return (L(b.x) - L(a.x)) * (L(c.y) - L(a.y)) - (L(b.y) - L(a.y)) * (L(c.x) - L(a.x));
-        });
+        return k.sgn([=](auto L) { return (L(b.x) - L(a.x)) * (L(c.y) - L(a.y)) - (L(b.y) - L(a.y)) * (L(c.x) - L(a.x)); });
     }
     // sign of (p - q) . (r - q): positive when r lies on p's side of q along a line through them.
     [[nodiscard]] static constexpr sign dot_sign(point2 p, point2 q, point2 r) {

@@ -38,9 +38,7 @@ struct polygon3 {
 
     [[nodiscard]] constexpr std::size_t rings() const { return ring_ends.empty() ? 1 : ring_ends.size(); }
     [[nodiscard]] constexpr std::size_t ring_begin(std::size_t i) const { return i == 0 ? 0 : ring_ends[i - 1]; }
-    [[nodiscard]] constexpr std::size_t ring_end(std::size_t i) const {
-        return ring_ends.empty() ? vertices.size() : ring_ends[i];
-    }
+    [[nodiscard]] constexpr std::size_t ring_end(std::size_t i) const { return ring_ends.empty() ? vertices.size() : ring_ends[i]; }
     [[nodiscard]] static constexpr std::size_t next(std::size_t j, std::size_t b, std::size_t e) { return j + 1 == e ? b : j + 1; }
     // Ring ends increase strictly up to the number of vertices, the plane vertices exist, the axis
     // is 0, 1 or 2.

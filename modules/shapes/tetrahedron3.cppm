@@ -26,9 +26,9 @@ struct tetrahedron3 {
         arith::exact_kernel k;
         const auto A = a, B = b, C = c, D = d;
         return k.sgn([=](auto L) {
-                   const auto o = arith::lift(L, A);
-                   return arith::det3(arith::lift(L, B) - o, arith::lift(L, C) - o, arith::lift(L, D) - o);
-               }) == sign::zero;
+            const auto o = arith::lift(L, A);
+            return arith::det3(arith::lift(L, B) - o, arith::lift(L, C) - o, arith::lift(L, D) - o);
+        }) == sign::zero;
     }
     // Refuses non-finite coordinates and coplanar (zero-volume) vertices.
     [[nodiscard]] static constexpr result<tetrahedron3> make(point3 a, point3 b, point3 c, point3 d) {

@@ -20,9 +20,9 @@ struct nothing {};
 struct lp_only {}; // a coplanar tetrahedron or a flat box: the LP oracle decides
 
 template <class Kern>
-using object = std::variant<typename Kern::Point_3, typename Kern::Segment_3, typename Kern::Ray_3, typename Kern::Line_3,
-                            typename Kern::Plane_3, typename Kern::Triangle_3, typename Kern::Tetrahedron_3,
-                            typename Kern::Iso_cuboid_3, everything, nothing, lp_only>;
+using object =
+    std::variant<typename Kern::Point_3, typename Kern::Segment_3, typename Kern::Ray_3, typename Kern::Line_3, typename Kern::Plane_3,
+                 typename Kern::Triangle_3, typename Kern::Tetrahedron_3, typename Kern::Iso_cuboid_3, everything, nothing, lp_only>;
 
 template <class Kern>
 object<Kern> to_cgal(const flat& f) {

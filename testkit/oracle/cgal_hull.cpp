@@ -73,8 +73,8 @@ double hull_time_ms(const double* xyz, unsigned long n, unsigned long& vertices)
     return std::chrono::duration<double, std::milli>(t1 - t0).count();
 }
 
-void halfspaces_volume_area(const double* dirs, const double* lo, const double* hi, unsigned long m, const double inside[3],
-                            double& volume, double& area) {
+void halfspaces_volume_area(const double* dirs, const double* lo, const double* hi, unsigned long m, const double inside[3], double& volume,
+                            double& area) {
     // The polytope is the convex hull of its vertices: every intersection point of three planes
     // that satisfies all the half-spaces (CGAL's halfspace_intersection_3 returned unshared
     // vertices when four or more k-DOP planes meet at a vertex, so it is not used).
@@ -92,11 +92,15 @@ void halfspaces_volume_area(const double* dirs, const double* lo, const double* 
         for (std::size_t j = i + 1; j < pl.size(); ++j)
             for (std::size_t k = j + 1; k < pl.size(); ++k) {
                 const auto &p = pl[i], &q = pl[j], &r = pl[k];
-                const double det = p[0] * (q[1] * r[2] - q[2] * r[1]) - p[1] * (q[0] * r[2] - q[2] * r[0]) + p[2] * (q[0] * r[1] - q[1] * r[0]);
+                const double det =
+                    p[0] * (q[1] * r[2] - q[2] * r[1]) - p[1] * (q[0] * r[2] - q[2] * r[0]) + p[2] * (q[0] * r[1] - q[1] * r[0]);
                 if (std::abs(det) < 1e-12) continue;
-                const double x = (p[3] * (q[1] * r[2] - q[2] * r[1]) - p[1] * (q[3] * r[2] - q[2] * r[3]) + p[2] * (q[3] * r[1] - q[1] * r[3])) / det;
-                const double y = (p[0] * (q[3] * r[2] - q[2] * r[3]) - p[3] * (q[0] * r[2] - q[2] * r[0]) + p[2] * (q[0] * r[3] - q[3] * r[0])) / det;
-                const double z = (p[0] * (q[1] * r[3] - q[3] * r[1]) - p[1] * (q[0] * r[3] - q[3] * r[0]) + p[3] * (q[0] * r[1] - q[1] * r[0])) / det;
+                const double x =
+                    (p[3] * (q[1] * r[2] - q[2] * r[1]) - p[1] * (q[3] * r[2] - q[2] * r[3]) + p[2] * (q[3] * r[1] - q[1] * r[3])) / det;
+                const double y =
+                    (p[0] * (q[3] * r[2] - q[2] * r[3]) - p[3] * (q[0] * r[2] - q[2] * r[0]) + p[2] * (q[0] * r[3] - q[3] * r[0])) / det;
+                const double z =
+                    (p[0] * (q[1] * r[3] - q[3] * r[1]) - p[1] * (q[0] * r[3] - q[3] * r[0]) + p[3] * (q[0] * r[1] - q[1] * r[0])) / det;
                 bool ok = true;
                 for (const auto& h : pl) ok = ok && h[0] * x + h[1] * y + h[2] * z <= h[3] + 1e-9 * (scale + 1e-300);
                 if (ok) pts.emplace_back(x, y, z);

@@ -68,9 +68,7 @@ void add(program& lp, int& var, int& row, const convex_set& s) {
     lp.set_r(row + 3, CGAL::EQUAL);
     row += 4;
 }
-bool finite(const std::array<double, 3>& x) {
-    return std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]);
-}
+bool finite(const std::array<double, 3>& x) { return std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]); }
 // x given by its slabs and half-spaces alone, every value finite?
 bool finite_rows_only(const convex_set& x) {
     if (x.plane || !x.points.empty() || !x.generators.empty()) return false;
@@ -93,9 +91,7 @@ bool finite_corners_only(const convex_set& v) {
 using qpoint = std::array<mpq_class, 3>;
 qpoint rational(const std::array<double, 3>& p) { return {mpq_class(p[0]), mpq_class(p[1]), mpq_class(p[2])}; }
 mpq_class dot(const qpoint& a, const qpoint& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-qpoint cross(const qpoint& a, const qpoint& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
+qpoint cross(const qpoint& a, const qpoint& b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
 
 // The bounds n . y <= c of a set: its half-spaces and the sides of its slabs as given (doubles; a
 // slab's lower bound lo <= n . y as -n . y <= -lo, negation being exact), or the faces of a box
@@ -147,8 +143,8 @@ std::optional<bounds> bounds_of(const convex_set& x) {
 // most 13 terms, each a product of at most three doubles: at most 14 roundings on each, under
 // 2^-49 of the sum of the terms' magnitudes, plus under 2^-1068 from last products that underflow.
 // A first product t g_k that underflows (its error would grow with n_k) leaves the sign to rationals.
-int corner_sign(const std::array<double, 3>& n, double c, const std::array<double, 3>& p,
-                const std::vector<convex_set::generator>& gs, unsigned corner) {
+int corner_sign(const std::array<double, 3>& n, double c, const std::array<double, 3>& p, const std::vector<convex_set::generator>& gs,
+                unsigned corner) {
     double s = -c, size = std::fabs(c);
     bool underflow = false;
     for (unsigned k = 0; k < 3; ++k) {
@@ -210,7 +206,9 @@ int corners_decide(const std::optional<bounds>& bs, const convex_set& v) {
         return all;
     };
     for (const auto& b : bs->doubles)
-        if (all_beyond([&](std::size_t j) { return corner_sign(b.n, b.c, v.points[j / per_point], v.generators, static_cast<unsigned>(j % per_point)); }))
+        if (all_beyond([&](std::size_t j) {
+                return corner_sign(b.n, b.c, v.points[j / per_point], v.generators, static_cast<unsigned>(j % per_point));
+            }))
             return -1;
     for (const auto& b : bs->rationals)
         if (all_beyond([&](std::size_t j) { return sgn(dot(b.n, corners[j]) - b.c); })) return -1;

@@ -57,8 +57,11 @@ bool mesh_intersect(const mesh_data& m, const flat& x) {
     // ray o + t d, t >= 0, x_k >= o_k where d_k >= 0 and x_k <= o_k where d_k <= 0; for a line,
     // x_k = o_k where d_k = 0. A triangle whose vertices' box misses it cannot meet x (comparisons
     // of the inputs), and skips the exact test.
-    const int n = x.kind == flat::point ? 1 : x.kind == flat::segment || x.kind == flat::box ? 2 : x.kind == flat::triangle ? 3
-                : x.kind == flat::tetrahedron ? 4 : 0;
+    const int n = x.kind == flat::point                            ? 1
+                  : x.kind == flat::segment || x.kind == flat::box ? 2
+                  : x.kind == flat::triangle                       ? 3
+                  : x.kind == flat::tetrahedron                    ? 4
+                                                                   : 0;
     const double inf = std::numeric_limits<double>::infinity();
     std::array<double, 3> lo{-inf, -inf, -inf}, hi{inf, inf, inf};
     for (int j = 0; j < n; ++j)
@@ -163,7 +166,8 @@ std::array<K::Point_3, 3> corners(const mesh_data& m, const std::array<unsigned,
 // open intervals between consecutive ones each lie on a triangle or off the surface, and their
 // exact midpoints decide: on a triangle (do_intersect, or an edge's has_on) or inside by crossing
 // parity over Epeck. The end points count through the closure (the set is closed).
-bool segment_in_mesh(const mesh_data& m, const K::Point_3& A, const K::Point_3& B, const std::array<double, 3>& lo3, const std::array<double, 3>& hi3) {
+bool segment_in_mesh(const mesh_data& m, const K::Point_3& A, const K::Point_3& B, const std::array<double, 3>& lo3,
+                     const std::array<double, 3>& hi3) {
     using P = K::Point_3;
     const K::Segment_3 S(A, B);
     const K::Vector_3 D = B - A;
@@ -232,7 +236,8 @@ bool mesh_contains_segment(const mesh_data& m, const std::array<double, 3>& a, c
 // c (exact rationals), sorted; every cell is met by the chord from a to b + s (c - b) for an s
 // strictly between two consecutive ones, and the triangle is in the (closed) set iff each such
 // chord, at the exact midpoints, is (segment_in_mesh).
-bool mesh_contains_triangle(const mesh_data& m, const std::array<double, 3>& a, const std::array<double, 3>& b, const std::array<double, 3>& c) {
+bool mesh_contains_triangle(const mesh_data& m, const std::array<double, 3>& a, const std::array<double, 3>& b,
+                            const std::array<double, 3>& c) {
     if (!mesh_inside(m, a) || !mesh_inside(m, b) || !mesh_inside(m, c)) return false;
     using P = K::Point_3;
     const P A(a[0], a[1], a[2]), B(b[0], b[1], b[2]), C(c[0], c[1], c[2]);
@@ -277,7 +282,8 @@ bool mesh_contains_triangle(const mesh_data& m, const std::array<double, 3>& a, 
             const auto res = CGAL::intersection(traces[i], traces[j]);
             if (!res) continue;
             if (const P* v = boost::get<P>(&*res)) vertices.push_back(*v);
-            else if (const K::Segment_3* e = boost::get<K::Segment_3>(&*res)) vertices.push_back(e->source()), vertices.push_back(e->target());
+            else if (const K::Segment_3* e = boost::get<K::Segment_3>(&*res))
+                vertices.push_back(e->source()), vertices.push_back(e->target());
         }
     // s of the line from A through V on B C, in the plane seen along an axis where T's normal is nonzero
     const K::Vector_3 n = CGAL::cross_product(B - A, C - A);

@@ -152,9 +152,10 @@ bool mesh_contains_box(const mesh_data& m, const std::array<double, 3>& lo, cons
     const P3 centre(FT(lo[0]) / 2 + FT(hi[0]) / 2, FT(lo[1]) / 2 + FT(hi[1]) / 2, FT(lo[2]) / 2 + FT(hi[2]) / 2);
     FT step(1);
     for (int attempt = 0; attempt < 200; ++attempt, step /= 2) {
-        const P3 p = attempt == 0 ? centre
-                                  : P3(centre.x() + step * (FT(hi[0]) - FT(lo[0])) / 4, centre.y() + step * step * (FT(hi[1]) - FT(lo[1])) / 4,
-                                       centre.z() + step * step * step * (FT(hi[2]) - FT(lo[2])) / 4);
+        const P3 p = attempt == 0
+                         ? centre
+                         : P3(centre.x() + step * (FT(hi[0]) - FT(lo[0])) / 4, centre.y() + step * step * (FT(hi[1]) - FT(lo[1])) / 4,
+                              centre.z() + step * step * step * (FT(hi[2]) - FT(lo[2])) / 4);
         bool on = false;
         for (const auto& t : m.t) {
             const P3 a(m.v[t[0]][0], m.v[t[0]][1], m.v[t[0]][2]), b(m.v[t[1]][0], m.v[t[1]][1], m.v[t[1]][2]),

@@ -24,9 +24,13 @@ using FT = K::FT;
 using Q = std::decay_t<decltype(CGAL::exact(std::declval<K::FT>()))>; // GMP rationals
 Q qabs(const Q& x) { return x < 0 ? Q(-x) : x; }
 template <class Kern = K>
-typename Kern::Point_3 P(const double p[3]) { return {p[0], p[1], p[2]}; }
+typename Kern::Point_3 P(const double p[3]) {
+    return {p[0], p[1], p[2]};
+}
 template <class Kern = K>
-typename Kern::Vector_3 V(const double p[3]) { return {p[0], p[1], p[2]}; }
+typename Kern::Vector_3 V(const double p[3]) {
+    return {p[0], p[1], p[2]};
+}
 K::Point_2 P2(const double p[2]) { return {p[0], p[1]}; }
 int sgn(CGAL::Sign s) { return s == CGAL::POSITIVE ? 1 : (s == CGAL::NEGATIVE ? -1 : 0); }
 Q exact(const FT& x) { return CGAL::exact(x); }
@@ -55,9 +59,7 @@ bool nearest(const Q& v, double x) {
 }
 } // namespace
 
-int orient2d(const double a[2], const double b[2], const double c[2]) {
-    return sgn(CGAL::orientation(P2(a), P2(b), P2(c)));
-}
+int orient2d(const double a[2], const double b[2], const double c[2]) { return sgn(CGAL::orientation(P2(a), P2(b), P2(c))); }
 // Shewchuk: positive when d is below the plane of ccw a, b, c; CGAL: positive when d is on the
 // positive side, i.e. above. Hence the minus sign.
 int orient3d(const double a[3], const double b[3], const double c[3], const double d[3]) {
@@ -73,17 +75,14 @@ int insphere(const double a[3], const double b[3], const double c[3], const doub
     return -sgn(CGAL::side_of_oriented_sphere(P(a), P(b), P(c), P(d), P(e)));
 }
 
-bool triangle_is_degenerate(const double a[3], const double b[3], const double c[3]) {
-    return CGAL::collinear(P(a), P(b), P(c));
-}
+bool triangle_is_degenerate(const double a[3], const double b[3], const double c[3]) { return CGAL::collinear(P(a), P(b), P(c)); }
 bool ray_triangle(const double o[3], const double d[3], const double a[3], const double b[3], const double c[3]) {
     return CGAL::do_intersect(K::Ray_3(P(o), V(d)), K::Triangle_3(P(a), P(b), P(c)));
 }
 bool segment_triangle(const double p[3], const double q[3], const double a[3], const double b[3], const double c[3]) {
     return CGAL::do_intersect(K::Segment_3(P(p), P(q)), K::Triangle_3(P(a), P(b), P(c)));
 }
-bool triangle_triangle(const double a[3], const double b[3], const double c[3], const double d[3], const double e[3],
-                       const double f[3]) {
+bool triangle_triangle(const double a[3], const double b[3], const double c[3], const double d[3], const double e[3], const double f[3]) {
     return CGAL::do_intersect(K::Triangle_3(P(a), P(b), P(c)), K::Triangle_3(P(d), P(e), P(f)));
 }
 template <class Ker>
@@ -109,8 +108,12 @@ bool plane_segment(const double n[3], double offset, const double p[3], const do
 bool plane_triangle(const double n[3], double offset, const double a[3], const double b[3], const double c[3]) {
     return plane_triangle_k<K>(n, offset, a, b, c);
 }
-bool box_plane_epick(const double mn[3], const double mx[3], const double n[3], double offset) { return box_plane_k<KI>(mn, mx, n, offset); }
-bool plane_segment_epick(const double n[3], double offset, const double p[3], const double q[3]) { return plane_segment_k<KI>(n, offset, p, q); }
+bool box_plane_epick(const double mn[3], const double mx[3], const double n[3], double offset) {
+    return box_plane_k<KI>(mn, mx, n, offset);
+}
+bool plane_segment_epick(const double n[3], double offset, const double p[3], const double q[3]) {
+    return plane_segment_k<KI>(n, offset, p, q);
+}
 bool plane_triangle_epick(const double n[3], double offset, const double a[3], const double b[3], const double c[3]) {
     return plane_triangle_k<KI>(n, offset, a, b, c);
 }
@@ -170,9 +173,7 @@ bool box_contains_box(const double amn[3], const double amx[3], const double bmn
     const K::Iso_cuboid_3 a(P(amn), P(amx));
     return !a.has_on_unbounded_side(P(bmn)) && !a.has_on_unbounded_side(P(bmx));
 }
-bool point_in_ball(const double p[3], const double c[3], double r) {
-    return CGAL::squared_distance(P(p), P(c)) <= FT(r) * FT(r);
-}
+bool point_in_ball(const double p[3], const double c[3], double r) { return CGAL::squared_distance(P(p), P(c)) <= FT(r) * FT(r); }
 bool ball_ball(const double c1[3], double r1, const double c2[3], double r2) {
     const FT s = FT(r1) + FT(r2);
     return CGAL::squared_distance(P(c1), P(c2)) <= s * s;
@@ -199,14 +200,12 @@ bool first_contact_rounded(const Result& res, const K::Point_3& from, const K::V
     return nearest(exact(t0 < t1 ? t0 : t1), t);
 }
 } // namespace
-bool is_rounded_ray_triangle_t(const double o[3], const double d[3], const double a[3], const double b[3],
-                               const double c[3], double t) {
+bool is_rounded_ray_triangle_t(const double o[3], const double d[3], const double a[3], const double b[3], const double c[3], double t) {
     return first_contact_rounded(CGAL::intersection(K::Ray_3(P(o), V(d)), K::Triangle_3(P(a), P(b), P(c))), P(o), V(d), t);
 }
-bool is_rounded_segment_triangle_t(const double p[3], const double q[3], const double a[3], const double b[3],
-                                   const double c[3], double t) {
-    return first_contact_rounded(CGAL::intersection(K::Segment_3(P(p), P(q)), K::Triangle_3(P(a), P(b), P(c))), P(p),
-                                 P(q) - P(p), t);
+bool is_rounded_segment_triangle_t(const double p[3], const double q[3], const double a[3], const double b[3], const double c[3],
+                                   double t) {
+    return first_contact_rounded(CGAL::intersection(K::Segment_3(P(p), P(q)), K::Triangle_3(P(a), P(b), P(c))), P(p), P(q) - P(p), t);
 }
 namespace {
 FT point_box_sqdist(const double p[3], const double mn[3], const double mx[3], bool farthest) {
@@ -238,8 +237,7 @@ bool is_rounded_point_box_sqdist(const double p[3], const double mn[3], const do
     }
     return nearest(exact(s), x);
 }
-bool is_rounded_ray_box_t(const double o[3], const double d[3], const double mn[3], const double mx[3], double t_enter,
-                          double t_exit) {
+bool is_rounded_ray_box_t(const double o[3], const double d[3], const double mn[3], const double mx[3], double t_enter, double t_exit) {
     // Exact slab parameters in rationals, independently of the library.
     Q t0 = 0;
     bool bounded = false;
@@ -269,8 +267,8 @@ bool is_rounded_ray_ball_t(const double o[3], const double d[3], const double c[
     }
     if (cc <= 0) return x == 0.0;
     auto f = [&](const Q& t) { return Q(a * t * t + 2 * b * t + cc); }; // a value, not a gmpxx expression
-    auto le = [&](const Q& y) { return a * y + b >= 0 || f(y) <= 0; }; // t1 <= y
-    auto lt = [&](const Q& y) { return a * y + b > 0 || f(y) < 0; };   // t1 < y
+    auto le = [&](const Q& y) { return a * y + b >= 0 || f(y) <= 0; };  // t1 <= y
+    auto lt = [&](const Q& y) { return a * y + b > 0 || f(y) < 0; };    // t1 < y
     // Around the top of the range the midpoint above DBL_MAX is DBL_MAX + 2^970; beyond it t1
     // rounds to infinity.
     const Q top = Q(0x1.fffffffffffffp1023) + Q(0x1p970);
@@ -342,8 +340,7 @@ bool all_in_box(const double* xyz, unsigned long n, const double c[3], const dou
     }
     return true;
 }
-bool box_in_box(const double c[3], const double axes[9], const double h[3], const double ic[3], const double iaxes[9],
-                const double ih[3]) {
+bool box_in_box(const double c[3], const double axes[9], const double h[3], const double ic[3], const double iaxes[9], const double ih[3]) {
     const q_box out(c, axes, h), in(ic, iaxes, ih);
     if (out.D == 0) return false;
     for (int m = 0; m < 8; ++m) {
@@ -385,9 +382,7 @@ bool box_in_ball(const double c[3], const double axes[9], const double h[3], con
 namespace {
 using q3 = std::array<Q, 3>;
 q3 sub(const q3& a, const q3& b) { return {Q(a[0] - b[0]), Q(a[1] - b[1]), Q(a[2] - b[2])}; }
-q3 crossq(const q3& a, const q3& b) {
-    return {Q(a[1] * b[2] - a[2] * b[1]), Q(a[2] * b[0] - a[0] * b[2]), Q(a[0] * b[1] - a[1] * b[0])};
-}
+q3 crossq(const q3& a, const q3& b) { return {Q(a[1] * b[2] - a[2] * b[1]), Q(a[2] * b[0] - a[0] * b[2]), Q(a[0] * b[1] - a[1] * b[0])}; }
 Q dotq(const q3& a, const q3& b) { return Q(a[0] * b[0] + a[1] * b[1] + a[2] * b[2]); }
 bool zero(const q3& a) { return a[0] == 0 && a[1] == 0 && a[2] == 0; }
 // p in the closed triangle (a, b, c), any of them possibly equal or collinear.

@@ -69,7 +69,7 @@ struct convex_set {
     std::array<double, 3> normal{};
     double offset = 0;
     std::vector<slab> slabs; // further constraints on the point; with no points, generators or plane: the slabs alone (a k-DOP)
-    struct halfspace { // n . x <= offset
+    struct halfspace {       // n . x <= offset
         std::array<double, 3> n;
         double offset;
     };
@@ -131,7 +131,8 @@ bool mesh_mesh_intersect(const mesh_data& a, const mesh_data& b);
 // Is every point of the segment a b in the mesh's point set (exact breakpoints and midpoints)?
 bool mesh_contains_segment(const mesh_data& m, const std::array<double, 3>& a, const std::array<double, 3>& b);
 // Is every point of the triangle a b c in it (the traces' vertices, chords between their directions)?
-bool mesh_contains_triangle(const mesh_data& m, const std::array<double, 3>& a, const std::array<double, 3>& b, const std::array<double, 3>& c);
+bool mesh_contains_triangle(const mesh_data& m, const std::array<double, 3>& a, const std::array<double, 3>& b,
+                            const std::array<double, 3>& c);
 // Is every point of the box lo..hi (lo <= hi) in it (the odd coverage of each plane's cells inside
 // the box, then one point's parity; cgal_mesh_box.cpp)? std::runtime_error when no clean parity
 // segment or no point off the surface is found.
@@ -183,15 +184,12 @@ bool polygon3_contains_segment(const polygon3_data& g, const std::array<double, 
 bool polygon3_contains_triangle(const polygon3_data& g, const std::array<double, 9>& t);
 
 // Is `x` the correctly rounded (nearest, ties to even) value of the exact quantity?
-bool is_rounded_ray_triangle_t(const double o[3], const double d[3], const double a[3], const double b[3],
-                               const double c[3], double t);
+bool is_rounded_ray_triangle_t(const double o[3], const double d[3], const double a[3], const double b[3], const double c[3], double t);
 // Same for a segment p -> q: t = (x - p).(q - p) / |q - p|^2 of the first contact.
-bool is_rounded_segment_triangle_t(const double p[3], const double q[3], const double a[3], const double b[3],
-                                   const double c[3], double t);
+bool is_rounded_segment_triangle_t(const double p[3], const double q[3], const double a[3], const double b[3], const double c[3], double t);
 bool interval_contains_point_box_sqdist(const double p[3], const double mn[3], const double mx[3], bool farthest, double lo, double hi);
 bool is_rounded_point_box_sqdist(const double p[3], const double mn[3], const double mx[3], bool farthest, double x);
-bool is_rounded_ray_box_t(const double o[3], const double d[3], const double mn[3], const double mx[3], double t_enter,
-                          double t_exit);
+bool is_rounded_ray_box_t(const double o[3], const double d[3], const double mn[3], const double mx[3], double t_enter, double t_exit);
 // For the ray-ball first hit t1 (irrational): x is nearest to t1, checked by exact sign tests
 // of the quadratic at the midpoints around x (an algebraic check independent of the library).
 bool is_rounded_ray_ball_t(const double o[3], const double d[3], const double c[3], double r, double x);
@@ -206,8 +204,7 @@ bool all_in_box(const double* xyz, unsigned long n, const double c[3], const dou
 bool box_in_constraints(const double c[3], const double axes[9], const double h[3], const convex_set& s);
 // Is the closed box (ic, iaxes, ih) inside the closed box (c, axes, h)? Its eight corners in exact
 // rationals, each in the outer box's frame by Cramer's rule (false when the outer axes are dependent).
-bool box_in_box(const double c[3], const double axes[9], const double h[3], const double ic[3], const double iaxes[9],
-                const double ih[3]);
+bool box_in_box(const double c[3], const double axes[9], const double h[3], const double ic[3], const double iaxes[9], const double ih[3]);
 // Is the closed ball (center, r >= 0) inside the box (independent axes)? The centre's frame
 // coordinates in exact rationals and its distance to each face, squared.
 bool ball_in_box(const double c[3], const double axes[9], const double h[3], const double center[3], double r);
@@ -245,8 +242,8 @@ qhull_result qhull_hull(const double* xyz, unsigned long n);
 // CGAL oriented_bounding_box (Epick, Eigen): the box's volume, and the time it took.
 double obb_volume_cgal(const double* xyz, unsigned long n, double& ms);
 double hull_time_ms(const double* xyz, unsigned long n, unsigned long& vertices);
-void halfspaces_volume_area(const double* dirs, const double* lo, const double* hi, unsigned long m, const double inside[3],
-                            double& volume, double& area);
+void halfspaces_volume_area(const double* dirs, const double* lo, const double* hi, unsigned long m, const double inside[3], double& volume,
+                            double& area);
 
 // Epick (filtered, inexact constructions) versions for the benchmarks.
 bool ray_triangle_epick(const double o[3], const double d[3], const double a[3], const double b[3], const double c[3]);
@@ -271,7 +268,7 @@ struct linear_object {
 };
 enum class quantity : int { t_enter, t_exit, x, y, z, u, v, w, nx, ny, nz };
 class exact_hit {
-  public:
+public:
     exact_hit();
     ~exact_hit();
     exact_hit(exact_hit&&) noexcept;
@@ -286,7 +283,7 @@ class exact_hit {
     const char* declined = nullptr;
     struct impl;
 
-  private:
+private:
     [[nodiscard]] bool rounds_to_value(int i, double x) const;
     std::unique_ptr<impl> p;
     friend exact_hit exact_plane(const linear_object&, const double[3], double);
@@ -299,7 +296,7 @@ class exact_hit {
     friend exact_hit exact_polygon(const linear_object&, const polygon3_data&);
     friend exact_hit exact_mesh(const linear_object&, const mesh_data&);
 };
-exact_hit exact_plane(const linear_object& x, const double n[3], double c); // n . p = c
+exact_hit exact_plane(const linear_object& x, const double n[3], double c);                           // n . p = c
 exact_hit exact_halfspaces(const linear_object& x, const std::vector<std::array<double, 4>>& planes); // n . p <= c each
 exact_hit exact_box(const linear_object& x, const double mn[3], const double mx[3]);
 exact_hit exact_kdop(const linear_object& x, const std::vector<std::array<double, 3>>& dirs, const double* mn, const double* mx);

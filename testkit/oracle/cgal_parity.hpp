@@ -35,7 +35,8 @@ bool crossing_parity(const mesh_data& m, const typename Kern::Point_3& P0, const
             q[k] = p[k] + 3 * w * u(g);
         }
         const unsigned far = static_cast<unsigned>(attempt % 3);
-        q[far] = u(g) < 0 ? lo[far] - 2 * (hi[far] - lo[far]) - std::fabs(lo[far]) - 1 : hi[far] + 2 * (hi[far] - lo[far]) + std::fabs(hi[far]) + 1;
+        q[far] = u(g) < 0 ? lo[far] - 2 * (hi[far] - lo[far]) - std::fabs(lo[far]) - 1
+                          : hi[far] + 2 * (hi[far] - lo[far]) + std::fabs(hi[far]) + 1;
         if (!std::isfinite(q[0]) || !std::isfinite(q[1]) || !std::isfinite(q[2])) continue;
         if (q[far] >= lo[far] && q[far] <= hi[far]) continue; // rounding kept it inside the box
         const P Q(q[0], q[1], q[2]);
@@ -45,13 +46,19 @@ bool crossing_parity(const mesh_data& m, const typename Kern::Point_3& P0, const
                 c(m.v[t[2]][0], m.v[t[2]][1], m.v[t[2]][2]);
             if (CGAL::collinear(a, b, c)) continue; // no interior to cross
             const auto o1 = CGAL::orientation(a, b, c, P0), o2 = CGAL::orientation(a, b, c, Q);
-            if (o1 == CGAL::COPLANAR && o2 == CGAL::COPLANAR) { clean = false; break; }
+            if (o1 == CGAL::COPLANAR && o2 == CGAL::COPLANAR) {
+                clean = false;
+                break;
+            }
             if (o1 == CGAL::COPLANAR || o2 == CGAL::COPLANAR || o1 == o2) continue; // meets the plane at p or q, or not at all
             const auto s1 = CGAL::orientation(P0, Q, a, b), s2 = CGAL::orientation(P0, Q, b, c), s3 = CGAL::orientation(P0, Q, c, a);
             const bool pos = s1 == CGAL::POSITIVE || s2 == CGAL::POSITIVE || s3 == CGAL::POSITIVE;
             const bool neg = s1 == CGAL::NEGATIVE || s2 == CGAL::NEGATIVE || s3 == CGAL::NEGATIVE;
             if (pos && neg) continue;
-            if (s1 == CGAL::ZERO || s2 == CGAL::ZERO || s3 == CGAL::ZERO) { clean = false; break; }
+            if (s1 == CGAL::ZERO || s2 == CGAL::ZERO || s3 == CGAL::ZERO) {
+                clean = false;
+                break;
+            }
             odd = !odd;
         }
         if (clean) return odd;

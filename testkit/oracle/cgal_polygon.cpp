@@ -154,7 +154,6 @@ std::vector<std::array<double, 9>> polygon3_triangles(const polygon3_data& g) {
     return out;
 }
 
-
 // Containment of a segment (exact breakpoints, exact midpoints) and of a triangle (exact areas).
 namespace {
 // t = (P - A) . D / D . D for the points where the segment A B meets each of `edges`, sorted,

@@ -195,7 +195,8 @@ bool is_point(const object& s) { return s.d == CGAL::NULL_VECTOR; }
 // The object against the closed triangle a b c (degenerate ones included).
 std::optional<span> triangle_span(const object& s, const P3& a, const P3& b, const P3& c) {
     if (is_point(s)) {
-        const bool in = CGAL::collinear(a, b, c) ? (K::Segment_3(a, b).has_on(s.o) || K::Segment_3(b, c).has_on(s.o) || K::Segment_3(c, a).has_on(s.o) || s.o == a)
+        const bool in = CGAL::collinear(a, b, c) ? (K::Segment_3(a, b).has_on(s.o) || K::Segment_3(b, c).has_on(s.o) ||
+                                                    K::Segment_3(c, a).has_on(s.o) || s.o == a)
                                                  : K::Triangle_3(a, b, c).has_on(s.o);
         return in ? domain(s) : std::nullopt;
     }
@@ -370,10 +371,8 @@ exact_hit exact_tetrahedron(const linear_object& x, const double v[12]) {
     std::optional<span> r;
     if (CGAL::coplanar(a, b, c, d)) // flat: the union of its faces
         r = hull(hull(triangle_span(s, a, b, c), triangle_span(s, a, b, d)), hull(triangle_span(s, a, c, d), triangle_span(s, b, c, d)));
-    else if (is_point(s))
-        r = K::Tetrahedron_3(a, b, c, d).has_on_unbounded_side(s.o) ? std::nullopt : domain(s);
-    else
-        r = meet(s, K::Tetrahedron_3(a, b, c, d));
+    else if (is_point(s)) r = K::Tetrahedron_3(a, b, c, d).has_on_unbounded_side(s.o) ? std::nullopt : domain(s);
+    else r = meet(s, K::Tetrahedron_3(a, b, c, d));
     fill_span(*h.p, s, r);
     return h;
 }
@@ -481,7 +480,8 @@ exact_hit exact_mesh(const linear_object& x, const mesh_data& m) {
             const auto& a = m.v[m.t[i][0]];
             const auto& b = m.v[m.t[i][1]];
             const auto& c = m.v[m.t[i][2]];
-            if (triangle_span(s, P3(a[0], a[1], a[2]), P3(b[0], b[1], b[2]), P3(c[0], c[1], c[2]))) on = true, h.p->first_triangles.push_back(i);
+            if (triangle_span(s, P3(a[0], a[1], a[2]), P3(b[0], b[1], b[2]), P3(c[0], c[1], c[2])))
+                on = true, h.p->first_triangles.push_back(i);
         }
         if (on) {
             first_contact(*h.p, s, domain(s));

@@ -35,7 +35,9 @@ double random_double(support::rng& r) {
 }
 // The sign of det[p0 - p3; p1 - p3; p2 - p3] in rationals.
 sign exact_orientation(const point3 (&p)[4]) {
-    auto diff = [&](int k, int axis) { return Q(axis == 0 ? p[k].x : (axis == 1 ? p[k].y : p[k].z)) - Q(axis == 0 ? p[3].x : (axis == 1 ? p[3].y : p[3].z)); };
+    auto diff = [&](int k, int axis) {
+        return Q(axis == 0 ? p[k].x : (axis == 1 ? p[k].y : p[k].z)) - Q(axis == 0 ? p[3].x : (axis == 1 ? p[3].y : p[3].z));
+    };
     rational m[3][3];
     for (int k = 0; k < 3; ++k)
         for (int j = 0; j < 3; ++j) m[k][j] = diff(k, j);
@@ -112,7 +114,10 @@ TEST_CASE("arith: the filter never claims a wrong sign", "[arith]") {
         const rational v = (Q(x[0]) - Q(x[1])) * (Q(x[2]) - Q(x[3])) - Q(x[0]) * Q(x[2]);
         const int t = v > 0 ? 1 : (v < 0 ? -1 : 0);
         ++n;
-        if (fs != 0) { ++proven; if (fs != t) ++wrong; }
+        if (fs != 0) {
+            ++proven;
+            if (fs != t) ++wrong;
+        }
         bool valid = true;
         if (static_cast<int>(arith::exact_sign(f, valid)) != t) ++wrong;
     }
@@ -304,8 +309,9 @@ TEST_CASE("arith: the scaled filter decides scenes far from scale 1, never wrong
 TEST_CASE("arith: correctly_round finds the nearest double of sqrt(2) and of 1/3", "[arith]") {
     using arith::dyadic;
     const auto two = arith::to_dyadic(2.0);
-    const double s2 = arith::correctly_round([&](const dyadic& y) { return arith::sign_of(y) >= 0 && arith::sign_of(y * y - two) >= 0; },
-                                             [&](const dyadic& y) { return arith::sign_of(y) > 0 && arith::sign_of(y * y - two) > 0; }, 1.0);
+    const double s2 =
+        arith::correctly_round([&](const dyadic& y) { return arith::sign_of(y) >= 0 && arith::sign_of(y * y - two) >= 0; },
+                               [&](const dyadic& y) { return arith::sign_of(y) > 0 && arith::sign_of(y * y - two) > 0; }, 1.0);
     CHECK(s2 == std::sqrt(2.0));
     CHECK(arith::quotient(arith::to_dyadic(1.0), arith::to_dyadic(3.0)) == 1.0 / 3.0);
 }
@@ -322,7 +328,10 @@ TEST_CASE("arith: the double-double filter never claims a wrong sign, near cance
         const rational v = Q(x[0]) * Q(x[2]) - Q(x[1]) * Q(x[3]) + (Q(x[0]) - Q(x[1])) * (Q(x[2]) - Q(x[3]));
         const int t = v > 0 ? 1 : (v < 0 ? -1 : 0);
         ++n;
-        if (fs != 0) { ++proven; if (fs != t) ++wrong; }
+        if (fs != 0) {
+            ++proven;
+            if (fs != t) ++wrong;
+        }
     }
     std::printf("[cases] double-double filter: %ld near-cancelling, proven %ld, wrong %ld\n", n, proven, wrong);
     CHECK(wrong == 0);

@@ -20,7 +20,8 @@ TEST_CASE("aabb_of: every generated and real set", "[bound][aabb_of]") {
         REQUIRE(b);
         bool touches[6] = {};
         for (const point3& p : s.points) {
-            CHECK((p.x >= b.value().min.x && p.x <= b.value().max.x && p.y >= b.value().min.y && p.y <= b.value().max.y && p.z >= b.value().min.z && p.z <= b.value().max.z));
+            CHECK((p.x >= b.value().min.x && p.x <= b.value().max.x && p.y >= b.value().min.y && p.y <= b.value().max.y &&
+                   p.z >= b.value().min.z && p.z <= b.value().max.z));
             touches[0] |= p.x == b.value().min.x, touches[1] |= p.x == b.value().max.x, touches[2] |= p.y == b.value().min.y;
             touches[3] |= p.y == b.value().max.y, touches[4] |= p.z == b.value().min.z, touches[5] |= p.z == b.value().max.z;
             ++checked;
@@ -61,7 +62,8 @@ TEST_CASE("every construction: a million copies of one point", "[bound]") {
     const auto o = bound::obb_min_volume(s).value();
     CHECK(bound::contains(o, same[0]));
     CHECK(bound::volume(o) < 1e-30);
-    std::printf("[cases] 1e6 copies of one point: every construction gives the point (or a box of volume %g around it)\n", bound::volume(o));
+    std::printf("[cases] 1e6 copies of one point: every construction gives the point (or a box of volume %g around it)\n",
+                bound::volume(o));
 }
 
 } // namespace test_bound_aabb_of

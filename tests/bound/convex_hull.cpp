@@ -35,7 +35,8 @@ void check(const std::string& name, std::span<const point3> pts, bool all_points
     if (hv.dimension == 3 || hv.dimension == 2) {
         if (flat != oracle::hull_vertices_exact(xyz.data(), pts.size())) {
             ++wrong_vertices;
-            std::printf("  vertex set differs from CGAL: %s (dimension %d, %zu vertices)\n", name.c_str(), hv.dimension, hv.vertices.size());
+            std::printf("  vertex set differs from CGAL: %s (dimension %d, %zu vertices)\n", name.c_str(), hv.dimension,
+                        hv.vertices.size());
         }
     }
     if (hv.dimension == 3) {
@@ -66,10 +67,13 @@ TEST_CASE("convex_hull: generated, degenerate and real point sets against CGAL",
         const int kind = r.integer(0, 3);
         for (auto& p : pts) {
             if (kind == 0) p = {r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)};
-            else if (kind == 1) p = {double(r.integer(-2, 2)), double(r.integer(-2, 2)), double(r.integer(-2, 2))}; // grid: coplanar faces, collinear edges
-            else if (kind == 2) p = {support::nudge(1.0, r.integer(-2, 2)), support::nudge(2.0, r.integer(-2, 2)), support::nudge(3.0, r.integer(-2, 2))};
+            else if (kind == 1)
+                p = {double(r.integer(-2, 2)), double(r.integer(-2, 2)), double(r.integer(-2, 2))}; // grid: coplanar faces, collinear edges
+            else if (kind == 2)
+                p = {support::nudge(1.0, r.integer(-2, 2)), support::nudge(2.0, r.integer(-2, 2)), support::nudge(3.0, r.integer(-2, 2))};
             else {
-                static constexpr int q[][3] = {{3, 4, 12}, {4, 3, 12}, {12, 3, 4}, {12, 4, 3}, {0, 5, 12}, {13, 0, 0}, {0, 13, 0}, {0, 0, 13}};
+                static constexpr int q[][3] = {{3, 4, 12}, {4, 3, 12}, {12, 3, 4}, {12, 4, 3},
+                                               {0, 5, 12}, {13, 0, 0}, {0, 13, 0}, {0, 0, 13}};
                 const auto& e = q[r.integer(0, 7)];
                 p = {(r.coin() ? 1 : -1) * double(e[0]), (r.coin() ? 1 : -1) * double(e[1]), (r.coin() ? 1 : -1) * double(e[2])};
             }
@@ -80,7 +84,8 @@ TEST_CASE("convex_hull: generated, degenerate and real point sets against CGAL",
     if (support::meshes_required()) REQUIRE(meshes.size() == 5);
     for (const auto& m : meshes) check(m.name, m.points, false);
     std::printf("[cases] convex_hull vs CGAL: %ld sets (%zu real meshes), %ld vertex sets differ, %ld bad meshes, %ld with a "
-                "point outside a face\n", sets, meshes.size(), wrong_vertices, bad_mesh, outside);
+                "point outside a face\n",
+                sets, meshes.size(), wrong_vertices, bad_mesh, outside);
     CHECK(wrong_vertices == 0);
     CHECK(bad_mesh == 0);
     CHECK(outside == 0);

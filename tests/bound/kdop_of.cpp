@@ -27,7 +27,8 @@ void check_all(const std::vector<support::point_set>& sets, long& points, long& 
             arith::dyadic lo, hi;
             bool first = true;
             for (const point3& p : s.points) {
-                const arith::dyadic x = arith::to_dyadic(dirs[i].x * p.x) + arith::to_dyadic(dirs[i].y * p.y) + arith::to_dyadic(dirs[i].z * p.z);
+                const arith::dyadic x =
+                    arith::to_dyadic(dirs[i].x * p.x) + arith::to_dyadic(dirs[i].y * p.y) + arith::to_dyadic(dirs[i].z * p.z);
                 if (first || arith::sign_of(x - lo) < 0) lo = x;
                 if (first || arith::sign_of(x - hi) > 0) hi = x;
                 first = false;

@@ -34,7 +34,8 @@ vec3 rotate(const std::array<double, 4>& q, vec3 v) {
 } // namespace
 
 TEST_CASE("obb_edge_flush: every generated and real set", "[bound][obb_edge_flush]") {
-    support::check_obb_construction("obb_edge_flush", [](std::span<const point3> pts) { return bound::obb_edge_flush(pts); }, errc::too_large);
+    support::check_obb_construction(
+        "obb_edge_flush", [](std::span<const point3> pts) { return bound::obb_edge_flush(pts); }, errc::too_large);
 }
 
 TEST_CASE("obb_edge_flush: a rotated box with points inside is recovered", "[bound][obb_edge_flush]") {
@@ -47,8 +48,7 @@ TEST_CASE("obb_edge_flush: a rotated box with points inside is recovered", "[bou
         std::vector<point3> pts;
         for (int s = 0; s < 8; ++s) // the corners and interior points
             pts.push_back(point3{1, 2, 3} + rotate(q, vec3{(s & 1 ? a : -a), (s & 2 ? b : -b), (s & 4 ? h : -h)}));
-        for (int k = 0; k < 30; ++k)
-            pts.push_back(point3{1, 2, 3} + rotate(q, vec3{r.uniform(-a, a), r.uniform(-b, b), r.uniform(-h, h)}));
+        for (int k = 0; k < 30; ++k) pts.push_back(point3{1, 2, 3} + rotate(q, vec3{r.uniform(-a, a), r.uniform(-b, b), r.uniform(-h, h)}));
         const auto box = bound::obb_edge_flush(pts);
         REQUIRE(box);
         const double want = 8 * a * b * h;
@@ -94,7 +94,8 @@ TEST_CASE("obb_edge_flush: no larger than obb_min_volume or CGAL's box", "[bound
             std::printf("[cases] obb_edge_flush %s: volume / obb_min_volume %.6f, / CGAL %.6f\n", name.c_str(), vf / vm, vf / vc);
     }
     std::printf("[cases] obb_edge_flush: %ld sets, larger than obb_min_volume on %ld, than CGAL on %ld; smallest ratio to "
-                "obb_min_volume %.4f\n", sets, above_minvol, above_cgal, best_gain);
+                "obb_min_volume %.4f\n",
+                sets, above_minvol, above_cgal, best_gain);
     CHECK(above_minvol == 0);
     CHECK(above_cgal == 0);
 }

@@ -56,8 +56,8 @@ TEST_CASE("sphere_welzl: against CGAL Min_sphere_d (exact rationals)", "[bound][
         }
         check_set("random set " + std::to_string(i), pts, true, i % 10 == 0);
     }
-    std::printf("[cases] sphere_welzl vs CGAL: %ld sets, %ld squared radii not the rounded minimum, %ld with a point outside\n",
-                checked, wrong_radius, outside);
+    std::printf("[cases] sphere_welzl vs CGAL: %ld sets, %ld squared radii not the rounded minimum, %ld with a point outside\n", checked,
+                wrong_radius, outside);
     CHECK(wrong_radius == 0);
     CHECK(outside == 0);
 }

@@ -45,14 +45,18 @@ point3 rp(support::rng& r) { return {r.uniform(-1, 1), r.uniform(-1, 1), r.unifo
 vec3 rv(support::rng& r) { return {r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)}; }
 point3 near(support::rng& r, point3 c, double d) { return {c.x + r.uniform(-d, d), c.y + r.uniform(-d, d), c.z + r.uniform(-d, d)}; }
 // Shapes of size about 0.5 around centres in [-1, 1]^3, so about half of the pairs meet.
-triangle3 rtri(support::rng& r) { const point3 c = rp(r); return {near(r, c, 0.6), near(r, c, 0.6), near(r, c, 0.6)}; }
+triangle3 rtri(support::rng& r) {
+    const point3 c = rp(r);
+    return {near(r, c, 0.6), near(r, c, 0.6), near(r, c, 0.6)};
+}
 obb3 robb(support::rng& r) {
     const vec3 a = rv(r), b = rv(r); // a frame read exactly as given (not orthonormal)
     return {rp(r), {a, b, cross(a, b)}, {r.uniform(0.1, 0.5), r.uniform(0.1, 0.5), r.uniform(0.1, 0.5)}};
 }
 aabb3 rbox(support::rng& r) {
     const point3 c = rp(r);
-    return {{c.x - r.uniform(0, 0.5), c.y - r.uniform(0, 0.5), c.z - r.uniform(0, 0.5)}, {c.x + r.uniform(0, 0.5), c.y + r.uniform(0, 0.5), c.z + r.uniform(0, 0.5)}};
+    return {{c.x - r.uniform(0, 0.5), c.y - r.uniform(0, 0.5), c.z - r.uniform(0, 0.5)},
+            {c.x + r.uniform(0, 0.5), c.y + r.uniform(0, 0.5), c.z + r.uniform(0, 0.5)}};
 }
 convex_polyhedron3 rpoly(support::rng& r) { // the supporting half-spaces of 6 random normals around a point
     convex_polyhedron3 c{};

@@ -69,10 +69,10 @@ TEST_CASE("segment_pieces: breakpoints kept strictly inside (0, 1), D made posit
     arith::exact_kernel k;
     std::vector<ratio> kept;
     CHECK(pieces::keep(k, fraction, ratio{1, 2}, kept));
-    CHECK(pieces::keep(k, fraction, ratio{-1, -3}, kept)); // 1/3, D negative: flipped
-    CHECK(pieces::keep(k, fraction, ratio{0, 5}, kept));   // t = 0: not kept
-    CHECK(pieces::keep(k, fraction, ratio{-2, -2}, kept)); // t = 1: not kept
-    CHECK(pieces::keep(k, fraction, ratio{3, 2}, kept));   // beyond 1
+    CHECK(pieces::keep(k, fraction, ratio{-1, -3}, kept));     // 1/3, D negative: flipped
+    CHECK(pieces::keep(k, fraction, ratio{0, 5}, kept));       // t = 0: not kept
+    CHECK(pieces::keep(k, fraction, ratio{-2, -2}, kept));     // t = 1: not kept
+    CHECK(pieces::keep(k, fraction, ratio{3, 2}, kept));       // beyond 1
     CHECK_FALSE(pieces::keep(k, fraction, ratio{1, 0}, kept)); // D = 0: no parameter
     REQUIRE(kept.size() == 2);
     CHECK_FALSE(kept[0].flip);

@@ -75,8 +75,11 @@ TEST_CASE("separating_axes: the bounds from the inputs' maxima decide only what 
     while (!found && tries < 100000) {
         ++tries;
         const auto [a, b] = support::obb_case<obb3, obb3>::near(q, false);
-        const certainty r0 = sat::box_box_pass(arith::lift_filter{}, a, b, [](const auto& v, sat::box_axis_kind) { return v.v > 0 ? 1 : v.v < 0 ? -1 : 0; });
-        const certainty rf = sat::box_box_pass(arith::lift_filter{}, a, b, [](const auto& v, sat::box_axis_kind) { return arith::proven_sign(v); });
+        const certainty r0 = sat::box_box_pass(arith::lift_filter{}, a, b, [](const auto& v, sat::box_axis_kind) {
+            return v.v > 0 ? 1 : v.v < 0 ? -1 : 0;
+        });
+        const certainty rf =
+            sat::box_box_pass(arith::lift_filter{}, a, b, [](const auto& v, sat::box_axis_kind) { return arith::proven_sign(v); });
         if (r0 == certainty::uncertain || rf != certainty::uncertain) continue;
         const bool truth = oracle::lp_intersect(support::lp(a), support::lp(b));
         if ((r0 == certainty::yes) == truth) continue;
@@ -93,12 +96,12 @@ TEST_CASE("separating_axes: configurations that need the extra axes", "[separati
     const std::array<vec3, 3> R{vec3{1, 1, 0}, vec3{-1, 1, 0}, vec3{0, 0, 1}};
     const std::array<vec3, 3> dependent{vec3{1, 0, 0}, vec3{1, 0, 0}, vec3{0, 1, 0}}; // a flat parallelepiped
     const obb3 cases[][2] = {
-        {obb3{{0, 0, 0}, I, {1, 1, 0}}, obb3{{3, 0, 0}, R, {0.75, 0.75, 0}}},  // coplanar rectangles, apart
-        {obb3{{0, 0, 0}, I, {1, 1, 0}}, obb3{{2.5, 0, 0}, R, {0.75, 0.75, 0}}}, // coplanar rectangles, touching
-        {obb3{{0, 0, 0}, I, {1, 0, 0}}, obb3{{3, 0, 0}, I, {1, 0, 0}}},        // collinear segments, apart
-        {obb3{{0, 0, 0}, I, {1, 0, 0}}, obb3{{2, 0, 0}, I, {1, 0, 0}}},        // collinear segments, touching
-        {obb3{{0, 0, 0}, I, {1, 0, 0}}, obb3{{0, 1, 0}, I, {1, 0, 0}}},        // parallel segments
-        {obb3{{0, 0, 0}, I, {0, 0, 0}}, obb3{{0, 0, 1e-300}, I, {0, 0, 0}}},   // two points
+        {obb3{{0, 0, 0}, I, {1, 1, 0}}, obb3{{3, 0, 0}, R, {0.75, 0.75, 0}}},        // coplanar rectangles, apart
+        {obb3{{0, 0, 0}, I, {1, 1, 0}}, obb3{{2.5, 0, 0}, R, {0.75, 0.75, 0}}},      // coplanar rectangles, touching
+        {obb3{{0, 0, 0}, I, {1, 0, 0}}, obb3{{3, 0, 0}, I, {1, 0, 0}}},              // collinear segments, apart
+        {obb3{{0, 0, 0}, I, {1, 0, 0}}, obb3{{2, 0, 0}, I, {1, 0, 0}}},              // collinear segments, touching
+        {obb3{{0, 0, 0}, I, {1, 0, 0}}, obb3{{0, 1, 0}, I, {1, 0, 0}}},              // parallel segments
+        {obb3{{0, 0, 0}, I, {0, 0, 0}}, obb3{{0, 0, 1e-300}, I, {0, 0, 0}}},         // two points
         {obb3{{0, 0, 0}, dependent, {1, 1, 1}}, obb3{{0, 0, 0.5}, I, {1, 1, 0.25}}}, // dependent axes
         {obb3{{0, 0, 0}, dependent, {1, 1, 1}}, obb3{{0, 3, 0}, I, {1, 1, 1}}},
     };

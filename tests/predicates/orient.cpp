@@ -27,9 +27,7 @@ struct pred_tally {
     }
 };
 
-point3 gen_point(support::transform& tr, const double* base) {
-    return {tr.apply(base[0], 0), tr.apply(base[1], 1), tr.apply(base[2], 2)};
-}
+point3 gen_point(support::transform& tr, const double* base) { return {tr.apply(base[0], 0), tr.apply(base[1], 1), tr.apply(base[2], 2)}; }
 } // namespace
 
 TEST_CASE("predicates: fixtures with Shewchuk's sign conventions", "[predicates]") {
@@ -82,18 +80,24 @@ TEST_CASE("predicates: oracle, random and near-degenerate", "[predicates][oracle
             for (double* p : pts) {
                 const auto q = support::pythagorean(r);
                 if (q.w != 9) continue; // same radius: quadruples with w = 9 only
-                p[0] = ctr[0] + k * q.x; p[1] = ctr[1] + k * q.y; p[2] = ctr[2] + k * q.z;
+                p[0] = ctr[0] + k * q.x;
+                p[1] = ctr[1] + k * q.y;
+                p[2] = ctr[2] + k * q.z;
             }
         }
-        const point3 a = gen_point(tr, A), b = gen_point(tr, B), c = gen_point(tr, C), d = gen_point(tr, D),
-                     e = gen_point(tr, E);
+        const point3 a = gen_point(tr, A), b = gen_point(tr, B), c = gen_point(tr, C), d = gen_point(tr, D), e = gen_point(tr, E);
         double pa[3], pb[3], pc[3], pd[3], pe[3];
-        arr(a, pa); arr(b, pb); arr(c, pc); arr(d, pd); arr(e, pe);
+        arr(a, pa);
+        arr(b, pb);
+        arr(c, pc);
+        arr(d, pd);
+        arr(e, pe);
         {
             ++o3.n;
             const int t = oracle::orient3d(pa, pb, pc, pd);
             if (s(orient3d(a, b, c, d)) != t && ++o3.wrong <= 5)
-                std::printf("  orient3d: %s %s %s %s\n", support::str(a).c_str(), support::str(b).c_str(), support::str(c).c_str(), support::str(d).c_str());
+                std::printf("  orient3d: %s %s %s %s\n", support::str(a).c_str(), support::str(b).c_str(), support::str(c).c_str(),
+                            support::str(d).c_str());
             if (s(orient3d<approximate>(a, b, c, d)) != t) ++o3.approx_wrong;
         }
         {
@@ -114,7 +118,10 @@ TEST_CASE("predicates: oracle, random and near-degenerate", "[predicates][oracle
             if (s(insphere<approximate>(a, b, c, d, e)) != t) ++is.approx_wrong;
         }
     }
-    o2.report(); o3.report(); ic.report(); is.report();
+    o2.report();
+    o3.report();
+    ic.report();
+    is.report();
 }
 
 TEST_CASE("predicates: subnormal and near-underflow orient3d (the classic filter's blind spot)", "[predicates][oracle]") {
@@ -123,7 +130,8 @@ TEST_CASE("predicates: subnormal and near-underflow orient3d (the classic filter
     for (long i = 0; i < support::cases(65536); ++i) {
         // tiny integer multiples of 2^-1074, nudged: many exactly coplanar
         double p[4][3];
-        for (auto& q : p) for (double& x : q) x = r.integer(-8, 8) * 0x1p-1074;
+        for (auto& q : p)
+            for (double& x : q) x = r.integer(-8, 8) * 0x1p-1074;
         for (int k = 0; k < 3; ++k) p[3][k] = p[0][k] + (p[1][k] - p[0][k]) + (p[2][k] - p[0][k]);
         if (r.coin()) p[3][r.integer(0, 2)] += 0x1p-1074 * r.integer(-1, 1);
         ++n;

@@ -25,8 +25,9 @@ namespace {
 constexpr double nan_ = std::numeric_limits<double>::quiet_NaN();
 constexpr double inf_ = std::numeric_limits<double>::infinity();
 double special(support::rng& r) {
-    static constexpr double values[] = {0.0, -0.0, 1.0, -1.0, 0x1p-1074, -0x1p-1074, 0x1p-1022, 0x1.fffffffffffffp1023,
-                                        -0x1.fffffffffffffp1023, nan_, inf_, -inf_, 0x1p-537, 0x1p511};
+    static constexpr double values[] = {
+        0.0,  -0.0, 1.0,   -1.0,     0x1p-1074, -0x1p-1074, 0x1p-1022, 0x1.fffffffffffffp1023, -0x1.fffffffffffffp1023,
+        nan_, inf_, -inf_, 0x1p-537, 0x1p511};
     const int k = r.integer(0, 16);
     if (k < 14) return values[k];
     return std::bit_cast<double>(r.bits()); // raw bits: any NaN payload, subnormal, huge
@@ -40,11 +41,27 @@ std::string described(vec3 v) { return described(point3{v.x, v.y, v.z}); }
 template <class S>
 std::string described(const S& s) {
     std::string out = typeid(S).name();
-    if constexpr (requires { s.origin; s.direction; }) out += " " + described(s.origin) + described(s.direction);
-    if constexpr (requires { s.a; s.b; }) out += " " + described(s.a) + described(s.b);
+    if constexpr (requires {
+                      s.origin;
+                      s.direction;
+                  })
+        out += " " + described(s.origin) + described(s.direction);
+    if constexpr (requires {
+                      s.a;
+                      s.b;
+                  })
+        out += " " + described(s.a) + described(s.b);
     if constexpr (requires { s.c; }) out += described(s.c);
-    if constexpr (requires { s.min; s.max; }) out += " " + described(s.min) + described(s.max);
-    if constexpr (requires { s.center; s.radius; }) out += " " + described(s.center) + " r " + std::to_string(s.radius);
+    if constexpr (requires {
+                      s.min;
+                      s.max;
+                  })
+        out += " " + described(s.min) + described(s.max);
+    if constexpr (requires {
+                      s.center;
+                      s.radius;
+                  })
+        out += " " + described(s.center) + " r " + std::to_string(s.radius);
     return out;
 }
 // On every input, whatever it is: aggressive => exact => conservative, and classify never
@@ -231,7 +248,8 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
             if (r.coin()) gv[static_cast<unsigned>(r.integer(0, 7))] = p();
             else
                 for (auto& x : gv) x = p();
-            const std::array<std::uint32_t, 2> gends{static_cast<std::uint32_t>(r.integer(0, 9)), static_cast<std::uint32_t>(r.integer(0, 9))};
+            const std::array<std::uint32_t, 2> gends{static_cast<std::uint32_t>(r.integer(0, 9)),
+                                                     static_cast<std::uint32_t>(r.integer(0, 9))};
             const polygon3 pg{gv, gends, {static_cast<std::uint32_t>(r.integer(0, 9)), 2, 1}, r.integer(-1, 3)};
             const polygon3 pg2{gv, {}, {0, 2, 1}, 2};
             every_tier(q, pg, yes);
@@ -348,10 +366,14 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
     CHECK_FALSE(intersects(convex_polyhedron3{cube.planes, -1}, point3{0.5, 0.5, 0.5}));
     CHECK_FALSE(intersects(cube, segment3{{0.5, 0.5, 0.5}, {nan_, 0, 0}})); // one end inside
     CHECK_FALSE(intersects(cube, ray3{{0.5, 0.5, 0.5}, {inf_, 0, 0}}));
-    auto with = [&](unsigned i, plane3 p) { auto c = cube; c.planes[i] = p; return c; };
+    auto with = [&](unsigned i, plane3 p) {
+        auto c = cube;
+        c.planes[i] = p;
+        return c;
+    };
     CHECK_FALSE(intersects(with(2, plane3{{0, nan_, 0}, 1}), point3{0.5, 0.5, 0.5}));
     CHECK_FALSE(intersects(with(2, plane3{{0, 1, 0}, inf_}), point3{0.5, 0.5, 0.5}));
-    CHECK(intersects(with(2, plane3{{0, 0, 0}, 0}), point3{0.5, 7, 0.5}));       // 0 <= 0: all of space
+    CHECK(intersects(with(2, plane3{{0, 0, 0}, 0}), point3{0.5, 7, 0.5}));          // 0 <= 0: all of space
     CHECK_FALSE(intersects(with(2, plane3{{0, 0, 0}, -1}), point3{0.5, 0.5, 0.5})); // 0 <= -1: nothing
     frustum3 fr{};
     for (unsigned i = 0; i < 6; ++i) fr.planes[i] = cube.planes[i];

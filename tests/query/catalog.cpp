@@ -63,8 +63,8 @@ void same(const std::set<std::string>& a, const std::set<std::string>& b, const 
 }
 
 // Every shape of the library (k-DOPs as the 14-DOP), for the bodies' converse check.
-using shapes = std::tuple<point3, segment3, ray3, line3, plane3, triangle3, tetrahedron3, aabb3, obb3, sphere3, kdop<14>, convex_polyhedron3,
-                          frustum3, mesh3, polygon3, point2, segment2, ray2, line2, polygon2>;
+using shapes = std::tuple<point3, segment3, ray3, line3, plane3, triangle3, tetrahedron3, aabb3, obb3, sphere3, kdop<14>,
+                          convex_polyhedron3, frustum3, mesh3, polygon3, point2, segment2, ray2, line2, polygon2>;
 template <class A, class B>
 concept intersects_body = requires(arith::filter_kernel& k, const A& a, const B& b) { detail::intersects(k, a, b); };
 template <class A, class B>
@@ -72,15 +72,19 @@ concept contains_body = requires(arith::filter_kernel& k, const A& a, const B& b
 template <class A, class B>
 concept intersection_body = requires(arith::filter_kernel& k, const A& a, const B& b) { detail::intersection(k, a, b); };
 template <class A, class B>
-concept distance_body = requires(arith::filter_kernel& k, const A& a, const B& b) { detail::squared_distance(k, a, b, detail::distance_kind::nearest); };
+concept distance_body =
+    requires(arith::filter_kernel& k, const A& a, const B& b) { detail::squared_distance(k, a, b, detail::distance_kind::nearest); };
 
 template <class A, class B, class List>
 constexpr bool listed(const List& list) {
     bool found = false;
-    std::apply([&](const auto&... f) { ((found = found || (std::is_same_v<A, typename std::decay_t<decltype(f)>::first_type> &&
-                                                          std::is_same_v<B, typename std::decay_t<decltype(f)>::second_type>)),
-                                        ...); },
-               list);
+    std::apply(
+        [&](const auto&... f) {
+            ((found = found || (std::is_same_v<A, typename std::decay_t<decltype(f)>::first_type> &&
+                                std::is_same_v<B, typename std::decay_t<decltype(f)>::second_type>)),
+             ...);
+        },
+        list);
     return found;
 }
 } // namespace
@@ -94,7 +98,8 @@ TEST_CASE("catalog: bodies, tables, exports, tests and fuzzers agree with the ca
         fuzzers.insert(f.fuzzer);
         const std::string table(f.table);
         const std::string stem = table.substr(table.find('/') + 1);
-        tests.insert(kind == "intersects" || kind == "contains" ? "intersects/" + std::string(f.name) : table.substr(0, table.find('/')) + "/" + stem);
+        tests.insert(kind == "intersects" || kind == "contains" ? "intersects/" + std::string(f.name)
+                                                                : table.substr(0, table.find('/')) + "/" + stem);
         INFO(f.name << " (" << kind << ")");
         CHECK(fs::exists(root / "modules/query" / (table + ".cppm")));
         CHECK(table.rfind(kind == "contains" ? "contains/" : (kind + "/"), 0) == 0);
@@ -127,19 +132,31 @@ TEST_CASE("catalog: bodies, tables, exports, tests and fuzzers agree with the ca
     auto converse = [&]<class A, class B>() {
         if constexpr (intersects_body<A, B>) {
             ++bodies;
-            if (!listed<A, B>(catalog::families) && !listed<A, B>(catalog::view_families)) { ++unlisted; FAIL_CHECK("an intersects body without a family" << " " << typeid(A).name() << " " << typeid(B).name()); }
+            if (!listed<A, B>(catalog::families) && !listed<A, B>(catalog::view_families)) {
+                ++unlisted;
+                FAIL_CHECK("an intersects body without a family" << " " << typeid(A).name() << " " << typeid(B).name());
+            }
         }
         if constexpr (contains_body<A, B>) {
             ++bodies;
-            if (!listed<A, B>(catalog::containments)) { ++unlisted; FAIL_CHECK("a contains body without a family" << " " << typeid(A).name() << " " << typeid(B).name()); }
+            if (!listed<A, B>(catalog::containments)) {
+                ++unlisted;
+                FAIL_CHECK("a contains body without a family" << " " << typeid(A).name() << " " << typeid(B).name());
+            }
         }
         if constexpr (intersection_body<A, B>) {
             ++bodies;
-            if (!listed<A, B>(catalog::value_families)) { ++unlisted; FAIL_CHECK("an intersection body without a family" << " " << typeid(A).name() << " " << typeid(B).name()); }
+            if (!listed<A, B>(catalog::value_families)) {
+                ++unlisted;
+                FAIL_CHECK("an intersection body without a family" << " " << typeid(A).name() << " " << typeid(B).name());
+            }
         }
         if constexpr (distance_body<A, B>) {
             ++bodies;
-            if (!listed<A, B>(catalog::distances)) { ++unlisted; FAIL_CHECK("a squared_distance body without a family" << " " << typeid(A).name() << " " << typeid(B).name()); }
+            if (!listed<A, B>(catalog::distances)) {
+                ++unlisted;
+                FAIL_CHECK("a squared_distance body without a family" << " " << typeid(A).name() << " " << typeid(B).name());
+            }
         }
     };
     [&]<class... S>(std::tuple<S...>*) {

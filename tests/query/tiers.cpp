@@ -43,7 +43,7 @@ TEST_CASE("tiers: values on a touching case are enclosed or absent, never made u
     const auto c = intersection<conservative>(beside, t);
     if (c) CHECK(c->exists == certainty::uncertain); // only a hit it could not exclude
     const auto c_edge = intersection<conservative>(ray3{{0.5, 0, 1}, {0, 0, -1}}, t);
-    REQUIRE(c_edge.has_value()); // exact says hit: conservative never misses it
+    REQUIRE(c_edge.has_value());              // exact says hit: conservative never misses it
     const ray3 edge{{0.5, 0, 1}, {0, 0, -1}}; // hits at t = 1 exactly
     const auto e = intersection<exact>(edge, t);
     REQUIRE(e.has_value());

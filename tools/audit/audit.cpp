@@ -91,8 +91,7 @@ void stability(audit::json& j, const options& o) {
     }
     j.end_array();
     j.key("settings").array();
-    for (const auto& s : audit::settings)
-        j.object().kv("offset", s.offset * audit::base_size).kv("scale_exp", s.scale_exp).end_object();
+    for (const auto& s : audit::settings) j.object().kv("offset", s.offset * audit::base_size).kv("scale_exp", s.scale_exp).end_object();
     j.end_array();
     j.key("families").array();
     stability_part<0>(j, o, total_violations);
@@ -178,8 +177,7 @@ constexpr const auto& family_of() {
     using F = std::tuple_element_t<I, std::decay_t<decltype(catalog::families)>>;
     if constexpr (std::is_same_v<typename F::first_type, A> && std::is_same_v<typename F::second_type, B>)
         return std::get<I>(catalog::families);
-    else
-        return family_of<A, B, I + 1>();
+    else return family_of<A, B, I + 1>();
 }
 
 void scene(audit::json& j, const options& o) {
@@ -205,7 +203,7 @@ void scene(audit::json& j, const options& o) {
     const auto& rt = family_of<ray3, triangle3>();
     const auto& tt = family_of<triangle3, triangle3>();
     std::vector<workload_result> results;
-    {   // camera rays against every triangle
+    { // camera rays against every triangle
         std::vector<ray3> rs;
         std::vector<triangle3> ts;
         const long n = long(o.rays) * o.rays * long(tris.size());
@@ -228,7 +226,7 @@ void scene(audit::json& j, const options& o) {
             edges[{std::min(a, b), std::max(a, b)}].push_back(f);
             around[a].push_back(f);
         }
-    {   // rays from the eye through every edge midpoint and every vertex, against the triangles there
+    { // rays from the eye through every edge midpoint and every vertex, against the triangles there
         std::vector<ray3> rs;
         std::vector<triangle3> ts;
         std::vector<std::size_t> groups;
@@ -238,8 +236,9 @@ void scene(audit::json& j, const options& o) {
             groups.push_back(rs.size());
             for (auto f : fs) rs.push_back(ray3{eye, mid - eye}), ts.push_back(tris[f]);
         }
-        results.push_back(run_workload(rt, "edge_rays", "a ray from the eye through each edge's midpoint, against the "
-                                                        "triangles sharing that edge",
+        results.push_back(run_workload(rt, "edge_rays",
+                                       "a ray from the eye through each edge's midpoint, against the "
+                                       "triangles sharing that edge",
                                        rs, ts, groups));
         rs.clear(), ts.clear(), groups.clear();
         for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
@@ -247,11 +246,12 @@ void scene(audit::json& j, const options& o) {
             groups.push_back(rs.size());
             for (auto f : around[v]) rs.push_back(ray3{eye, mesh.vertices[v] - eye}), ts.push_back(tris[f]);
         }
-        results.push_back(run_workload(rt, "vertex_rays", "a ray from the eye through each vertex, against the "
-                                                          "triangles around it",
+        results.push_back(run_workload(rt, "vertex_rays",
+                                       "a ray from the eye through each vertex, against the "
+                                       "triangles around it",
                                        rs, ts, groups));
     }
-    {   // the mesh's own triangle pairs: adjacent ones touch exactly; near ones (two rings) mostly miss
+    { // the mesh's own triangle pairs: adjacent ones touch exactly; near ones (two rings) mostly miss
         std::vector<triangle3> as, bs, na, nb;
         std::set<std::pair<std::uint32_t, std::uint32_t>> adjacent;
         for (const auto& fs : around)
@@ -259,8 +259,9 @@ void scene(audit::json& j, const options& o) {
                 for (auto g : fs)
                     if (f < g) adjacent.insert({f, g});
         for (const auto& [f, g] : adjacent) as.push_back(tris[f]), bs.push_back(tris[g]);
-        results.push_back(run_workload(tt, "adjacent_pairs", "pairs of the mesh's triangles sharing a vertex or an edge "
-                                                             "(all touch exactly)",
+        results.push_back(run_workload(tt, "adjacent_pairs",
+                                       "pairs of the mesh's triangles sharing a vertex or an edge "
+                                       "(all touch exactly)",
                                        as, bs, {}));
         audit::rng r(o.seed);
         const long want = o.pairs;
@@ -280,14 +281,18 @@ void scene(audit::json& j, const options& o) {
             if (shares || !seen.insert({std::min(f, g), std::max(f, g)}).second) continue;
             na.push_back(tris[f]), nb.push_back(tris[g]);
         }
-        results.push_back(run_workload(tt, "near_pairs", "pairs of the mesh's triangles two rings apart that share no "
-                                                         "vertex (near misses)",
+        results.push_back(run_workload(tt, "near_pairs",
+                                       "pairs of the mesh's triangles two rings apart that share no "
+                                       "vertex (near misses)",
                                        na, nb, {}));
     }
     progress_done();
 
     // Advice: the cheapest tier without a wrong answer on every workload, by total time.
-    struct tally { double ms = 0; long wrong = 0, tests = 0; };
+    struct tally {
+        double ms = 0;
+        long wrong = 0, tests = 0;
+    };
     std::map<std::string, tally> tiers;
     for (const auto& w : results)
         for (const auto& row : w.rows)
@@ -309,9 +314,16 @@ void scene(audit::json& j, const options& o) {
         j.kv("uncertain", w.rows[0].uncertain);
         j.key("methods").array();
         for (const auto& row : w.rows)
-            j.object().kv("name", row.name).kv("kind", row.kind).kv("ms", row.ms).kv("wrong", row.c.wrong)
-                .kv("false_positive", row.c.false_positive).kv("false_negative", row.c.false_negative)
-                .kv("tests", row.c.cases).kv("holes", row.holes).end_object();
+            j.object()
+                .kv("name", row.name)
+                .kv("kind", row.kind)
+                .kv("ms", row.ms)
+                .kv("wrong", row.c.wrong)
+                .kv("false_positive", row.c.false_positive)
+                .kv("false_negative", row.c.false_negative)
+                .kv("tests", row.c.cases)
+                .kv("holes", row.holes)
+                .end_object();
         j.end_array().end_object();
     }
     j.end_array();
@@ -325,13 +337,16 @@ void scene(audit::json& j, const options& o) {
     char buf[512];
     const double exact_ms = tiers["exact"].ms;
     if (best == "exact") {
-        std::snprintf(buf, sizeof buf, "Only the exact tier made no mistake on this scene's %ld tests (%.0f ms). The filter "
-                                       "could not decide %ld of them (%.2f%%): that is how close this scene comes to the "
-                                       "decision boundaries.", tests, exact_ms, uncertain, 100.0 * double(uncertain) / double(tests));
+        std::snprintf(buf, sizeof buf,
+                      "Only the exact tier made no mistake on this scene's %ld tests (%.0f ms). The filter "
+                      "could not decide %ld of them (%.2f%%): that is how close this scene comes to the "
+                      "decision boundaries.",
+                      tests, exact_ms, uncertain, 100.0 * double(uncertain) / double(tests));
     } else {
-        std::snprintf(buf, sizeof buf, "The %s tier made no mistake on this scene's %ld tests and took %.0f ms against %.0f ms for "
-                                       "exact (%.2fx). Margin: the filter could not certify %ld of the tests (%.3f%%); %s answered "
-                                       "every one of them right here, but a scene with more such contacts can differ.",
+        std::snprintf(buf, sizeof buf,
+                      "The %s tier made no mistake on this scene's %ld tests and took %.0f ms against %.0f ms for "
+                      "exact (%.2fx). Margin: the filter could not certify %ld of the tests (%.3f%%); %s answered "
+                      "every one of them right here, but a scene with more such contacts can differ.",
                       best.c_str(), tests, tiers[best].ms, exact_ms, exact_ms / std::max(tiers[best].ms, 1e-9), uncertain,
                       100.0 * double(uncertain) / double(tests), best.c_str());
     }
@@ -351,7 +366,11 @@ void scene(audit::json& j, const options& o) {
     j.kv("hull_vertices", long(bv.hull_vertices)).kv("tightness_rule", bv.tightness_rule).key("rows").array();
     for (const auto& r : bv.rows) {
         j.object().kv("kind", r.kind).kv("source", r.source).kv("ours", r.ours).kv("build_ms", r.build_ms);
-        j.kv("volume_ratio", r.volume_ratio).kv("area_ratio", r.area_ratio).kv("test_ns", r.test_ns).kv("contains_all", r.contains_all).end_object();
+        j.kv("volume_ratio", r.volume_ratio)
+            .kv("area_ratio", r.area_ratio)
+            .kv("test_ns", r.test_ns)
+            .kv("contains_all", r.contains_all)
+            .end_object();
         if (r.ours && !r.contains_all) ++total_violations;
     }
     j.end_array().end_object();

@@ -20,7 +20,7 @@ struct options {
     std::string command = "all";
     std::string scene;
     std::string out = "audit-report";
-    long cases = 500;    // per level and setting
+    long cases = 500; // per level and setting
     long tradeoff_cases = 6000;
     std::uint64_t seed = 20261122;
     int reps = 7;
@@ -33,9 +33,7 @@ struct options {
 void progress(const char* fmt, ...);
 void progress_done();
 
-inline double now_ns() {
-    return std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
+inline double now_ns() { return std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 inline double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     return v.empty() ? 0.0 : v[v.size() / 2];
@@ -103,8 +101,12 @@ template <class Family>
         j.list("cases", n).list("wrong", w).list("false_positive", fp).list("false_negative", fn);
         j.key("by_setting").array();
         for (const counts& c : by_setting[m])
-            j.object().kv("cases", c.cases).kv("wrong", c.wrong).kv("false_positive", c.false_positive)
-                .kv("false_negative", c.false_negative).end_object();
+            j.object()
+                .kv("cases", c.cases)
+                .kv("wrong", c.wrong)
+                .kv("false_positive", c.false_positive)
+                .kv("false_negative", c.false_negative)
+                .end_object();
         j.end_array().end_object();
     }
     j.end_array().end_object();
@@ -186,8 +188,7 @@ template <class Family>
     for (std::size_t m = 0; m < ms.size(); ++m) {
         bool pareto = true; // no other method is at least as fast and as accurate, and better in one
         for (std::size_t q = 0; q < ms.size(); ++q)
-            if (q != m && tn[q] <= tn[m] && err_near[q] <= err_near[m] && (tn[q] < tn[m] || err_near[q] < err_near[m]))
-                pareto = false;
+            if (q != m && tn[q] <= tn[m] && err_near[q] <= err_near[m] && (tn[q] < tn[m] || err_near[q] < err_near[m])) pareto = false;
         j.object().kv("name", ms[m].name).kv("kind", ms[m].kind).kv("source", ms[m].source);
         j.kv("ns_near", tn[m]).kv("ns_random", tr[m]).kv("wrong_near", wrong_near[m]);
         j.kv("error_rate_near", err_near[m]).kv("error_rate_random", err_random[m]).kv("pareto", pareto).end_object();

@@ -54,22 +54,22 @@ std::string bound_text(double b) {
 template <class T>
 constexpr const char* shape_name() {
     if constexpr (std::is_same_v<T, point3>) return "point";
-    else     if constexpr (std::is_same_v<T, segment3>) return "segment";
-    else     if constexpr (std::is_same_v<T, ray3>) return "ray";
-    else     if constexpr (std::is_same_v<T, line3>) return "line";
-    else     if constexpr (std::is_same_v<T, plane3>) return "plane";
-    else     if constexpr (std::is_same_v<T, triangle3>) return "triangle";
-    else     if constexpr (std::is_same_v<T, tetrahedron3>) return "tetrahedron";
-    else     if constexpr (std::is_same_v<T, aabb3>) return "aabb";
-    else     if constexpr (std::is_same_v<T, obb3>) return "obb";
-    else     if constexpr (std::is_same_v<T, sphere3>) return "sphere";
-    else     if constexpr (std::is_same_v<T, convex_polyhedron3>) return "convex_polyhedron";
-    else     if constexpr (std::is_same_v<T, frustum3>) return "frustum";
-    else     if constexpr (std::is_same_v<T, mesh3>) return "mesh";
-    else     if constexpr (std::is_same_v<T, polygon3>) return "polygon";
-    else     if constexpr (std::is_same_v<T, point2>) return "point2";
-    else     if constexpr (std::is_same_v<T, segment2>) return "segment2";
-    else     if constexpr (std::is_same_v<T, polygon2>) return "polygon2";
+    else if constexpr (std::is_same_v<T, segment3>) return "segment";
+    else if constexpr (std::is_same_v<T, ray3>) return "ray";
+    else if constexpr (std::is_same_v<T, line3>) return "line";
+    else if constexpr (std::is_same_v<T, plane3>) return "plane";
+    else if constexpr (std::is_same_v<T, triangle3>) return "triangle";
+    else if constexpr (std::is_same_v<T, tetrahedron3>) return "tetrahedron";
+    else if constexpr (std::is_same_v<T, aabb3>) return "aabb";
+    else if constexpr (std::is_same_v<T, obb3>) return "obb";
+    else if constexpr (std::is_same_v<T, sphere3>) return "sphere";
+    else if constexpr (std::is_same_v<T, convex_polyhedron3>) return "convex_polyhedron";
+    else if constexpr (std::is_same_v<T, frustum3>) return "frustum";
+    else if constexpr (std::is_same_v<T, mesh3>) return "mesh";
+    else if constexpr (std::is_same_v<T, polygon3>) return "polygon";
+    else if constexpr (std::is_same_v<T, point2>) return "point2";
+    else if constexpr (std::is_same_v<T, segment2>) return "segment2";
+    else if constexpr (std::is_same_v<T, polygon2>) return "polygon2";
     else return "kdop";
 }
 
@@ -88,13 +88,14 @@ row_facts facts(const F& f, const std::string& test) {
 [[gnu::noinline]] std::string row(const std::filesystem::path& root, const row_facts& f, bool with_test) {
     std::string alts;
     for (const auto& a : f.alternatives) alts += (alts.empty() ? "`" : ", `") + f.name + "_" + a + "`";
-    std::string r = "| `" + f.name + "` | `" + f.table + "` | " + f.approximate + " | " + f.bound + " | " + (alts.empty() ? std::string("-") : alts) +
-                    " | " + f.oracle + " | `" + f.test + "`";
+    std::string r = "| `" + f.name + "` | `" + f.table + "` | " + f.approximate + " | " + f.bound + " | " +
+                    (alts.empty() ? std::string("-") : alts) + " | " + f.oracle + " | `" + f.test + "`";
     if (with_test) r += ": " + leading_comment(root / f.test);
     return r + " | `" + f.fuzzer + "` |\n";
 }
-const char* header = "| pair | table (`modules/query/`) | approximate tier runs | stated bound | alternatives (`method::`) | exact tier checked "
-                     "against | test | fuzzer (`fuzz/`) |\n|---|---|---|---|---|---|---|---|\n";
+const char* header =
+    "| pair | table (`modules/query/`) | approximate tier runs | stated bound | alternatives (`method::`) | exact tier checked "
+    "against | test | fuzzer (`fuzz/`) |\n|---|---|---|---|---|---|---|---|\n";
 
 std::string document(const std::filesystem::path& root) {
     std::string d =
@@ -108,7 +109,8 @@ std::string document(const std::filesystem::path& root) {
         "alternatives are textbook algorithms kept beside the tiers as `method::<pair>_<name>`, audited against the same truth.\n\n";
     d += "## Do they meet? `intersects<Tier>(a, b)` and `classify(a, b)`\n\n";
     d += header;
-    catalog::for_each_listed_family([&](const auto& f) { d += row(root, facts(f, "tests/query/intersects/" + std::string(f.name) + ".cpp"), true); });
+    catalog::for_each_listed_family(
+        [&](const auto& f) { d += row(root, facts(f, "tests/query/intersects/" + std::string(f.name) + ".cpp"), true); });
     d += "\n## Is b inside a? `contains<Tier>(a, b)`\n\nThe first argument holds the second; the test is the pair's yes/no test.\n\n";
     d += header;
     catalog::for_each_containment([&](const auto& f) {

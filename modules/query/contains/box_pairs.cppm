@@ -21,8 +21,7 @@ export namespace incidence::detail {
 
 template <class K>
 [[nodiscard]] constexpr bool contains(K&, const aabb3& a, const aabb3& b) {
-    return a.min.x <= b.min.x && b.max.x <= a.max.x && a.min.y <= b.min.y && b.max.y <= a.max.y &&
-           a.min.z <= b.min.z && b.max.z <= a.max.z;
+    return a.min.x <= b.min.x && b.max.x <= a.max.x && a.min.y <= b.min.y && b.max.y <= a.max.y && a.min.z <= b.min.z && b.max.z <= a.max.z;
 }
 
 // aabb3 against point3, and the point's minimum and maximum squared distance to the box.

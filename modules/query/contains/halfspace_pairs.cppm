@@ -29,7 +29,9 @@ export namespace incidence::detail {
 // query says no. A point on a face, an edge or a vertex counts.
 // contains(convex_polyhedron3, point): the same set.
 template <class K>
-[[nodiscard]] constexpr bool contains(K& k, const convex_polyhedron3& c, const point3& p) { return intersects(k, c, p); }
+[[nodiscard]] constexpr bool contains(K& k, const convex_polyhedron3& c, const point3& p) {
+    return intersects(k, c, p);
+}
 
 // aabb3 against convex_polyhedron3, contains(convex_polyhedron3, aabb3), and the half-space
 // feasibility test the other half-space pairs share: with a box (aabb_frustum), and of possibly
@@ -54,7 +56,9 @@ template <class K>
 // number: no set) and the point; a point on a face, an edge or a corner counts. contains: the
 // same set.
 template <class K>
-[[nodiscard]] constexpr bool contains(K& k, const frustum3& f, const point3& p) { return intersects(k, f, p); }
+[[nodiscard]] constexpr bool contains(K& k, const frustum3& f, const point3& p) {
+    return intersects(k, f, p);
+}
 
 // aabb3 against frustum3, and contains(frustum3, aabb3).
 // Semantics: the closed box (bounds ordered and finite; an inverted box is empty) and the closed

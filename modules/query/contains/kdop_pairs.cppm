@@ -22,7 +22,9 @@ export namespace incidence::detail {
 // no set: every query says no. A point on a face, edge or corner counts.
 // contains(kdop, point): the same set.
 template <class K, int N>
-[[nodiscard]] constexpr bool contains(K& k, const kdop<N>& b, const point3& p) { return intersects(k, b, p); }
+[[nodiscard]] constexpr bool contains(K& k, const kdop<N>& b, const point3& p) {
+    return intersects(k, b, p);
+}
 
 namespace kdop_slabs {
 // Every one of the n points in the k-DOP: a convex shape with those vertices lies inside it.
@@ -40,10 +42,12 @@ template <class K, int N>
 
 template <class K, int N>
 [[nodiscard]] constexpr bool contains(K& k, const kdop<N>& b, const aabb3& a) {
-    if (!kdop_slabs::well_formed(&a.min.x, &a.max.x, 1) || !kdop_slabs::well_formed(&a.min.y, &a.max.y, 1) || !kdop_slabs::well_formed(&a.min.z, &a.max.z, 1))
+    if (!kdop_slabs::well_formed(&a.min.x, &a.max.x, 1) || !kdop_slabs::well_formed(&a.min.y, &a.max.y, 1) ||
+        !kdop_slabs::well_formed(&a.min.z, &a.max.z, 1))
         return false;
-    const point3 c[8] = {{a.min.x, a.min.y, a.min.z}, {a.max.x, a.min.y, a.min.z}, {a.min.x, a.max.y, a.min.z}, {a.max.x, a.max.y, a.min.z},
-                         {a.min.x, a.min.y, a.max.z}, {a.max.x, a.min.y, a.max.z}, {a.min.x, a.max.y, a.max.z}, {a.max.x, a.max.y, a.max.z}};
+    const point3 c[8] = {{a.min.x, a.min.y, a.min.z}, {a.max.x, a.min.y, a.min.z}, {a.min.x, a.max.y, a.min.z},
+                         {a.max.x, a.max.y, a.min.z}, {a.min.x, a.min.y, a.max.z}, {a.max.x, a.min.y, a.max.z},
+                         {a.min.x, a.max.y, a.max.z}, {a.max.x, a.max.y, a.max.z}};
     return kdop_slabs::contains_all(k, b, c, 8);
 }
 template <class K, int N>

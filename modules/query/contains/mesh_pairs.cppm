@@ -33,7 +33,9 @@ export namespace incidence::detail {
 // crosses the surface an odd number of times (shapes/mesh3.cppm); a point on a triangle counts.
 // contains(mesh, point): the same set.
 template <class K>
-[[nodiscard]] constexpr bool contains(K& k, const mesh3& m, const point3& p) { return intersects(k, m, p); }
+[[nodiscard]] constexpr bool contains(K& k, const mesh3& m, const point3& p) {
+    return intersects(k, m, p);
+}
 
 // mesh3 against segment3 (a point when a == b), and contains(mesh, segment).
 // Semantics: the mesh's point set (shapes/mesh3.cppm: its triangles and the points of odd
@@ -72,14 +74,16 @@ template <class K>
         for (int e = 0; e < 3; ++e) {
             const point3 p = v[e], q = v[(e + 1) % 3];
             bool crossed = false;
-            for (int axis = 0; axis < 3 && !crossed; ++axis) crossed = keep(segment_param{p, p, q, solid_mesh::origin, solid_mesh::unit(axis)});
+            for (int axis = 0; axis < 3 && !crossed; ++axis)
+                crossed = keep(segment_param{p, p, q, solid_mesh::origin, solid_mesh::unit(axis)});
             if (!crossed) at_point(p), at_point(q); // parallel to the segment
         }
     }
     if (!met) return solid_mesh::inside(k, m, s.a); // wholly off the surface
     // t = (a - a)_j / (b - a)_j = 0 and (b - a)_j / (b - a)_j = 1, D made positive
     const bool flip = s.b.x != s.a.x ? s.b.x < s.a.x : (s.b.y != s.a.y ? s.b.y < s.a.y : s.b.z < s.a.z);
-    const segment_param start{s.a, solid_mesh::origin, u1, solid_mesh::origin, u2, flip}, end{s.b, solid_mesh::origin, u1, solid_mesh::origin, u2, flip};
+    const segment_param start{s.a, solid_mesh::origin, u1, solid_mesh::origin, u2, flip},
+        end{s.b, solid_mesh::origin, u1, solid_mesh::origin, u2, flip};
     // a piece on a triangle in its plane, or else inside
     auto decide = [&](const auto& q) {
         for (std::size_t n = 0; n < in_plane.size(); ++n)
@@ -88,7 +92,9 @@ template <class K>
     };
     return pieces::all_pieces(
         k, params, start, end, fraction, [&](double t) { return decide(solid_mesh::at_weighted<solid_mesh::segment_at>{{{sb}, s, t}}); },
-        [&](const segment_param& lo, const segment_param& hi) { return decide(solid_mesh::at_weighted<solid_mesh::segment_point>{{{sb}, s, lo, hi}}); });
+        [&](const segment_param& lo, const segment_param& hi) {
+            return decide(solid_mesh::at_weighted<solid_mesh::segment_point>{{{sb}, s, lo, hi}});
+        });
 }
 
 // mesh3 against triangle3 (a collinear triangle is its hull), and contains(mesh, triangle).
@@ -99,7 +105,8 @@ template <class K>
 [[nodiscard]] constexpr bool contains(K& k, const mesh3& m, const triangle3& t) {
     if (!solid_mesh::well_formed(m) || !finite(t)) return false;
     const aabb3 mb = solid_mesh::bounds(m);
-    if (!solid_mesh::in_box(mb, t.a) || !solid_mesh::in_box(mb, t.b) || !solid_mesh::in_box(mb, t.c)) return false; // the set lies in the vertices' box
+    if (!solid_mesh::in_box(mb, t.a) || !solid_mesh::in_box(mb, t.b) || !solid_mesh::in_box(mb, t.c))
+        return false; // the set lies in the vertices' box
     int axis = -1;
     for (int ax = 0; ax < 3 && axis < 0; ++ax)
         if (!arith::is_zero(k, [=](auto L) {

@@ -80,13 +80,14 @@ template <class K>
         bool zero = true;
         for (int c = 0; c < 3; ++c)
             zero = zero && arith::is_zero(k, [=](auto L) {
-                                const auto n = normal(L);
-                                return c == 0 ? n.x : (c == 1 ? n.y : n.z);
-                            });
+                       const auto n = normal(L);
+                       return c == 0 ? n.x : (c == 1 ? n.y : n.z);
+                   });
         if (zero) continue;
         // In the plane: N . (c - q0) = 0 and N . a_j = 0 for each used axis.
         if (!tetra::box_on_zero(b, [&](point3 x, bool is_point) {
-                if (is_point) return arith::is_zero(k, [=](auto L) { return arith::dot(normal(L), arith::lift(L, x) - arith::lift(L, q0)); });
+                if (is_point)
+                    return arith::is_zero(k, [=](auto L) { return arith::dot(normal(L), arith::lift(L, x) - arith::lift(L, q0)); });
                 return arith::is_zero(k, [=](auto L) { return arith::dot(normal(L), arith::lift(L, vec3{x.x, x.y, x.z})); });
             }))
             return false;
@@ -124,11 +125,11 @@ template <class K>
     for (int c = 0; c < 3; ++c) // on the line: d x (c - u) = 0 and d x a_j = 0
         if (!tetra::box_on_zero(b, [&](point3 x, bool is_point) {
                 return arith::is_zero(k, [=](auto L) {
-                           const auto d = arith::lift(L, w) - arith::lift(L, u);
-                           const auto e = is_point ? arith::lift(L, x) - arith::lift(L, u) : arith::lift(L, x) - arith::lift(L, point3{0, 0, 0});
-                           const auto n = arith::cross(d, e);
-                           return c == 0 ? n.x : (c == 1 ? n.y : n.z);
-                       });
+                    const auto d = arith::lift(L, w) - arith::lift(L, u);
+                    const auto e = is_point ? arith::lift(L, x) - arith::lift(L, u) : arith::lift(L, x) - arith::lift(L, point3{0, 0, 0});
+                    const auto n = arith::cross(d, e);
+                    return c == 0 ? n.x : (c == 1 ? n.y : n.z);
+                });
             }))
             return false;
     // Along the line, t(x) = d . x: some vertex at or below the box's least t, some at or above its

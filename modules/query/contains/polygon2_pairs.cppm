@@ -20,7 +20,9 @@ export namespace incidence::detail {
 // parity (shapes/polygon2.cppm); a point on an edge counts.
 // contains(polygon, point): the same set.
 template <class K>
-[[nodiscard]] constexpr bool contains(K& k, const polygon2& g, const point2& p) { return intersects(k, p, g); }
+[[nodiscard]] constexpr bool contains(K& k, const polygon2& g, const point2& p) {
+    return intersects(k, p, g);
+}
 
 // polygon2 against segment2.
 // Semantics: the polygon's edges and the points of odd crossing parity (shapes/polygon2.cppm)

@@ -24,7 +24,9 @@ export namespace incidence::detail {
 // projection along its axis lies in the projected polygon2 (edges, and odd crossing parity).
 // contains(polygon3, point3): the same set.
 template <class K>
-[[nodiscard]] constexpr bool contains(K& k, const polygon3& g, const point3& p) { return intersects(k, p, g); }
+[[nodiscard]] constexpr bool contains(K& k, const polygon3& g, const point3& p) {
+    return intersects(k, p, g);
+}
 
 // polygon3 against segment3.
 // Semantics: the polygon's point set (shapes/polygon3.cppm) and the closed segment (equal ends: a

@@ -75,7 +75,8 @@ template <class K>
         const double h = b.half_extents[i];
         auto room = [=](auto L) { // A_i = h_i |det| - |n_i . (c - o)|
             const auto n = arith::cross(arith::lift(L, aj), arith::lift(L, ak));
-            return L(h) * sat::magnitude(arith::dot(n, arith::lift(L, ai))) - L(1.0) * sat::magnitude(arith::dot(n, arith::lift(L, c) - arith::lift(L, o)));
+            return L(h) * sat::magnitude(arith::dot(n, arith::lift(L, ai))) -
+                   L(1.0) * sat::magnitude(arith::dot(n, arith::lift(L, c) - arith::lift(L, o)));
         };
         if (k.sgn(room) == sign::negative) return false;
         if (k.sgn([=](auto L) {

@@ -154,7 +154,9 @@ template <class K>
     for (int i = 0; i < 3 && pi < 0; ++i)
         for (int j = i + 1; j < 3 && pi < 0; ++j)
             for (int axis = 0; axis < 3 && pi < 0; ++axis)
-                if (arith::sgn<arith::hint::structural>(k, [=](auto L) { return pick(arith::cross(g(L, i), g(L, j)), axis); }) != sign::zero) pi = i, pj = j;
+                if (arith::sgn<arith::hint::structural>(k, [=](auto L) { return pick(arith::cross(g(L, i), g(L, j)), axis); }) !=
+                    sign::zero)
+                    pi = i, pj = j;
     if (pi >= 0) {
         auto plane = family([=](auto L, int) { return arith::cross(g(L, pi), g(L, pj)); });
         auto edges = family([=](auto L, int l) { return arith::cross(arith::cross(g(L, pi), g(L, pj)), g(L, l)); });
@@ -181,9 +183,8 @@ template <class K, linear_shape S>
             !finite(b.half_extents[static_cast<unsigned>(i)]))
             return std::nullopt;
     const linear3 s = as_linear(x);
-    const sign det = k.sgn([=](auto L) {
-        return arith::det3(arith::lift(L, b.axes[0]), arith::lift(L, b.axes[1]), arith::lift(L, b.axes[2]));
-    });
+    const sign det =
+        k.sgn([=](auto L) { return arith::det3(arith::lift(L, b.axes[0]), arith::lift(L, b.axes[1]), arith::lift(L, b.axes[2])); });
     if (det == sign::zero) return obb_flat(k, b, s);
     return clip_span(k, obb_face_constraints<K>(b, s, det), 6, s);
 }
@@ -210,7 +211,8 @@ template <class K, linear_shape S>
     constexpr int face[4][3] = {{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}};
     auto con = [=](int i, auto L) {
         const auto P = arith::lift(L, v[static_cast<unsigned>(face[i][0])]);
-        const auto n = arith::cross(arith::lift(L, v[static_cast<unsigned>(face[i][1])]) - P, arith::lift(L, v[static_cast<unsigned>(face[i][2])]) - P);
+        const auto n = arith::cross(arith::lift(L, v[static_cast<unsigned>(face[i][1])]) - P,
+                                    arith::lift(L, v[static_cast<unsigned>(face[i][2])]) - P);
         const auto A = arith::dot(n, s.O(L) - P);
         const auto B = arith::dot(n, s.D(L));
         const bool flip = (i % 2 == 1) != (o == sign::negative);
@@ -268,7 +270,7 @@ template <class K, linear_shape S>
     };
     bool enter_at_root = true, exit_at_root = true;
     if (s.bounded_below()) {
-        if (against(arith::root::larger, false) == sign::negative) return std::nullopt; // t2 < 0
+        if (against(arith::root::larger, false) == sign::negative) return std::nullopt;    // t2 < 0
         if (against(arith::root::smaller, false) != sign::positive) enter_at_root = false; // t1 <= 0: enters at 0
     }
     if (s.bounded_above()) {
@@ -330,7 +332,8 @@ constexpr void barycentrics(K& k, triangle_hit<arith::value_t<K>>& h, const cont
                 const auto Xn = arith::scaled(s.O(L), x.den) + arith::scaled(s.D(L), x.num);
                 const auto A = arith::lift(L, a);
                 const auto area = arith::cross(drop_axis(arith::lift(L, b) - A, axis), drop_axis(arith::lift(L, c) - A, axis));
-                return arith::ratio{arith::cross(drop_axis(arith::scaled(arith::lift(L, p), x.den) - Xn, axis), drop_axis(arith::scaled(arith::lift(L, q), x.den) - Xn, axis)),
+                return arith::ratio{arith::cross(drop_axis(arith::scaled(arith::lift(L, p), x.den) - Xn, axis),
+                                                 drop_axis(arith::scaled(arith::lift(L, q), x.den) - Xn, axis)),
                                     area * (x.den * x.den)};
             });
         });
@@ -423,7 +426,6 @@ template <class K, linear_shape S>
     return mesh_hit<V>{h.t, h.point, h.normal, h.u, h.v, h.w, first_triangle};
 }
 
-
 // --- what conservative reports where its filter could not decide ----------------------------------
 // A hit that may exist (exists uncertain), every value enclosed whatever the hit is: t within the
 // object's range, the point within the set's bounds and the object's, barycentrics within [0, 1].
@@ -441,13 +443,16 @@ inline constexpr interval3 everywhere{arith::whole_line, arith::whole_line, arit
 [[nodiscard]] constexpr interval3 reach_of(const frustum3&) { return everywhere; }
 [[nodiscard]] constexpr interval3 reach_of(const aabb3& b) { return box_interval(b); }
 template <int N>
-[[nodiscard]] constexpr interval3 reach_of(const kdop<N>& b) { return {{b.min[0], b.max[0]}, {b.min[1], b.max[1]}, {b.min[2], b.max[2]}}; }
+[[nodiscard]] constexpr interval3 reach_of(const kdop<N>& b) {
+    return {{b.min[0], b.max[0]}, {b.min[1], b.max[1]}, {b.min[2], b.max[2]}};
+}
 [[nodiscard]] constexpr interval3 reach_of(const obb3& b) { // c +- sum |h_i a_i|, rounded outward
     auto axis = [&](double c, double a0, double a1, double a2) {
         interval r = arith::point_interval(c);
         const double a[3] = {a0, a1, a2};
         for (int i = 0; i < 3; ++i) {
-            const interval e = arith::mul(arith::point_interval(arith::abs(a[i])), arith::point_interval(b.half_extents[static_cast<unsigned>(i)]));
+            const interval e =
+                arith::mul(arith::point_interval(arith::abs(a[i])), arith::point_interval(b.half_extents[static_cast<unsigned>(i)]));
             r = arith::add(r, interval{-e.hi, e.hi});
         }
         return r;
@@ -471,7 +476,9 @@ template <int N>
     return box_interval(bounds(m.vertices.data(), m.vertices.size()));
 }
 template <linear_shape S>
-[[nodiscard]] constexpr interval3 reach_of_linear(const S& x) { return box_interval(bounds(x)); }
+[[nodiscard]] constexpr interval3 reach_of_linear(const S& x) {
+    return box_interval(bounds(x));
+}
 
 template <class Set, linear_shape S>
 [[nodiscard]] constexpr auto possible_hit(const Set& set, const S& x) {

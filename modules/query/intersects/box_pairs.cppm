@@ -20,8 +20,7 @@ export namespace incidence::detail {
 [[nodiscard]] consteval bool decided_by_comparisons(const aabb3*, const aabb3*) { return true; }
 template <class K>
 [[nodiscard]] constexpr bool intersects(K&, const aabb3& a, const aabb3& b) {
-    return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y &&
-           a.min.z <= b.max.z && b.min.z <= a.max.z;
+    return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y && a.min.z <= b.max.z && b.min.z <= a.max.z;
 }
 
 // aabb3 against point3, and the point's minimum and maximum squared distance to the box.
@@ -32,8 +31,7 @@ template <class K>
 [[nodiscard]] consteval bool decided_by_comparisons(const aabb3*, const point3*) { return true; }
 template <class K>
 [[nodiscard]] constexpr bool intersects(K&, const aabb3& b, const point3& p) {
-    return b.min.x <= p.x && p.x <= b.max.x && b.min.y <= p.y && p.y <= b.max.y && b.min.z <= p.z &&
-           p.z <= b.max.z;
+    return b.min.x <= p.x && p.x <= b.max.x && b.min.y <= p.y && p.y <= b.max.y && b.min.z <= p.z && p.z <= b.max.z;
 }
 
 // aabb3 against triangle3 (closed box, closed triangle; a collinear triangle is its hull).
@@ -61,7 +59,8 @@ template <class K>
     if (arith::rounded_stage_applies<K>()) {
         constexpr int edges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
         constexpr int faces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
-        if (const certainty r = box_triangle::rounded_hull_axes_decide(b, v, edges, faces); r != certainty::uncertain) return r == certainty::yes;
+        if (const certainty r = box_triangle::rounded_hull_axes_decide(b, v, edges, faces); r != certainty::uncertain)
+            return r == certainty::yes;
     }
     // The box's face normals first: coordinate comparisons, exact in every tier.
     auto at = [](const point3& p, int i) { return i == 0 ? p.x : (i == 1 ? p.y : p.z); };
@@ -73,7 +72,8 @@ template <class K>
     for (const point3& p : v)
         if (b.min.x <= p.x && p.x <= b.max.x && b.min.y <= p.y && p.y <= b.max.y && b.min.z <= p.z && p.z <= b.max.z) return true;
     const box_corners c(b);
-    return tetra::tetrahedron_meets(k, t, [&](const triangle3& face) { return box_triangle::box_meets<box_reach::closed, false>(k, b, face); }, c.p, 8, true);
+    return tetra::tetrahedron_meets(
+        k, t, [&](const triangle3& face) { return box_triangle::box_meets<box_reach::closed, false>(k, b, face); }, c.p, 8, true);
 }
 
 // aabb3 against ray3: intersects, and intersection = the parameter interval [t_enter, t_exit]

@@ -80,8 +80,10 @@ template <class K>
                arith::compare(k, p.z, o.z) == sign::zero;
     // component i of (p - o) x d: (p - o)_j d_l - (p - o)_l d_j, (i, j, l) cyclic; a line and a
     // point in one plane z = c make the first two zero by structure (hint::structural)
-    if (!arith::is_zero<arith::hint::structural>(k, [=](auto L) { return (L(p.y) - L(o.y)) * L(d.z) - (L(p.z) - L(o.z)) * L(d.y); })) return false;
-    if (!arith::is_zero<arith::hint::structural>(k, [=](auto L) { return (L(p.z) - L(o.z)) * L(d.x) - (L(p.x) - L(o.x)) * L(d.z); })) return false;
+    if (!arith::is_zero<arith::hint::structural>(k, [=](auto L) { return (L(p.y) - L(o.y)) * L(d.z) - (L(p.z) - L(o.z)) * L(d.y); }))
+        return false;
+    if (!arith::is_zero<arith::hint::structural>(k, [=](auto L) { return (L(p.z) - L(o.z)) * L(d.x) - (L(p.x) - L(o.x)) * L(d.z); }))
+        return false;
     return arith::is_zero(k, [=](auto L) { return (L(p.x) - L(o.x)) * L(d.y) - (L(p.y) - L(o.y)) * L(d.x); });
 }
 
@@ -107,10 +109,12 @@ template <class K>
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const segment2& s, const segment2& t) {
     if (!finite(s.a) || !finite(s.b) || !finite(t.a) || !finite(t.b)) return false; // no shape
-    if (boxes_apart(k, s, t)) return false; // exact, and cheap on the commonest no
+    if (boxes_apart(k, s, t)) return false;                                         // exact, and cheap on the commonest no
     // In the filter pass an unproven sign (an end point on the other's line, often exactly) is
     // settled where it arises (hint::often_zero) rather than by rerunning the pair.
-    auto orient = [&](point2 p, point2 q, point2 r) { return arith::sgn<arith::hint::often_zero>(k, [=](auto L) { return poly::orient2d(L, p, q, r); }); };
+    auto orient = [&](point2 p, point2 q, point2 r) {
+        return arith::sgn<arith::hint::often_zero>(k, [=](auto L) { return poly::orient2d(L, p, q, r); });
+    };
     // r, on the line p q, lies on the closed segment p q iff it lies in its bounding box
     auto within = [](point2 p, point2 q, point2 r) {
         return (p.x <= q.x ? p.x <= r.x && r.x <= q.x : q.x <= r.x && r.x <= p.x) &&

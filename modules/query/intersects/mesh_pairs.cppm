@@ -93,7 +93,8 @@ template <class K>
 
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const mesh3& a, const mesh3& b) {
-    if (!solid_mesh::well_formed(a) || !solid_mesh::well_formed(b) || !solid_mesh::boxes_meet(solid_mesh::bounds(a), solid_mesh::bounds(b))) return false;
+    if (!solid_mesh::well_formed(a) || !solid_mesh::well_formed(b) || !solid_mesh::boxes_meet(solid_mesh::bounds(a), solid_mesh::bounds(b)))
+        return false;
     // Every triangle pair is tested in both orders' evaluation, so (a, b) and (b, a) agree in every tier.
     for (std::size_t i = 0; i < a.triangles.size(); ++i) {
         const triangle3 f = a.triangle(i);

@@ -82,9 +82,9 @@ template <class K>
     const vec3 n = pl.normal;
     const double d = pl.offset;
     return k.sgn([=](auto L) {
-               const auto w = arith::lift(L, n);
-               return L(1.0) * sat::magnitude(arith::dot(w, sat::centre2(L, z)) - L(1.0) * (L(d) + L(d))) - sat::radius2(L, z, w);
-           }) != sign::positive;
+        const auto w = arith::lift(L, n);
+        return L(1.0) * sat::magnitude(arith::dot(w, sat::centre2(L, z)) - L(1.0) * (L(d) + L(d))) - sat::radius2(L, z, w);
+    }) != sign::positive;
 }
 
 // obb3 against segment3 (closed box read as the parallelepiped its axes span; closed segment, a

@@ -55,7 +55,8 @@ template <class K>
 
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const polygon2& a, const polygon2& b) {
-    if (!polygon2d::well_formed(a) || !polygon2d::well_formed(b) || !polygon2d::boxes_meet(polygon2d::bounds(a), polygon2d::bounds(b))) return false;
+    if (!polygon2d::well_formed(a) || !polygon2d::well_formed(b) || !polygon2d::boxes_meet(polygon2d::bounds(a), polygon2d::bounds(b)))
+        return false;
     const polygon2d::box2 bb = polygon2d::bounds(b);
     const bool edges = polygon2d::any_edge(a, [&](point2 p, point2 q) {
         const point2 pq[2] = {p, q};

@@ -85,7 +85,8 @@ template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const polygon3& g, const triangle3& t) {
     if (!finite(t.a) || !finite(t.b) || !finite(t.c) || !polygon3d::usable(k, g)) return false;
     if (polygon3d::any_edge(g, [&](const segment3& e) { return intersects(k, e, t); })) return true;
-    return polygon3d::crossing_inside(k, g, as_linear(segment3{t.a, t.b})) || polygon3d::crossing_inside(k, g, as_linear(segment3{t.b, t.c})) ||
+    return polygon3d::crossing_inside(k, g, as_linear(segment3{t.a, t.b})) ||
+           polygon3d::crossing_inside(k, g, as_linear(segment3{t.b, t.c})) ||
            polygon3d::crossing_inside(k, g, as_linear(segment3{t.c, t.a}));
 }
 
@@ -110,8 +111,8 @@ template <class K>
             const double sj = (m & 2) ? b.half_extents[ej] : -b.half_extents[ej];
             auto T = [=](auto L) {
                 const auto n = polygon3d::normal(L, g);
-                return arith::dot(n, arith::lift(L, a) - arith::lift(L, b.center)) * L(1.0) - L(si) * arith::dot(n, arith::lift(L, b.axes[ei])) -
-                       L(sj) * arith::dot(n, arith::lift(L, b.axes[ej]));
+                return arith::dot(n, arith::lift(L, a) - arith::lift(L, b.center)) * L(1.0) -
+                       L(si) * arith::dot(n, arith::lift(L, b.axes[ei])) - L(sj) * arith::dot(n, arith::lift(L, b.axes[ej]));
             };
             const double hk = b.half_extents[ek];
             // |t| <= h_k: h_k D - T and h_k D + T both zero or of D's sign
@@ -127,7 +128,8 @@ template <class K>
                 const auto ai = arith::lift(L, b.axes[ei]), aj = arith::lift(L, b.axes[ej]), ak = arith::lift(L, b.axes[ek]);
                 const auto Si = L(si), Sj = L(sj);
                 using R = decltype((c.x * one + Si * ai.x + Sj * aj.x) * dd + t * ak.x);
-                return arith::v3<R>{(c.x * one + Si * ai.x + Sj * aj.x) * dd + t * ak.x, (c.y * one + Si * ai.y + Sj * aj.y) * dd + t * ak.y,
+                return arith::v3<R>{(c.x * one + Si * ai.x + Sj * aj.x) * dd + t * ak.x,
+                                    (c.y * one + Si * ai.y + Sj * aj.y) * dd + t * ak.y,
                                     (c.z * one + Si * ai.z + Sj * aj.z) * dd + t * ak.z};
             };
             auto Dpad = [=](auto L) { return D(L) * L(1.0); };

@@ -64,17 +64,15 @@ template <class K>
     const sign b = k.sgn([=](auto L) { return arith::dot(m_of(L), arith::lift(L, r.direction)); });
     if (b != sign::negative) return false;
     return k.sgn([=](auto L) {
-               const auto m = m_of(L);
-               const auto d = arith::lift(L, r.direction);
-               const auto rr = L(s.radius);
-               const auto bb = arith::dot(m, d);
-               return bb * bb - arith::dot(d, d) * (arith::dot(m, m) - rr * rr);
-           }) != sign::negative;
+        const auto m = m_of(L);
+        const auto d = arith::lift(L, r.direction);
+        const auto rr = L(s.radius);
+        const auto bb = arith::dot(m, d);
+        return bb * bb - arith::dot(d, d) * (arith::dot(m, m) - rr * rr);
+    }) != sign::negative;
 }
 // The approximate tier of intersects(ray3, sphere3) is the optimized geometric method.
-[[nodiscard]] constexpr bool intersects_approximate(const ray3& r, const sphere3& s) {
-    return ray_sphere_geometric(r, s).has_value();
-}
+[[nodiscard]] constexpr bool intersects_approximate(const ray3& r, const sphere3& s) { return ray_sphere_geometric(r, s).has_value(); }
 
 // sphere3 against sphere3 (closed balls).
 // Semantics: intersects iff |c1 - c2| <= r1 + r2 (tangent balls intersect);

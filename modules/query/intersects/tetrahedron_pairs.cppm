@@ -32,7 +32,8 @@ template <class K>
     if (!finite(l) || !finite(t)) return false;
     // In a filter pass, the rounded edge and face values first (tetra::rounded_line_meets).
     if (arith::rounded_stage_applies<K>())
-        if (const certainty m = tetra::rounded_line_meets(t, l.origin, l.direction, false); m != certainty::uncertain) return m == certainty::yes;
+        if (const certainty m = tetra::rounded_line_meets(t, l.origin, l.direction, false); m != certainty::uncertain)
+            return m == certainty::yes;
     const point3 pts[1] = {l.origin};
     return tetra::tetrahedron_meets(k, t, [&](const triangle3& face) { return intersects(k, l, face); }, pts, 1, false);
 }
@@ -71,7 +72,8 @@ template <class K>
     if (boxes_apart(k, r, t)) return false; // exact, and cheap on the commonest no
     // In a filter pass, the rounded edge and face values first (tetra::rounded_line_meets).
     if (arith::rounded_stage_applies<K>())
-        if (const certainty m = tetra::rounded_line_meets(t, r.origin, r.direction, true); m != certainty::uncertain) return m == certainty::yes;
+        if (const certainty m = tetra::rounded_line_meets(t, r.origin, r.direction, true); m != certainty::uncertain)
+            return m == certainty::yes;
     const point3 pts[1] = {r.origin};
     return tetra::tetrahedron_meets(k, t, [&](const triangle3& face) { return intersects(k, r, face); }, pts, 1, false);
 }

@@ -22,9 +22,7 @@ template <class K>
     return linear_triangle(k, linear3{r.origin, r.direction, r.origin, extent::ray}, t);
 }
 // The approximate tier of intersects(ray3, triangle3) is the watertight algorithm.
-[[nodiscard]] constexpr bool intersects_approximate(const ray3& r, const triangle3& t) {
-    return ray_triangle_watertight(r, t).has_value();
-}
+[[nodiscard]] constexpr bool intersects_approximate(const ray3& r, const triangle3& t) { return ray_triangle_watertight(r, t).has_value(); }
 
 // triangle3 against triangle3 (closed triangles; a collinear triangle is its hull).
 // Semantics: touching at a vertex, along an edge, or coplanar overlap counts.

@@ -19,7 +19,8 @@ using namespace incidence;
 // roundings), at every magnitude; the new enclosure rounds every end outward.
 TEST_CASE("squared_distance: the intervals contain the exact value (regression, and the class of it)", "[squared_distance][oracle]") {
     const point3 p{0x1.f4cdd89a78f92p-56, -0x1.52904e1d81808p-58, -0x1.39fa10a093536p-56};
-    const aabb3 b{{-0x1.e462b26872b88p-60, -0x1.1e463e281f4b2p-57, -0x1.a2da2abed215ap-58}, {-0x1.bc1f6fb431cep-61, -0x1.0446bc0b5b806p-57, 0x1.ac2f56e46f9c6p-57}};
+    const aabb3 b{{-0x1.e462b26872b88p-60, -0x1.1e463e281f4b2p-57, -0x1.a2da2abed215ap-58},
+                  {-0x1.bc1f6fb431cep-61, -0x1.0446bc0b5b806p-57, 0x1.ac2f56e46f9c6p-57}};
     double P[3], mn[3], mx[3];
     support::arr(p, P), support::arr(b.min, mn), support::arr(b.max, mx);
     const interval c = squared_distance<conservative>(b, p);
@@ -38,7 +39,8 @@ TEST_CASE("squared_distance: the intervals contain the exact value (regression, 
             ++n;
             const interval v = far ? max_squared_distance<aggressive>(box, x) : squared_distance<conservative>(box, x);
             if (!oracle::interval_contains_point_box_sqdist(P, mn, mx, far, v.lo, v.hi) && ++bad <= 5)
-                std::printf("  [%a, %a] misses the squared distance of %s to %s\n", v.lo, v.hi, support::str(x).c_str(), (support::str(box.min) + support::str(box.max)).c_str());
+                std::printf("  [%a, %a] misses the squared distance of %s to %s\n", v.lo, v.hi, support::str(x).c_str(),
+                            (support::str(box.min) + support::str(box.max)).c_str());
             const double e = far ? max_squared_distance(box, x) : squared_distance(box, x);
             if (!oracle::is_rounded_point_box_sqdist(P, mn, mx, far, e)) ++not_rounded;
         }

@@ -81,9 +81,15 @@ struct value_tally {
     }
 };
 
-oracle::linear_object object_of(const ray3& r) { return {oracle::linear_object::ray, {r.origin.x, r.origin.y, r.origin.z}, {r.direction.x, r.direction.y, r.direction.z}}; }
-oracle::linear_object object_of(const line3& l) { return {oracle::linear_object::line, {l.origin.x, l.origin.y, l.origin.z}, {l.direction.x, l.direction.y, l.direction.z}}; }
-oracle::linear_object object_of(const segment3& s) { return {oracle::linear_object::segment, {s.a.x, s.a.y, s.a.z}, {s.b.x, s.b.y, s.b.z}}; }
+oracle::linear_object object_of(const ray3& r) {
+    return {oracle::linear_object::ray, {r.origin.x, r.origin.y, r.origin.z}, {r.direction.x, r.direction.y, r.direction.z}};
+}
+oracle::linear_object object_of(const line3& l) {
+    return {oracle::linear_object::line, {l.origin.x, l.origin.y, l.origin.z}, {l.direction.x, l.direction.y, l.direction.z}};
+}
+oracle::linear_object object_of(const segment3& s) {
+    return {oracle::linear_object::segment, {s.a.x, s.a.y, s.a.z}, {s.b.x, s.b.y, s.b.z}};
+}
 std::string str(const ray3& r) { return "ray " + support::str(r.origin) + " " + support::str(r.direction); }
 std::string str(const line3& l) { return "line " + support::str(l.origin) + " " + support::str(l.direction); }
 std::string str(const segment3& s) { return "segment " + support::str(s.a) + " " + support::str(s.b); }
@@ -138,7 +144,8 @@ struct truth {
     oracle::exact_hit main;
     std::optional<oracle::exact_hit> triangle;
     const oracle::exact_hit& of(quantity q) const {
-        if (triangle && (q == quantity::u || q == quantity::v || q == quantity::w || q == quantity::nx || q == quantity::ny || q == quantity::nz))
+        if (triangle &&
+            (q == quantity::u || q == quantity::v || q == quantity::w || q == quantity::nx || q == quantity::ny || q == quantity::nz))
             return *triangle;
         return main;
     }
@@ -168,7 +175,8 @@ void check_case(value_tally& t, const S& set, const X& x, const Exact& exact_of,
     if constexpr (std::is_same_v<S, mesh3>) {
         if (h) {
             if (!tr.main.first_triangle_ok(h->triangle)) {
-                if (++t.not_rounded <= 5) std::printf("  mesh triangle %zu is not at the first contact: %s\n", h->triangle, describe().c_str());
+                if (++t.not_rounded <= 5)
+                    std::printf("  mesh triangle %zu is not at the first contact: %s\n", h->triangle, describe().c_str());
             } else if (h->triangle != mesh_hit<double>::inside) {
                 const triangle3 f = set.triangle(h->triangle);
                 const double a[3] = {f.a.x, f.a.y, f.a.z}, b[3] = {f.b.x, f.b.y, f.b.z}, c[3] = {f.c.x, f.c.y, f.c.z};
@@ -181,24 +189,28 @@ void check_case(value_tally& t, const S& set, const X& x, const Exact& exact_of,
         each_quantity(*h, [&](quantity q, double v) {
             if (!tr.of(q).has(q)) return;
             if (!tr.of(q).rounds_to(q, v) && ++t.not_rounded <= 5)
-                std::printf("  quantity %d = %a, not the nearest double to %a: %s\n", static_cast<int>(q), v, tr.of(q).nearest(q), describe().c_str());
+                std::printf("  quantity %d = %a, not the nearest double to %a: %s\n", static_cast<int>(q), v, tr.of(q).nearest(q),
+                            describe().c_str());
         });
     }
     auto enclosed = [&](const auto& hi, long& bad, const char* tier) {
         each_quantity(hi, [&](quantity q, interval v) {
             if (!tr.of(q).has(q)) return;
             if (!tr.of(q).within(q, v.lo, v.hi) && ++bad <= 5)
-                std::printf("  %s: quantity %d in [%a, %a] misses %a: %s\n", tier, static_cast<int>(q), v.lo, v.hi, tr.of(q).nearest(q), describe().c_str());
+                std::printf("  %s: quantity %d in [%a, %a] misses %a: %s\n", tier, static_cast<int>(q), v.lo, v.hi, tr.of(q).nearest(q),
+                            describe().c_str());
         });
     };
     const auto hc = intersection<conservative>(set, x);
     if (tr.main.exists() && !hc && ++t.conservative_missed <= 5) std::printf("  conservative missed: %s\n", describe().c_str());
     if (hc) {
         if (hc->exists == certainty::uncertain) ++t.conservative_uncertain;
-        else if (!tr.main.exists() && ++t.conservative_false_sure <= 5) std::printf("  conservative sure, no hit: %s\n", describe().c_str());
+        else if (!tr.main.exists() && ++t.conservative_false_sure <= 5)
+            std::printf("  conservative sure, no hit: %s\n", describe().c_str());
         if (tr.main.exists() && h) {
             if constexpr (std::is_same_v<S, mesh3>) { // a sure conservative mesh hit names a first-contact triangle
-                if (hc->exists == certainty::yes && hc->triangle != h->triangle && !tr.main.first_triangle_ok(hc->triangle)) ++t.conservative_not_enclosed;
+                if (hc->exists == certainty::yes && hc->triangle != h->triangle && !tr.main.first_triangle_ok(hc->triangle))
+                    ++t.conservative_not_enclosed;
                 if (hc->triangle != h->triangle) tr.triangle.reset(); // barycentrics of another triangle
             }
             enclosed(*hc, t.conservative_not_enclosed, "conservative");
@@ -206,7 +218,8 @@ void check_case(value_tally& t, const S& set, const X& x, const Exact& exact_of,
     }
     const auto ha = intersection<aggressive>(set, x);
     if (ha) {
-        if ((!tr.main.exists() || ha->exists != certainty::yes) && ++t.aggressive_false <= 5) std::printf("  aggressive false hit: %s\n", describe().c_str());
+        if ((!tr.main.exists() || ha->exists != certainty::yes) && ++t.aggressive_false <= 5)
+            std::printf("  aggressive false hit: %s\n", describe().c_str());
         if (tr.main.exists() && h) {
             if constexpr (std::is_same_v<S, mesh3>) {
                 if (ha->triangle != h->triangle) tr.triangle.reset();
@@ -250,7 +263,9 @@ void check_case(value_tally& t, const S& set, const X& x, const Exact& exact_of,
                 const double oi = q == quantity::x ? o.x : (q == quantity::y ? o.y : o.z);
                 const double di = q == quantity::x ? d.x : (q == quantity::y ? d.y : d.z);
                 // (2^-1073: the roundings of t D_i and o_i + t D_i and of the exact value, where they are subnormal)
-                const double bound = std::fabs(di) * tw + 0x1p-50 * (std::fabs(oi) + std::fabs(exact_value - oi) + std::fabs(di) * std::fabs(pv[0].first)) + 0x1p-1073;
+                const double bound = std::fabs(di) * tw +
+                                     0x1p-50 * (std::fabs(oi) + std::fabs(exact_value - oi) + std::fabs(di) * std::fabs(pv[0].first)) +
+                                     0x1p-1073;
                 if (!(std::fabs(approx - exact_value) <= bound)) ok = false;
             } else if (bounded(iv) && !(approx >= iv.lo && approx <= iv.hi)) {
                 ok = false;
@@ -258,8 +273,8 @@ void check_case(value_tally& t, const S& set, const X& x, const Exact& exact_of,
             if (was && !ok) failed = static_cast<int>(q), failed_approx = approx, failed_exact = exact_value;
         });
         if (!ok && ++t.approximate_outside <= 5)
-            std::printf("  approximate quantity %d = %a outside its bound (exact %a, t in [%a, %a]): %s\n", failed, failed_approx, failed_exact,
-                        pv[0].second.lo, pv[0].second.hi, describe().c_str());
+            std::printf("  approximate quantity %d = %a outside its bound (exact %a, t in [%a, %a]): %s\n", failed, failed_approx,
+                        failed_exact, pv[0].second.lo, pv[0].second.hi, describe().c_str());
     }
 }
 
@@ -294,12 +309,18 @@ void box_pairs(value_tally& t, support::rng& r, const case_counts& n) {
     for (long i = 0; i < n.total(); ++i) {
         const auto c = n.near(i) ? support::box_linear_near(r) : support::box_linear_random(r);
         const X x = as<X>(c);
-        if (!finite_linear(x)) { ++t.skipped; continue; }
-        check_case(t, c.box, x, [](const aabb3& b, const X& y) {
-            double mn[3], mx[3];
-            arr3(b.min, mn), arr3(b.max, mx);
-            return oracle::exact_box(object_of(y), mn, mx);
-        }, [&] { return "box " + support::str(c.box.min) + support::str(c.box.max) + " " + str(x); });
+        if (!finite_linear(x)) {
+            ++t.skipped;
+            continue;
+        }
+        check_case(
+            t, c.box, x,
+            [](const aabb3& b, const X& y) {
+                double mn[3], mx[3];
+                arr3(b.min, mn), arr3(b.max, mx);
+                return oracle::exact_box(object_of(y), mn, mx);
+            },
+            [&] { return "box " + support::str(c.box.min) + support::str(c.box.max) + " " + str(x); });
     }
 }
 
@@ -319,7 +340,10 @@ void flat_pairs(value_tally& t, support::rng& r, const case_counts& n, Gen gen, 
         const auto p = gen(r, n.near(i));
         const S s = set_of<typename decltype(p)::first_type, typename decltype(p)::second_type, S>(p);
         const X x = linear_of<typename decltype(p)::first_type, typename decltype(p)::second_type, X>(p);
-        if (!finite_linear(x) || !finite_set(s)) { ++t.skipped; continue; }
+        if (!finite_linear(x) || !finite_set(s)) {
+            ++t.skipped;
+            continue;
+        }
         check_case(t, s, x, exact_of, [&] { return describe_set(s) + " " + str(x); });
     }
 }
@@ -348,7 +372,10 @@ oracle::exact_hit exact_obb(const obb3& b, const auto& x) {
 template <class P>
 oracle::exact_hit exact_halfspaces(const P& set, const auto& x) {
     std::vector<std::array<double, 4>> planes;
-    const int m = [&] { if constexpr (std::is_same_v<P, frustum3>) return 6; else return set.count; }();
+    const int m = [&] {
+        if constexpr (std::is_same_v<P, frustum3>) return 6;
+        else return set.count;
+    }();
     for (int i = 0; i < m; ++i) {
         const plane3 p = set.planes[static_cast<unsigned>(i)];
         planes.push_back({p.normal.x, p.normal.y, p.normal.z, p.offset});
@@ -373,13 +400,15 @@ std::pair<sphere3, X> ball_case(support::rng& r, bool near) {
     support::transform tr = support::random_transform(r, near);
     auto make = [&](const double* O, const double* D) {
         if constexpr (std::is_same_v<X, segment3>)
-            return X{{tr.apply(O[0], 0), tr.apply(O[1], 1), tr.apply(O[2], 2)}, {tr.apply(O[0] + D[0], 0), tr.apply(O[1] + D[1], 1), tr.apply(O[2] + D[2], 2)}};
+            return X{{tr.apply(O[0], 0), tr.apply(O[1], 1), tr.apply(O[2], 2)},
+                     {tr.apply(O[0] + D[0], 0), tr.apply(O[1] + D[1], 1), tr.apply(O[2] + D[2], 2)}};
         else return X{{tr.apply(O[0], 0), tr.apply(O[1], 1), tr.apply(O[2], 2)}, {tr.dir(D[0]), tr.dir(D[1]), tr.dir(D[2])}};
     };
     if (!near) {
         auto c = [&](int i) { return support::random_coord(r, tr, i); };
         const sphere3 s{{c(0), c(1), c(2)}, tr.scale_only(r.uniform(0, 0.7))};
-        const double O[3] = {r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)}, D[3] = {r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)};
+        const double O[3] = {r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)},
+                     D[3] = {r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)};
         return {s, make(O, D)};
     }
     // a Pythagorean point on the sphere of radius 5k about a small centre
@@ -391,10 +420,10 @@ std::pair<sphere3, X> ball_case(support::rng& r, bool near) {
     for (int i = 0; i < 3; ++i) on[i] = C[i] + k * q[i] * (r.coin() ? 1.0 : -1.0);
     const int kind = r.integer(0, 3);
     for (int i = 0; i < 3; ++i) {
-        if (kind == 0) O[i] = on[i], D[i] = support::small(r);                       // starts on the surface
-        else if (kind == 1) O[i] = support::small(r) * 3, D[i] = on[i] - O[i];     // aimed at a surface point
+        if (kind == 0) O[i] = on[i], D[i] = support::small(r);                                 // starts on the surface
+        else if (kind == 1) O[i] = support::small(r) * 3, D[i] = on[i] - O[i];                 // aimed at a surface point
         else if (kind == 2) O[i] = C[i] + support::small(r) * 0.125, D[i] = support::small(r); // from inside
-        else O[i] = on[i] - (on[i] - C[i]) * 2, D[i] = on[i] - O[i];               // through the centre to the point
+        else O[i] = on[i] - (on[i] - C[i]) * 2, D[i] = on[i] - O[i];                           // through the centre to the point
     }
     return {sphere3{{tr.apply(C[0], 0), tr.apply(C[1], 1), tr.apply(C[2], 2)}, tr.scale_only(5 * k)}, make(O, D)};
 }
@@ -412,42 +441,57 @@ void run_all(const char* suffix, const case_counts& n, int part) {
         }
         {
             value_tally t{named("plane")};
-            flat_pairs<plane3, X>(t, r, n, [](support::rng& g, bool near) {
-                if constexpr (std::is_same_v<X, line3>) return near ? support::flat_near<line3, plane3>(g) : support::flat_random<line3, plane3>(g);
-                else return near ? support::flat_near<plane3, X>(g) : support::flat_random<plane3, X>(g);
-            }, [](const plane3& p, const X& x) { return exact_plane(p, x); });
+            flat_pairs<plane3, X>(
+                t, r, n,
+                [](support::rng& g, bool near) {
+                    if constexpr (std::is_same_v<X, line3>)
+                        return near ? support::flat_near<line3, plane3>(g) : support::flat_random<line3, plane3>(g);
+                    else return near ? support::flat_near<plane3, X>(g) : support::flat_random<plane3, X>(g);
+                },
+                [](const plane3& p, const X& x) { return exact_plane(p, x); });
             t.print();
             t.require();
         }
         {
             value_tally t{named("triangle")};
-            flat_pairs<triangle3, X>(t, r, n, [](support::rng& g, bool near) {
-                return near ? support::flat_near<X, triangle3>(g) : support::flat_random<X, triangle3>(g);
-            }, [](const triangle3& f, const X& x) { return exact_triangle(f, x); });
+            flat_pairs<triangle3, X>(
+                t, r, n,
+                [](support::rng& g, bool near) {
+                    return near ? support::flat_near<X, triangle3>(g) : support::flat_random<X, triangle3>(g);
+                },
+                [](const triangle3& f, const X& x) { return exact_triangle(f, x); });
             t.print();
             t.require();
         }
         {
             value_tally t{named("tetrahedron")};
-            flat_pairs<tetrahedron3, X>(t, r, n, [](support::rng& g, bool near) {
-                return near ? support::flat_near<X, tetrahedron3>(g) : support::flat_random<X, tetrahedron3>(g);
-            }, [](const tetrahedron3& f, const X& x) { return exact_tetrahedron(f, x); });
+            flat_pairs<tetrahedron3, X>(
+                t, r, n,
+                [](support::rng& g, bool near) {
+                    return near ? support::flat_near<X, tetrahedron3>(g) : support::flat_random<X, tetrahedron3>(g);
+                },
+                [](const tetrahedron3& f, const X& x) { return exact_tetrahedron(f, x); });
             t.print();
             t.require();
         }
         {
             value_tally t{named("obb")};
-            flat_pairs<obb3, X>(t, r, n, [](support::rng& g, bool near) {
-                if constexpr (std::is_same_v<X, line3>) return near ? support::obb_case<line3, obb3>::near(g) : support::obb_case<line3, obb3>::random(g);
-                else return near ? support::obb_case<obb3, X>::near(g) : support::obb_case<obb3, X>::random(g);
-            }, [](const obb3& b, const X& x) { return exact_obb(b, x); });
+            flat_pairs<obb3, X>(
+                t, r, n,
+                [](support::rng& g, bool near) {
+                    if constexpr (std::is_same_v<X, line3>)
+                        return near ? support::obb_case<line3, obb3>::near(g) : support::obb_case<line3, obb3>::random(g);
+                    else return near ? support::obb_case<obb3, X>::near(g) : support::obb_case<obb3, X>::random(g);
+                },
+                [](const obb3& b, const X& x) { return exact_obb(b, x); });
             t.print();
             t.require();
         }
         {
             value_tally t{named("ball")};
-            flat_pairs<sphere3, X>(t, r, n, [](support::rng& g, bool near) { return ball_case<X>(g, near); },
-                                   [](const sphere3& s, const X& x) { return exact_ball(s, x); });
+            flat_pairs<sphere3, X>(
+                t, r, n, [](support::rng& g, bool near) { return ball_case<X>(g, near); },
+                [](const sphere3& s, const X& x) { return exact_ball(s, x); });
             t.print();
             t.require();
         }
@@ -456,9 +500,13 @@ void run_all(const char* suffix, const case_counts& n, int part) {
             value_tally t{named(name)};
             for (long i = 0; i < n.total(); ++i) {
                 const auto p = n.near(i) ? support::halfspace_near<P, X>(r) : support::halfspace_random<P, X>(r);
-                if (!p || !finite_linear(p->second) || !support::finite_shape(p->first)) { ++t.skipped; continue; }
-                check_case(t, p->first, p->second, [](const P& s, const X& x) { return exact_halfspaces(s, x); },
-                           [&] { return support::shape_str(p->first) + " " + str(p->second); });
+                if (!p || !finite_linear(p->second) || !support::finite_shape(p->first)) {
+                    ++t.skipped;
+                    continue;
+                }
+                check_case(
+                    t, p->first, p->second, [](const P& s, const X& x) { return exact_halfspaces(s, x); },
+                    [&] { return support::shape_str(p->first) + " " + str(p->second); });
             }
             t.print();
             t.require();
@@ -471,9 +519,13 @@ void run_all(const char* suffix, const case_counts& n, int part) {
             value_tally t{named(("kdop" + std::to_string(K)).c_str())};
             for (long i = 0; i < quarter.total(); ++i) {
                 const auto p = quarter.near(i) ? support::kdop_near<K, X>(r) : support::kdop_random<K, X>(r);
-                if (!p || !finite_linear(p->second)) { ++t.skipped; continue; }
-                check_case(t, p->first, p->second, [](const kdop<K>& s, const X& x) { return exact_kdop(s, x); },
-                           [&] { return support::shape_str(p->first) + " " + str(p->second); });
+                if (!p || !finite_linear(p->second)) {
+                    ++t.skipped;
+                    continue;
+                }
+                check_case(
+                    t, p->first, p->second, [](const kdop<K>& s, const X& x) { return exact_kdop(s, x); },
+                    [&] { return support::shape_str(p->first) + " " + str(p->second); });
             }
             t.print();
             t.require();
@@ -487,10 +539,16 @@ void run_all(const char* suffix, const case_counts& n, int part) {
             for (long i = 0; i < n.total(); ++i) {
                 support::polygon3_store store, other;
                 support::mesh_store mesh;
-                const auto b = n.near(i) ? support::polygon3_near<X>(r, store, other, mesh) : support::polygon3_random<X>(r, store, other, mesh);
-                if (!b || !finite_linear(*b)) { ++t.skipped; continue; }
-                check_case(t, store.g, *b, [&](const polygon3& g, const X& x) { return oracle::exact_polygon(object_of(x), support::polygon3_data_of(g)); },
-                           [&] { return support::shape_str(store.g) + " " + str(*b); });
+                const auto b =
+                    n.near(i) ? support::polygon3_near<X>(r, store, other, mesh) : support::polygon3_random<X>(r, store, other, mesh);
+                if (!b || !finite_linear(*b)) {
+                    ++t.skipped;
+                    continue;
+                }
+                check_case(
+                    t, store.g, *b,
+                    [&](const polygon3& g, const X& x) { return oracle::exact_polygon(object_of(x), support::polygon3_data_of(g)); },
+                    [&] { return support::shape_str(store.g) + " " + str(*b); });
             }
             t.print();
             t.require();
@@ -504,9 +562,13 @@ void run_all(const char* suffix, const case_counts& n, int part) {
                 const mesh3 m = store.view();
                 bool finite = finite_linear(x);
                 for (const auto& p : m.vertices) finite = finite && is_finite(p);
-                if (!finite) { ++t.skipped; continue; }
-                check_case(t, m, x, [&](const mesh3& g, const X& y) { return oracle::exact_mesh(object_of(y), support::mesh_data_of(g)); },
-                           [&] { return support::shape_str(m) + " " + str(x); });
+                if (!finite) {
+                    ++t.skipped;
+                    continue;
+                }
+                check_case(
+                    t, m, x, [&](const mesh3& g, const X& y) { return oracle::exact_mesh(object_of(y), support::mesh_data_of(g)); },
+                    [&] { return support::shape_str(m) + " " + str(x); });
             }
             t.print();
             t.require();

@@ -17,10 +17,15 @@ using namespace incidence;
 using support::arr;
 
 namespace {
-std::string describe(const aabb3& a, const aabb3& b) { return "box " + support::str(a.min) + support::str(a.max) + " box " + support::str(b.min) + support::str(b.max); }
+std::string describe(const aabb3& a, const aabb3& b) {
+    return "box " + support::str(a.min) + support::str(a.max) + " box " + support::str(b.min) + support::str(b.max);
+}
 bool truth(const aabb3& a, const aabb3& b) {
     double a0[3], a1[3], b0[3], b1[3];
-    arr(a.min, a0); arr(a.max, a1); arr(b.min, b0); arr(b.max, b1);
+    arr(a.min, a0);
+    arr(a.max, a1);
+    arr(b.min, b0);
+    arr(b.max, b1);
     return oracle::box_box(a0, a1, b0, b1);
 }
 bool skip(const aabb3&, const aabb3&) { return false; }
@@ -44,11 +49,18 @@ std::pair<aabb3, aabb3> random_case(support::rng& r) {
 }
 
 // Independent cover oracle over the arrangement of breakpoints.
-struct sample { double lo, hi; }; // lo == hi: a breakpoint; lo < hi: the open cell (lo, hi)
+struct sample {
+    double lo, hi;
+}; // lo == hi: a breakpoint; lo < hi: the open cell (lo, hi)
 bool in(const sample& s, double mn, double mx) { return mn <= s.lo && s.hi <= mx; }
 bool covers_oracle(const aabb3& a, const aabb3& b, const aabb3& c) {
     double amn[3], amx[3], bmn[3], bmx[3], cmn[3], cmx[3];
-    arr(a.min, amn); arr(a.max, amx); arr(b.min, bmn); arr(b.max, bmx); arr(c.min, cmn); arr(c.max, cmx);
+    arr(a.min, amn);
+    arr(a.max, amx);
+    arr(b.min, bmn);
+    arr(b.max, bmx);
+    arr(c.min, cmn);
+    arr(c.max, cmx);
     std::vector<sample> axis[3];
     for (int i = 0; i < 3; ++i) {
         std::vector<double> v{cmn[i], cmx[i]};
@@ -74,11 +86,11 @@ bool covers_oracle(const aabb3& a, const aabb3& b, const aabb3& c) {
 
 TEST_CASE("aabb_aabb: fixtures", "[aabb_aabb]") {
     const aabb3 A{{0, 0, 0}, {1, 1, 1}};
-    CHECK(intersects(A, aabb3{{1, 1, 1}, {2, 2, 2}}));   // corner touch
-    CHECK(intersects(A, aabb3{{1, 0, 0}, {2, 1, 1}}));   // face touch
+    CHECK(intersects(A, aabb3{{1, 1, 1}, {2, 2, 2}})); // corner touch
+    CHECK(intersects(A, aabb3{{1, 0, 0}, {2, 1, 1}})); // face touch
     CHECK_FALSE(intersects(A, aabb3{{1.0000000000000002, 0, 0}, {2, 1, 1}}));
     CHECK(contains(A, A));
-    CHECK(contains(A, aabb3{{0, 0, 0}, {1, 0, 0}}));     // a flat box on an edge
+    CHECK(contains(A, aabb3{{0, 0, 0}, {1, 0, 0}})); // a flat box on an edge
     CHECK_FALSE(contains(A, aabb3{{0, 0, 0}, {1, 1, 1.0000000000000002}}));
     // the cover exercise
     CHECK(covers(aabb3{{0, 0, 0}, {1, 1, 1}}, aabb3{{1, 0, 0}, {2, 1, 1}}, aabb3{{0, 0, 0}, {2, 1, 1}}));
@@ -98,7 +110,10 @@ TEST_CASE("aabb_aabb: contains in every tier against the oracle", "[aabb_aabb][o
     for (long i = 0; i < support::cases(200000); ++i) {
         auto [a, b] = (i % 2) ? near_case(r) : random_case(r);
         double a0[3], a1[3], b0[3], b1[3];
-        arr(a.min, a0); arr(a.max, a1); arr(b.min, b0); arr(b.max, b1);
+        arr(a.min, a0);
+        arr(a.max, a1);
+        arr(b.min, b0);
+        arr(b.max, b1);
         const bool t = oracle::box_contains_box(a0, a1, b0, b1);
         ++n;
         if (contains<exact>(a, b) != t || contains<conservative>(a, b) != t || contains<aggressive>(a, b) != t ||
@@ -117,12 +132,16 @@ TEST_CASE("aabb_aabb: covers against the independent arrangement oracle", "[aabb
         const aabb3 a = box_from(r, tr, nice), b = box_from(r, tr, nice);
         // c from pieces of a and b, so that covering happens often
         aabb3 c = box_from(r, tr, nice);
-        if (r.coin()) { c.min = a.min; c.max = point3{std::max(a.max.x, b.max.x), a.max.y, a.max.z}; }
+        if (r.coin()) {
+            c.min = a.min;
+            c.max = point3{std::max(a.max.x, b.max.x), a.max.y, a.max.z};
+        }
         if (c.min.x > c.max.x) std::swap(c.min.x, c.max.x);
         ++n;
         const bool t = covers_oracle(a, b, c);
         yes += t;
-        if (covers(a, b, c) != t && ++wrong <= 5) std::printf("  covers wrong: %s c %s%s\n", describe(a, b).c_str(), support::str(c.min).c_str(), support::str(c.max).c_str());
+        if (covers(a, b, c) != t && ++wrong <= 5)
+            std::printf("  covers wrong: %s c %s%s\n", describe(a, b).c_str(), support::str(c.min).c_str(), support::str(c.max).c_str());
         if (covers(b, a, c) != t) ++wrong;
     }
     std::printf("[cases] aabb_aabb covers: %ld cases (%ld covered), %ld wrong\n", n, yes, wrong);

@@ -26,16 +26,16 @@ const double approx_bound = catalog::approximate_bound("aabb_convex_polyhedron")
 
 TEST_CASE("aabb_convex_polyhedron: fixtures", "[aabb_convex_polyhedron]") {
     CHECK(intersects(aabb3{{0.75, 0.75, 0.75}, {2, 2, 2}}, unit_cube_cut));
-    CHECK_FALSE(intersects(unit_cube_cut, aabb3{{0.875, 0.875, 0.875}, {2, 2, 2}}));  // beyond the cut
+    CHECK_FALSE(intersects(unit_cube_cut, aabb3{{0.875, 0.875, 0.875}, {2, 2, 2}})); // beyond the cut
     CHECK(intersects(aabb3{{0.5, 1, 1}, {2, 2, 2}}, unit_cube_cut));                 // touches at (1/2, 1, 1) alone
     CHECK_FALSE(intersects(aabb3{{0x1.0000000000001p-1, 1, 1}, {2, 2, 2}}, unit_cube_cut));
-    CHECK(intersects(aabb3{{1, -1, -1}, {3, 2, 2}}, unit_cube_cut));                 // along the face x = 1
-    CHECK_FALSE(intersects(aabb3{{-1, 0, 0.5}, {1, 1, 1}}, roof));                   // no single plane separates
-    CHECK(intersects(aabb3{{-1, 0, 0}, {1, 1, 1}}, roof));                          // touches along the ridge
+    CHECK(intersects(aabb3{{1, -1, -1}, {3, 2, 2}}, unit_cube_cut)); // along the face x = 1
+    CHECK_FALSE(intersects(aabb3{{-1, 0, 0.5}, {1, 1, 1}}, roof));   // no single plane separates
+    CHECK(intersects(aabb3{{-1, 0, 0}, {1, 1, 1}}, roof));           // touches along the ridge
     CHECK_FALSE(intersects(aabb3{{-5, -5, -5}, {5, 5, 5}}, empty_slab));
     CHECK(intersects(aabb3{{-5, -5, -5}, {0, 5, 5}}, half_space));
     CHECK_FALSE(intersects(aabb3{{0x1p-1074, -5, -5}, {1, 5, 5}}, half_space));
-    CHECK_FALSE(intersects(aabb3{{1, 1, 1}, {0, 0, 0}}, unit_cube_cut));            // inverted: empty
+    CHECK_FALSE(intersects(aabb3{{1, 1, 1}, {0, 0, 0}}, unit_cube_cut)); // inverted: empty
     CHECK(contains(unit_cube_cut, aabb3{{0, 0, 0}, {1, 1, 0.5}}));
     CHECK_FALSE(contains(unit_cube_cut, aabb3{{0, 0, 0}, {1, 1, 0x1.0000000000001p-1}}));
     CHECK_FALSE(contains(unit_cube_cut, aabb3{{1, 1, 1}, {0, 0, 0}}));

@@ -37,8 +37,8 @@ TEST_CASE("aabb_frustum: fixtures", "[aabb_frustum]") {
     CHECK(method::aabb_frustum_culling(beside, integer_frustum));
     CHECK_FALSE(method::aabb_frustum_sat(beside, integer_frustum)); // an edge-cross-axis separates it
     CHECK(method::aabb_frustum_sat(aabb3{{4, 4, 4}, {5, 5, 5}}, integer_frustum));
-    CHECK_FALSE(method::aabb_frustum_decomposition(beside, integer_frustum)); // no tetrahedron meets it
-    CHECK(method::aabb_frustum_decomposition(aabb3{{4, 4, 4}, {5, 5, 5}}, integer_frustum)); // the far corner
+    CHECK_FALSE(method::aabb_frustum_decomposition(beside, integer_frustum));                          // no tetrahedron meets it
+    CHECK(method::aabb_frustum_decomposition(aabb3{{4, 4, 4}, {5, 5, 5}}, integer_frustum));           // the far corner
     CHECK(method::aabb_frustum_decomposition(aabb3{{-0.5, -0.5, 2}, {0.5, 0.5, 3}}, integer_frustum)); // inside
     CHECK(method::aabb_frustum_decomposition(aabb3{{-1, -1, -200}, {1, 1, -50}}, camera));
     CHECK_FALSE(method::aabb_frustum_decomposition(aabb3{{-1, -1, -0.5}, {1, 1, 0}}, camera)); // before the near plane
@@ -58,7 +58,8 @@ TEST_CASE("aabb_frustum: rewrites of both shapes and exact translations give the
 TEST_CASE("aabb_frustum: contains", "[aabb_frustum][oracle]") {
     support::halfspace_contains_oracle<frustum3, aabb3>("aabb_frustum", support::cases(2000), approx_bound);
 }
-TEST_CASE("aabb_frustum: the culling, separating-axis and decomposition tests' wrong answers, counted against the exact tier", "[aabb_frustum]") {
+TEST_CASE("aabb_frustum: the culling, separating-axis and decomposition tests' wrong answers, counted against the exact tier",
+          "[aabb_frustum]") {
     support::rng r(support::seed() + 5);
     long n = 0, yes = 0, culling_yes_wrongly = 0, culling_no_wrongly = 0, sat_wrong[2] = {0, 0}, split_wrong[2] = {0, 0};
     for (long i = 0; i < support::cases(20000); ++i) {
@@ -72,9 +73,10 @@ TEST_CASE("aabb_frustum: the culling, separating-axis and decomposition tests' w
         sat_wrong[i % 2] += method::aabb_frustum_sat(c->second, c->first) != e;
         split_wrong[i % 2] += method::aabb_frustum_decomposition(c->second, c->first) != e;
     }
-    std::printf("[cases] aabb_frustum culling test: %ld cases, %ld meet; culling says yes for %ld that miss, no for %ld that meet\n", n, yes,
-                culling_yes_wrongly, culling_no_wrongly);
-    std::printf("[cases] aabb_frustum separating axes in double: wrong on %ld random and %ld near-degenerate cases\n", sat_wrong[0], sat_wrong[1]);
+    std::printf("[cases] aabb_frustum culling test: %ld cases, %ld meet; culling says yes for %ld that miss, no for %ld that meet\n", n,
+                yes, culling_yes_wrongly, culling_no_wrongly);
+    std::printf("[cases] aabb_frustum separating axes in double: wrong on %ld random and %ld near-degenerate cases\n", sat_wrong[0],
+                sat_wrong[1]);
     std::printf("[cases] aabb_frustum six tetrahedra in double: wrong on %ld random and %ld near-degenerate cases\n", split_wrong[0],
                 split_wrong[1]);
     CHECK(yes > 0);

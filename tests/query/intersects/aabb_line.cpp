@@ -22,7 +22,10 @@ std::string describe(const aabb3& b, const line3& l) {
 }
 bool truth(const aabb3& b, const line3& l) {
     double p[3], d[3], mn[3], mx[3];
-    arr(l.origin, p); arr(l.direction, d); arr(b.min, mn); arr(b.max, mx);
+    arr(l.origin, p);
+    arr(l.direction, d);
+    arr(b.min, mn);
+    arr(b.max, mx);
     return oracle::box_line(mn, mx, p, d);
 }
 bool skip(const aabb3&, const line3& l) { return l.direction == vec3{0, 0, 0}; }
@@ -39,12 +42,12 @@ std::pair<aabb3, line3> random_case(support::rng& r) {
 TEST_CASE("aabb_line: fixtures (closed box, touching counts)", "[aabb_line]") {
     const aabb3 B{{0, 0, 0}, {1, 1, 1}};
     CHECK(intersects(B, line3{{-5, 0.5, 0.5}, {1, 0, 0}}));
-    CHECK(intersects(B, line3{{5, 0.5, 0.5}, {1, 0, 0}}));                  // behind the origin counts
-    CHECK(intersects(B, line3{{2, 1, 0}, {-1, -1, 0}}));                    // touching the edge x = 1, y = 0
+    CHECK(intersects(B, line3{{5, 0.5, 0.5}, {1, 0, 0}})); // behind the origin counts
+    CHECK(intersects(B, line3{{2, 1, 0}, {-1, -1, 0}}));   // touching the edge x = 1, y = 0
     CHECK_FALSE(intersects(B, line3{{2.0000000000000004, 1, 0}, {-1, -1, 0}}));
-    CHECK(intersects(B, line3{{-1, 1, 1}, {1, 0, 0}}));                     // along an edge
+    CHECK(intersects(B, line3{{-1, 1, 1}, {1, 0, 0}})); // along an edge
     CHECK_FALSE(intersects(B, line3{{-1, 1.0000000000000002, 1}, {1, 0, 0}}));
-    CHECK(intersects(line3{{3, 3, 3}, {1, 1, 1}}, B));                      // reversed order, the diagonal
+    CHECK(intersects(line3{{3, 3, 3}, {1, 1, 1}}, B)); // reversed order, the diagonal
     CHECK(method::aabb_line_slab(B, line3{{5, 0.5, 0.5}, {1, 0, 0}}));
     // In the plane x = 0 of a face of [0,1]x[1,2]x[0,1], parallel to it, missing the box: y reaches 1
     // at t = 1 + 4 ulps, z leaves the box at t = 1. CGAL 5.5's do_intersect(Line_3, Iso_cuboid_3)

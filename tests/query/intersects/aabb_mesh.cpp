@@ -118,8 +118,9 @@ TEST_CASE("aabb_mesh: contains, fixtures", "[aabb_mesh]") {
     CHECK_FALSE(contains(cube, aabb3{{0.25, 0.25, std::nan("")}, {0.75, 0.75, 0.75}}));
     CHECK_FALSE(contains(cube, aabb3{{0.25, 0.25, 0.25}, {0.75, 0.75, INFINITY}}));
     CHECK_FALSE(contains(mesh3{}, aabb3{{0, 0, 0}, {1, 1, 1}}));
-    const std::array<point3, 7> seven{support::cube_vertices[0], support::cube_vertices[1], support::cube_vertices[2], support::cube_vertices[3],
-                                      support::cube_vertices[4], support::cube_vertices[5], support::cube_vertices[6]};
+    const std::array<point3, 7> seven{support::cube_vertices[0], support::cube_vertices[1], support::cube_vertices[2],
+                                      support::cube_vertices[3], support::cube_vertices[4], support::cube_vertices[5],
+                                      support::cube_vertices[6]};
     CHECK_FALSE(contains(mesh3{seven, support::cube_triangles}, aabb3{{0.25, 0.25, 0.25}, {0.5, 0.5, 0.5}})); // an index out of range
 }
 TEST_CASE("aabb_mesh: contains on glued, hollow and overlapping surfaces", "[aabb_mesh]") {
@@ -136,7 +137,7 @@ TEST_CASE("aabb_mesh: contains on glued, hollow and overlapping surfaces", "[aab
     // the upper cube moved by half along x: the square covered twice is [0.5, 1] x [0, 1]
     const two_cubes shifted(0.5, 1, false);
     CHECK(contains(shifted.view(), aabb3{{0.5, 0, 0.5}, {1, 1, 1.5}}));
-    CHECK_FALSE(contains(shifted.view(), aabb3{{0.25, 0, 0.5}, {1, 1, 1.5}})); // x < 0.5, z > 1 is outside
+    CHECK_FALSE(contains(shifted.view(), aabb3{{0.25, 0, 0.5}, {1, 1, 1.5}}));   // x < 0.5, z > 1 is outside
     CHECK_FALSE(contains(shifted.view(), aabb3{{0.5, 0, 0.5}, {1.25, 1, 1.5}})); // x > 1, z < 1 is outside
     CHECK(contains(shifted.view(), aabb3{{0.5, 0, 1}, {1, 1, 1}}));
     CHECK(contains(shifted.view(), aabb3{{0.25, 0, 1}, {1, 1, 1}})); // on the lower cube's top face, then on both
@@ -150,7 +151,7 @@ TEST_CASE("aabb_mesh: contains on glued, hollow and overlapping surfaces", "[aab
     const hollow_cube hollow;
     CHECK_FALSE(contains(hollow.view(), aabb3{{0, 0, 0}, {3, 3, 3}}));
     CHECK_FALSE(contains(hollow.view(), aabb3{{0.5, 0.5, 0.5}, {2.5, 2.5, 2.5}})); // the cavity wholly inside the box
-    CHECK(contains(hollow.view(), aabb3{{0, 0, 0}, {3, 3, 1}}));                  // up to the cavity's floor
+    CHECK(contains(hollow.view(), aabb3{{0, 0, 0}, {3, 3, 1}}));                   // up to the cavity's floor
     CHECK_FALSE(contains(hollow.view(), aabb3{{0, 0, 0}, {3, 3, 1.5}}));
     CHECK(contains(hollow.view(), aabb3{{0, 0, 0}, {1, 3, 3}}));
     CHECK_FALSE(contains(hollow.view(), aabb3{{1.25, 1.25, 1.25}, {1.75, 1.75, 1.75}})); // in the cavity
@@ -193,17 +194,20 @@ TEST_CASE("aabb_mesh: contains, the box split in two, rewritten meshes and exact
     long checked = 0, bad = 0, yes = 0;
     auto same = [&](bool x, bool e, const mesh3& m, const aabb3& b, const char* how) {
         ++checked;
-        if (x != e && ++bad <= 5) std::printf("  aabb_mesh contains, %s differs: %s %s\n", how, support::shape_str(m).c_str(), support::shape_str(b).c_str());
+        if (x != e && ++bad <= 5)
+            std::printf("  aabb_mesh contains, %s differs: %s %s\n", how, support::shape_str(m).c_str(), support::shape_str(b).c_str());
     };
     for (long i = 0; i < support::cases(6000); ++i) {
         const int kind = static_cast<int>(i % 3);
-        const aabb3 b = kind == 0 ? support::box_in_mesh_near(r, store) : (kind == 1 ? support::box_in_mesh_random(r, store) : support::box_in_blocks(r, store));
+        const aabb3 b = kind == 0 ? support::box_in_mesh_near(r, store)
+                                  : (kind == 1 ? support::box_in_mesh_random(r, store) : support::box_in_blocks(r, store));
         const mesh3 m = store.view();
         const bool e = contains(m, b);
         yes += e;
         // split at a double strictly between the bounds of an axis that has one
         for (int axis = 0; axis < 3; ++axis) {
-            const double lo = axis == 0 ? b.min.x : (axis == 1 ? b.min.y : b.min.z), hi = axis == 0 ? b.max.x : (axis == 1 ? b.max.y : b.max.z);
+            const double lo = axis == 0 ? b.min.x : (axis == 1 ? b.min.y : b.min.z),
+                         hi = axis == 0 ? b.max.x : (axis == 1 ? b.max.y : b.max.z);
             const double mid = lo + (hi - lo) * (r.uniform(0.125, 0.875));
             if (!(lo < mid && mid < hi)) continue;
             aabb3 b1 = b, b2 = b;
@@ -214,7 +218,8 @@ TEST_CASE("aabb_mesh: contains, the box split in two, rewritten meshes and exact
         }
         for (int how = 0; how < 2; ++how) { // every triangle rotated; every triangle reversed
             rewritten = store;
-            for (auto& t : rewritten.t) t = how == 0 ? std::array<std::uint32_t, 3>{t[1], t[2], t[0]} : std::array<std::uint32_t, 3>{t[0], t[2], t[1]};
+            for (auto& t : rewritten.t)
+                t = how == 0 ? std::array<std::uint32_t, 3>{t[1], t[2], t[0]} : std::array<std::uint32_t, 3>{t[0], t[2], t[1]};
             same(contains(rewritten.view(), b), e, m, b, how == 0 ? "rotated" : "reversed");
         }
         const vec3 v{std::ldexp(double(r.integer(-64, 64)), r.integer(-4, 20)), std::ldexp(double(r.integer(-64, 64)), r.integer(-4, 20)),
@@ -229,7 +234,8 @@ TEST_CASE("aabb_mesh: contains, the box split in two, rewritten meshes and exact
         const auto bt = support::translated(b, v);
         if (exact_move && bt) same(contains(rewritten.view(), *bt), e, m, b, "translated");
     }
-    std::printf("[cases] aabb_mesh contains, split boxes, rewrites and exact translations: %ld checked (%ld contained), %ld differ\n", checked, yes, bad);
+    std::printf("[cases] aabb_mesh contains, split boxes, rewrites and exact translations: %ld checked (%ld contained), %ld differ\n",
+                checked, yes, bad);
     CHECK(bad == 0);
     CHECK(yes > 0);
 }

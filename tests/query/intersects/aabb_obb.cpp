@@ -35,8 +35,9 @@ TEST_CASE("aabb_obb: fixtures", "[aabb_obb]") {
     CHECK(intersects(B, D)); // D's corner (1, 0.5, 0.5) on the face x = 1
     CHECK_FALSE(intersects(B, obb3{{3.0000000000000004, 0.5, 0.5}, D.axes, D.half_extents}));
     CHECK(intersects(D, B));
-    CHECK(intersects(aabb3{{1, 1, 1}, {1, 1, 1}}, obb3{{2, 2, 2}, {vec3{1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1}}, {1, 1, 1}})); // a point box at a corner
-    CHECK_FALSE(intersects(aabb3{{1, 1, 1}, {0, 0, 0}}, D)); // inverted box: empty
+    CHECK(intersects(aabb3{{1, 1, 1}, {1, 1, 1}},
+                     obb3{{2, 2, 2}, {vec3{1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1}}, {1, 1, 1}})); // a point box at a corner
+    CHECK_FALSE(intersects(aabb3{{1, 1, 1}, {0, 0, 0}}, D));                                      // inverted box: empty
 }
 TEST_CASE("aabb_obb: oracle", "[aabb_obb][oracle]") {
     support::run_obb_pair<aabb3, obb3>("aabb_obb", support::cases(20000), approx_bound, near_case, random_case);
@@ -46,14 +47,18 @@ TEST_CASE("aabb_obb: rewritten shapes give the same answer", "[aabb_obb]") {
 }
 
 TEST_CASE("aabb_obb: contains(aabb, obb)", "[aabb_obb][oracle]") {
-    support::contains_oracle<aabb3, obb3>("aabb_obb (aabb around obb)", support::cases(10000), approx_bound,
-                                     [](support::rng& r) { return support::obb_case<aabb3, obb3>::random(r); },
-                                     support::aabb_holding_obb);
+    support::contains_oracle<aabb3, obb3>(
+        "aabb_obb (aabb around obb)", support::cases(10000), approx_bound,
+        [](support::rng& r) { return support::obb_case<aabb3, obb3>::random(r); }, support::aabb_holding_obb);
 }
 TEST_CASE("aabb_obb: contains(obb, aabb)", "[aabb_obb][oracle]") {
-    support::contains_oracle<obb3, aabb3>("aabb_obb (obb around aabb)", support::cases(10000), approx_bound,
-                                     [](support::rng& r) { const auto [a, b] = support::obb_case<aabb3, obb3>::random(r); return std::pair{b, a}; },
-                                     support::obb_holding<aabb3>);
+    support::contains_oracle<obb3, aabb3>(
+        "aabb_obb (obb around aabb)", support::cases(10000), approx_bound,
+        [](support::rng& r) {
+            const auto [a, b] = support::obb_case<aabb3, obb3>::random(r);
+            return std::pair{b, a};
+        },
+        support::obb_holding<aabb3>);
 }
 
 } // namespace test_query_aabb_obb

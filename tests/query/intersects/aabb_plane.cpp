@@ -22,7 +22,9 @@ std::string describe(const aabb3& b, const plane3& p) {
 }
 bool truth(const aabb3& b, const plane3& p) {
     double mn[3], mx[3], n[3];
-    arr(b.min, mn); arr(b.max, mx); arr(p.normal, n);
+    arr(b.min, mn);
+    arr(b.max, mx);
+    arr(p.normal, n);
     return oracle::box_plane(mn, mx, n, p.offset);
 }
 bool skip(const aabb3&, const plane3& p) { return p.normal == vec3{0, 0, 0}; }
@@ -43,13 +45,13 @@ std::pair<aabb3, plane3> random_case(support::rng& r) {
 TEST_CASE("aabb_plane: fixtures", "[aabb_plane]") {
     const aabb3 B{{0, 0, 0}, {1, 1, 1}};
     CHECK(intersects(B, plane3{{1, 1, 1}, 1.5}));
-    CHECK(intersects(B, plane3{{1, 1, 1}, 3}));                       // touching the corner (1,1,1)
+    CHECK(intersects(B, plane3{{1, 1, 1}, 3})); // touching the corner (1,1,1)
     CHECK_FALSE(intersects(B, plane3{{1, 1, 1}, 3.0000000000000004}));
-    CHECK(intersects(B, plane3{{0, 0, 1}, 0}));                       // the bottom face
-    CHECK(intersects(plane3{{1, -1, 0}, 1}, B));                      // reversed order, the edge x = 1, y = 0
+    CHECK(intersects(B, plane3{{0, 0, 1}, 0}));  // the bottom face
+    CHECK(intersects(plane3{{1, -1, 0}, 1}, B)); // reversed order, the edge x = 1, y = 0
     CHECK_FALSE(intersects(B, plane3{{1, -1, 0}, 1.0000000000000002}));
-    CHECK(intersects(B, plane3{{0, 0, 0}, 0}));                       // zero normal, offset 0: everything
-    CHECK_FALSE(intersects(B, plane3{{0, 0, 0}, 1}));                 // zero normal: nothing
+    CHECK(intersects(B, plane3{{0, 0, 0}, 0}));       // zero normal, offset 0: everything
+    CHECK_FALSE(intersects(B, plane3{{0, 0, 0}, 1})); // zero normal: nothing
 }
 TEST_CASE("aabb_plane: oracle, random", "[aabb_plane][oracle]") {
     support::run_oracle("aabb_plane random", support::cases(100000), approx_bound, random_case, truth, skip, describe);

@@ -14,10 +14,14 @@ using namespace incidence;
 using support::arr;
 
 namespace {
-std::string describe(const aabb3& b, const point3& p) { return "box " + support::str(b.min) + support::str(b.max) + " point " + support::str(p); }
+std::string describe(const aabb3& b, const point3& p) {
+    return "box " + support::str(b.min) + support::str(b.max) + " point " + support::str(p);
+}
 bool truth(const aabb3& b, const point3& p) {
     double a[3], mn[3], mx[3];
-    arr(p, a); arr(b.min, mn); arr(b.max, mx);
+    arr(p, a);
+    arr(b.min, mn);
+    arr(b.max, mx);
     return oracle::point_in_box(a, mn, mx);
 }
 bool skip(const aabb3&, const point3&) { return false; }
@@ -38,7 +42,8 @@ std::pair<aabb3, point3> random_case(support::rng& r) {
     support::transform tr = support::random_transform(r, false);
     auto c = [&](int i) { return support::random_coord(r, tr, i); };
     double a[3] = {c(0), c(1), c(2)}, b[3] = {c(0), c(1), c(2)};
-    for (int i = 0; i < 3; ++i) if (a[i] > b[i]) std::swap(a[i], b[i]);
+    for (int i = 0; i < 3; ++i)
+        if (a[i] > b[i]) std::swap(a[i], b[i]);
     return {aabb3{{a[0], a[1], a[2]}, {b[0], b[1], b[2]}}, point3{c(0), c(1), c(2)}};
 }
 } // namespace
@@ -67,7 +72,9 @@ TEST_CASE("aabb_point: distances are correctly rounded (exact) and enclosed (int
     for (long i = 0; i < support::cases(100000); ++i) {
         auto [b, p] = (i % 2) ? near_case(r) : random_case(r);
         double a[3], mn[3], mx[3];
-        arr(p, a); arr(b.min, mn); arr(b.max, mx);
+        arr(p, a);
+        arr(b.min, mn);
+        arr(b.max, mx);
         for (bool far : {false, true}) {
             ++n;
             const double e = far ? max_squared_distance(b, p) : squared_distance(b, p);
@@ -81,8 +88,9 @@ TEST_CASE("aabb_point: distances are correctly rounded (exact) and enclosed (int
             if (std::isfinite(ap) && std::fabs(ap - e) > g4 * e * (1 + 0x1p-20) + 0x1p-1070 + std::fabs(e) * 0x1p-53) ++approx_bad;
         }
     }
-    std::printf("[cases] aabb_point distances: %ld; exact not correctly rounded %ld; intervals not enclosing %ld; approximate outside bound %ld\n",
-                n, bad, not_enclosed, approx_bad);
+    std::printf(
+        "[cases] aabb_point distances: %ld; exact not correctly rounded %ld; intervals not enclosing %ld; approximate outside bound %ld\n",
+        n, bad, not_enclosed, approx_bad);
     CHECK(bad == 0);
     CHECK(not_enclosed == 0);
     CHECK(approx_bad == 0);

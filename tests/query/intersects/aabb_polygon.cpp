@@ -39,7 +39,7 @@ TEST_CASE("aabb_polygon: fixtures", "[aabb_polygon]") {
     CHECK_FALSE(intersects(aabb3{{1.5, 1.5, 0}, {2.5, 2.5, 2}}, holed));
     CHECK(intersects(aabb3{{0.25, 0.25, 0}, {0.75, 0.75, 2}}, holed));
     CHECK_FALSE(intersects(holed, aabb3{{0.25, 0.25, 0x1.0000000000001p0}, {0.75, 0.75, 2}}));
-    CHECK(intersects(aabb3{{1, 1, 0}, {3, 3, 2}}, holed)); // its side faces along the hole's edges
+    CHECK(intersects(aabb3{{1, 1, 0}, {3, 3, 2}}, holed));       // its side faces along the hole's edges
     CHECK_FALSE(intersects(aabb3{{1, 1, 0}, {0, 0, 2}}, holed)); // inverted: empty
 }
 TEST_CASE("aabb_polygon: oracle, random and near-degenerate", "[aabb_polygon][oracle]") {

@@ -21,7 +21,10 @@ std::string describe(const aabb3& b, const ray3& r) {
 }
 bool truth(const aabb3& b, const ray3& r) {
     double o[3], d[3], mn[3], mx[3];
-    arr(r.origin, o); arr(r.direction, d); arr(b.min, mn); arr(b.max, mx);
+    arr(r.origin, o);
+    arr(r.direction, d);
+    arr(b.min, mn);
+    arr(b.max, mx);
     return oracle::ray_box(o, d, mn, mx);
 }
 bool skip(const aabb3&, const ray3& r) { return r.direction == vec3{0, 0, 0}; }
@@ -47,7 +50,8 @@ std::pair<aabb3, ray3> near_case(support::rng& r) {
         if (r.integer(0, 9) == 0) D[i] = -D[i];
     }
     support::transform tr = support::random_transform(r, true);
-    const aabb3 b{{tr.apply(lo[0], 0), tr.apply(lo[1], 1), tr.apply(lo[2], 2)}, {tr.apply(hi[0], 0), tr.apply(hi[1], 1), tr.apply(hi[2], 2)}};
+    const aabb3 b{{tr.apply(lo[0], 0), tr.apply(lo[1], 1), tr.apply(lo[2], 2)},
+                  {tr.apply(hi[0], 0), tr.apply(hi[1], 1), tr.apply(hi[2], 2)}};
     aabb3 fixed = b; // nudges may invert a flat box: keep min <= max
     fixed = support::ordered(fixed);
     return {fixed, ray3{{tr.apply(O[0], 0), tr.apply(O[1], 1), tr.apply(O[2], 2)}, {tr.dir(D[0]), tr.dir(D[1]), tr.dir(D[2])}}};
@@ -56,7 +60,8 @@ std::pair<aabb3, ray3> random_case(support::rng& r) {
     support::transform tr = support::random_transform(r, false);
     auto c = [&](int i) { return support::random_coord(r, tr, i); };
     double a[3] = {c(0), c(1), c(2)}, b[3] = {c(0), c(1), c(2)};
-    for (int i = 0; i < 3; ++i) if (a[i] > b[i]) std::swap(a[i], b[i]);
+    for (int i = 0; i < 3; ++i)
+        if (a[i] > b[i]) std::swap(a[i], b[i]);
     const point3 o{c(0), c(1), c(2)};
     const vec3 d{tr.scale_only(r.uniform(-1, 1)), tr.scale_only(r.uniform(-1, 1)), tr.scale_only(r.uniform(-1, 1))};
     return {aabb3{{a[0], a[1], a[2]}, {b[0], b[1], b[2]}}, ray3{o, d}};
@@ -66,14 +71,14 @@ std::pair<aabb3, ray3> random_case(support::rng& r) {
 TEST_CASE("aabb_ray: fixtures (closed box, grazing counts)", "[aabb_ray]") {
     const aabb3 B{{0, 0, 0}, {1, 1, 1}};
     CHECK(intersects(B, ray3{{-1, 0.5, 0.5}, {1, 0, 0}}));
-    CHECK(intersects(B, ray3{{-1, 1, 0.5}, {1, 0, 0}}));    // along a face
-    CHECK(intersects(B, ray3{{-1, 1, 1}, {1, 0, 0}}));      // along an edge
-    CHECK(intersects(B, ray3{{-1, -1, -1}, {1, 1, 1}}));    // through corners
-    CHECK(intersects(B, ray3{{2, 1, 0}, {-1, -1, 0}}));     // touching only the edge x = 1, y = 0
+    CHECK(intersects(B, ray3{{-1, 1, 0.5}, {1, 0, 0}})); // along a face
+    CHECK(intersects(B, ray3{{-1, 1, 1}, {1, 0, 0}}));   // along an edge
+    CHECK(intersects(B, ray3{{-1, -1, -1}, {1, 1, 1}})); // through corners
+    CHECK(intersects(B, ray3{{2, 1, 0}, {-1, -1, 0}}));  // touching only the edge x = 1, y = 0
     CHECK_FALSE(intersects(B, ray3{{2.0000000000000004, 1, 0}, {-1, -1, 0}}));
     CHECK_FALSE(intersects(B, ray3{{-1, 0.5, 0.5}, {-1, 0, 0}}));
-    CHECK(intersects(B, ray3{{0.5, 0.5, 0.5}, {0, 0, 0}}));  // zero direction: the origin point
-    CHECK(intersects(ray3{{-1, 0.5, 0.5}, {1, 0, 0}}, B));   // reversed order
+    CHECK(intersects(B, ray3{{0.5, 0.5, 0.5}, {0, 0, 0}})); // zero direction: the origin point
+    CHECK(intersects(ray3{{-1, 0.5, 0.5}, {1, 0, 0}}, B));  // reversed order
     const auto h = intersection(B, ray3{{-1, 0.5, 0.5}, {2, 0, 0}});
     REQUIRE(h);
     CHECK(h->t_enter == 0.5);
@@ -87,15 +92,19 @@ TEST_CASE("aabb_ray: oracle, near-degenerate", "[aabb_ray][oracle]") {
     support::run_oracle("aabb_ray near-degenerate", support::cases(100000), approx_bound, near_case, truth, skip, describe);
 }
 TEST_CASE("aabb_ray: exact t_enter and t_exit are correctly rounded", "[aabb_ray]") {
-    support::run_values("aabb_ray exact t", support::cases(50000), 3, near_case, random_case,
-                        [](const aabb3& b, const ray3& ray) -> std::optional<bool> {
-                            const auto h = intersection(b, ray);
-                            if (!h) return std::nullopt;
-                            double o[3], d[3], mn[3], mx[3];
-                            arr(ray.origin, o); arr(ray.direction, d); arr(b.min, mn); arr(b.max, mx);
-                            return oracle::is_rounded_ray_box_t(o, d, mn, mx, h->t_enter, h->t_exit);
-                        },
-                        describe);
+    support::run_values(
+        "aabb_ray exact t", support::cases(50000), 3, near_case, random_case,
+        [](const aabb3& b, const ray3& ray) -> std::optional<bool> {
+            const auto h = intersection(b, ray);
+            if (!h) return std::nullopt;
+            double o[3], d[3], mn[3], mx[3];
+            arr(ray.origin, o);
+            arr(ray.direction, d);
+            arr(b.min, mn);
+            arr(b.max, mx);
+            return oracle::is_rounded_ray_box_t(o, d, mn, mx, h->t_enter, h->t_exit);
+        },
+        describe);
 }
 TEST_CASE("aabb_ray: Woo's method against the oracle (independent second algorithm)", "[aabb_ray][oracle]") {
     support::rng r(support::seed() + 4);
@@ -117,7 +126,8 @@ TEST_CASE("aabb_ray: Woo's method against the oracle (independent second algorit
                 for (int corner = 0; corner < 4; ++corner) {
                     double p[3], q[3];
                     const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-                    p[axis] = lo[axis]; q[axis] = hi[axis];
+                    p[axis] = lo[axis];
+                    q[axis] = hi[axis];
                     p[u] = q[u] = (corner & 1) ? hi[u] : lo[u];
                     p[v] = q[v] = (corner & 2) ? hi[v] : lo[v];
                     const point3 P{p[0], p[1], p[2]}, Q{q[0], q[1], q[2]};
@@ -133,7 +143,6 @@ TEST_CASE("aabb_ray: Woo's method against the oracle (independent second algorit
     std::printf("[cases] aabb_ray Woo: %ld cases, %ld wrong, %ld outside the stated bound\n", n, wrong, outside);
     CHECK(outside == 0);
 }
-
 
 namespace {
 // A direction component far from scale 1 (2^+-900, subnormal, zero), or a coordinate that is not

@@ -27,7 +27,10 @@ std::string describe(const aabb3& b, const segment3& s) {
 }
 bool truth(const aabb3& b, const segment3& s) {
     double p[3], q[3], mn[3], mx[3];
-    arr(s.a, p); arr(s.b, q); arr(b.min, mn); arr(b.max, mx);
+    arr(s.a, p);
+    arr(s.b, q);
+    arr(b.min, mn);
+    arr(b.max, mx);
     return oracle::box_segment(mn, mx, p, q);
 }
 bool skip(const aabb3&, const segment3&) { return false; }
@@ -45,13 +48,13 @@ std::pair<aabb3, segment3> random_case(support::rng& r) {
 TEST_CASE("aabb_segment: fixtures (closed box, touching counts)", "[aabb_segment]") {
     const aabb3 B{{0, 0, 0}, {1, 1, 1}};
     CHECK(intersects(B, segment3{{-1, 0.5, 0.5}, {0.5, 0.5, 0.5}}));
-    CHECK(intersects(B, segment3{{-1, 0.5, 0.5}, {0, 0.5, 0.5}}));             // ends on a face
+    CHECK(intersects(B, segment3{{-1, 0.5, 0.5}, {0, 0.5, 0.5}}));                // ends on a face
     CHECK_FALSE(intersects(B, segment3{{-1, 0.5, 0.5}, {-0x1p-1074, 0.5, 0.5}})); // one subnormal short
-    CHECK(intersects(B, segment3{{2, 1, 0}, {0, -1, 0}}));                    // touching the edge x = 1, y = 0
+    CHECK(intersects(B, segment3{{2, 1, 0}, {0, -1, 0}}));                        // touching the edge x = 1, y = 0
     CHECK_FALSE(intersects(B, segment3{{2.0000000000000004, 1, 0}, {0, -1.0000000000000002, 0}}));
-    CHECK(intersects(B, segment3{{0.5, 0.5, 0.5}, {0.5, 0.5, 0.5}}));         // a point segment inside
-    CHECK_FALSE(intersects(B, segment3{{2, 2, 2}, {3, 3, 3}}));               // on the diagonal's line, beyond
-    CHECK(intersects(segment3{{3, 3, 3}, {1, 1, 1}}, B));                     // reversed order, at the corner
+    CHECK(intersects(B, segment3{{0.5, 0.5, 0.5}, {0.5, 0.5, 0.5}})); // a point segment inside
+    CHECK_FALSE(intersects(B, segment3{{2, 2, 2}, {3, 3, 3}}));       // on the diagonal's line, beyond
+    CHECK(intersects(segment3{{3, 3, 3}, {1, 1, 1}}, B));             // reversed order, at the corner
     CHECK(method::aabb_segment_slab(B, segment3{{-1, 0.5, 0.5}, {0.5, 0.5, 0.5}}));
 }
 TEST_CASE("aabb_segment: oracle, random", "[aabb_segment][oracle]") {
@@ -73,9 +76,13 @@ TEST_CASE("aabb_segment: reversed end points give the same answer", "[aabb_segme
 }
 
 TEST_CASE("aabb_segment: contains(aabb, segment)", "[aabb_segment][oracle]") {
-    support::contains_oracle<aabb3, segment3>("aabb_segment (aabb around segment)", support::cases(10000), approx_bound,
-                                     [](support::rng& r) { const auto tr = support::random_transform(r, false); return std::pair{support::random_aabb(r, tr), segment3{support::random_point(r, tr), support::random_point(r, tr)}}; },
-                                     support::aabb_holding<segment3>, true);
+    support::contains_oracle<aabb3, segment3>(
+        "aabb_segment (aabb around segment)", support::cases(10000), approx_bound,
+        [](support::rng& r) {
+            const auto tr = support::random_transform(r, false);
+            return std::pair{support::random_aabb(r, tr), segment3{support::random_point(r, tr), support::random_point(r, tr)}};
+        },
+        support::aabb_holding<segment3>, true);
 }
 
 } // namespace test_query_aabb_segment

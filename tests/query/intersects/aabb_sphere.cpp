@@ -29,17 +29,17 @@ std::pair<aabb3, sphere3> random_case(support::rng& r) {
 
 TEST_CASE("aabb_sphere: fixtures", "[aabb_sphere]") {
     const aabb3 B{{0, 0, 0}, {1, 1, 1}};
-    CHECK(intersects(B, sphere3{{2, 0.5, 0.5}, 1}));                        // touches the face x = 1
+    CHECK(intersects(B, sphere3{{2, 0.5, 0.5}, 1}));                          // touches the face x = 1
     CHECK_FALSE(intersects(B, sphere3{{2, 0.5, 0.5}, 0x1.fffffffffffffp-1})); // one ulp short
-    CHECK(intersects(B, sphere3{{4, 5, 0.5}, 5}));                          // touches the edge x = y = 1: 3-4-5
+    CHECK(intersects(B, sphere3{{4, 5, 0.5}, 5}));                            // touches the edge x = y = 1: 3-4-5
     CHECK_FALSE(intersects(B, sphere3{{4, 5, 0.5}, 0x1.3ffffffffffffp+2}));
-    CHECK(intersects(B, sphere3{{2, 3, 3}, 3}));                            // touches the corner (1, 1, 1): 1-2-2-3
+    CHECK(intersects(B, sphere3{{2, 3, 3}, 3})); // touches the corner (1, 1, 1): 1-2-2-3
     CHECK(intersects(sphere3{{2, 3, 3}, 3}, B));
-    CHECK(contains(B, sphere3{{0.5, 0.5, 0.5}, 0.5}));                      // tangent to all six faces
+    CHECK(contains(B, sphere3{{0.5, 0.5, 0.5}, 0.5})); // tangent to all six faces
     CHECK_FALSE(contains(B, sphere3{{0.5, 0.5, 0.5}, 0x1.0000000000001p-1}));
-    CHECK(contains(sphere3{{0, 0, 0}, 3}, aabb3{{-1, -2, -2}, {1, 2, 2}}));  // corners on the sphere
+    CHECK(contains(sphere3{{0, 0, 0}, 3}, aabb3{{-1, -2, -2}, {1, 2, 2}})); // corners on the sphere
     CHECK_FALSE(contains(sphere3{{0, 0, 0}, 3}, aabb3{{-1, -2, -2}, {1, 2, 0x1.0000000000001p+1}}));
-    CHECK(contains(sphere3{{0, 0, 0}, -3}, aabb3{{-1, -2, -2}, {1, 2, 2}})); // an unchecked negative radius acts as |r|
+    CHECK(contains(sphere3{{0, 0, 0}, -3}, aabb3{{-1, -2, -2}, {1, 2, 2}}));           // an unchecked negative radius acts as |r|
     CHECK_FALSE(intersects(aabb3{{1, 1, 1}, {0, 0, 0}}, sphere3{{0.5, 0.5, 0.5}, 1})); // inverted box: empty
     CHECK_FALSE(intersects(B, sphere3{{__builtin_nan(""), 0.5, 0.5}, 1}));
     CHECK_FALSE(contains(aabb3{{-__builtin_inf(), 0, 0}, {1, 1, 1}}, sphere3{{0.5, 0.5, 0.5}, 0.25}));
@@ -54,14 +54,19 @@ TEST_CASE("aabb_sphere: oracle", "[aabb_sphere][oracle]") {
     auto skip = [](const aabb3&, const sphere3&) { return false; };
     auto describe = [](const aabb3& b, const sphere3& s) { return support::str(b) + " " + support::str(s); };
     support::run_oracle("aabb_sphere random", support::cases(20000), approx_bound, random_case, truth, skip, describe);
-    support::run_oracle("aabb_sphere near-degenerate", support::cases(20000), approx_bound, support::ball_touching_aabb, truth, skip, describe);
+    support::run_oracle("aabb_sphere near-degenerate", support::cases(20000), approx_bound, support::ball_touching_aabb, truth, skip,
+                        describe);
 }
 TEST_CASE("aabb_sphere: contains", "[aabb_sphere][oracle]") {
     support::contains_oracle<aabb3, sphere3>("aabb_sphere (aabb around sphere)", support::cases(10000), approx_bound, random_case,
                                              support::aabb_holding_ball);
-    support::contains_oracle<sphere3, aabb3>("aabb_sphere (sphere around aabb)", support::cases(10000), approx_bound,
-                                             [](support::rng& r) { const auto [b, s] = random_case(r); return std::pair{s, b}; },
-                                             support::ball_holding_aabb);
+    support::contains_oracle<sphere3, aabb3>(
+        "aabb_sphere (sphere around aabb)", support::cases(10000), approx_bound,
+        [](support::rng& r) {
+            const auto [b, s] = random_case(r);
+            return std::pair{s, b};
+        },
+        support::ball_holding_aabb);
 }
 
 } // namespace test_query_aabb_sphere

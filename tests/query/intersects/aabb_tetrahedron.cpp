@@ -25,21 +25,21 @@ const tetrahedron3 T{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
 } // namespace
 
 TEST_CASE("aabb_tetrahedron: fixtures", "[aabb_tetrahedron]") {
-    CHECK(intersects(aabb3{{0.5, 0.5, -1}, {2, 2, 1}}, T));                     // a box edge through an edge point
+    CHECK(intersects(aabb3{{0.5, 0.5, -1}, {2, 2, 1}}, T)); // a box edge through an edge point
     CHECK_FALSE(intersects(aabb3{{0.5, 0x1.0000000000001p-1, -1}, {2, 2, 1}}, T));
     CHECK_FALSE(intersects(aabb3{{1, 1, 1}, {2, 2, 2}}, T));
-    CHECK(intersects(aabb3{{0.25, 0.25, 0.5}, {2, 2, 2}}, T));                  // a corner on the slanted face
+    CHECK(intersects(aabb3{{0.25, 0.25, 0.5}, {2, 2, 2}}, T)); // a corner on the slanted face
     CHECK_FALSE(intersects(aabb3{{0.25, 0.25, 0x1.0000000000001p-1}, {2, 2, 2}}, T));
-    CHECK(intersects(aabb3{{0.1, 0.1, 0.1}, {0.2, 0.2, 0.2}}, T));              // inside
-    CHECK(intersects(T, aabb3{{-1, -1, -1}, {2, 2, 2}}));                       // around it
-    CHECK(intersects(aabb3{{0.2, 0.2, 0}, {3, 3, 0}}, T));                      // a flat box on the face z = 0
+    CHECK(intersects(aabb3{{0.1, 0.1, 0.1}, {0.2, 0.2, 0.2}}, T)); // inside
+    CHECK(intersects(T, aabb3{{-1, -1, -1}, {2, 2, 2}}));          // around it
+    CHECK(intersects(aabb3{{0.2, 0.2, 0}, {3, 3, 0}}, T));         // a flat box on the face z = 0
     CHECK_FALSE(intersects(aabb3{{0.2, 0.2, -0x1p-1074}, {3, 3, -0x1p-1074}}, T));
     const tetrahedron3 flat{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {1, 1, 0}};
     CHECK(intersects(aabb3{{1, 1, -1}, {2, 2, 1}}, flat));
     CHECK_FALSE(intersects(aabb3{{1, 0x1.0000000000001p0, -1}, {2, 2, 1}}, flat));
     CHECK_FALSE(intersects(aabb3{{-1, -1, -1}, {2, 2, 2}}, tetrahedron3{T.a, T.b, T.c, {0, 0, std::nan("")}}));
     CHECK_FALSE(intersects(aabb3{{-1, -1, -1}, {2, 2, HUGE_VAL}}, T));
-    CHECK_FALSE(intersects(aabb3{{2, 2, 2}, {-1, -1, -1}}, T));                 // inverted: empty
+    CHECK_FALSE(intersects(aabb3{{2, 2, 2}, {-1, -1, -1}}, T)); // inverted: empty
 }
 TEST_CASE("aabb_tetrahedron: oracle, random and near-degenerate", "[aabb_tetrahedron][oracle]") {
     support::flat_oracle<aabb3, tetrahedron3>("aabb_tetrahedron", support::cases(20000), approx_bound);

@@ -28,12 +28,18 @@ std::string describe(const aabb3& b, const triangle3& t) {
 }
 bool truth(const aabb3& b, const triangle3& t) {
     double mn[3], mx[3], a[3], c[3], d[3];
-    arr(b.min, mn); arr(b.max, mx); arr(t.a, a); arr(t.b, c); arr(t.c, d);
+    arr(b.min, mn);
+    arr(b.max, mx);
+    arr(t.a, a);
+    arr(t.b, c);
+    arr(t.c, d);
     return oracle::box_triangle(mn, mx, a, c, d);
 }
 bool skip(const aabb3&, const triangle3& t) {
     double a[3], c[3], d[3];
-    arr(t.a, a); arr(t.b, c); arr(t.c, d);
+    arr(t.a, a);
+    arr(t.b, c);
+    arr(t.c, d);
     return oracle::triangle_is_degenerate(a, c, d);
 }
 
@@ -102,17 +108,17 @@ std::pair<aabb3, triangle3> random_case(support::rng& r) {
 
 TEST_CASE("aabb_triangle: fixtures", "[aabb_triangle]") {
     const aabb3 B{{0, 0, 0}, {1, 1, 1}};
-    CHECK(intersects(B, triangle3{{0.5, 0.5, 0.5}, {3, 0, 0}, {0, 3, 0}}));         // a vertex inside
-    CHECK(intersects(B, triangle3{{-1, -1, 0.5}, {3, -1, 0.5}, {-1, 3, 0.5}}));      // slicing through
-    CHECK(intersects(B, triangle3{{1, 1, 1}, {2, 1, 1}, {1, 2, 2}}));                // touching the corner
+    CHECK(intersects(B, triangle3{{0.5, 0.5, 0.5}, {3, 0, 0}, {0, 3, 0}}));     // a vertex inside
+    CHECK(intersects(B, triangle3{{-1, -1, 0.5}, {3, -1, 0.5}, {-1, 3, 0.5}})); // slicing through
+    CHECK(intersects(B, triangle3{{1, 1, 1}, {2, 1, 1}, {1, 2, 2}}));           // touching the corner
     CHECK_FALSE(intersects(B, triangle3{{1, 1, std::nextafter(1.0, 2.0)}, {2, 1, 2}, {1, 2, 2}}));
-    CHECK(intersects(B, triangle3{{1.5, 0.5, 1}, {0.5, 1.5, 1}, {2, 2, 3}}));        // an edge through the top face's corner
+    CHECK(intersects(B, triangle3{{1.5, 0.5, 1}, {0.5, 1.5, 1}, {2, 2, 3}})); // an edge through the top face's corner
     CHECK_FALSE(intersects(B, triangle3{{1.5, 0.5, 1}, {0.5, std::nextafter(1.5, 2.0), 1}, {2, 2, 3}}));
-    CHECK(intersects(B, triangle3{{1.5, 0, 0}, {0, 1.5, 0}, {0, 0, 1.5}}));          // plane cutting the corner region
-    CHECK(intersects(B, triangle3{{2, 0, 0}, {0, 2, 0}, {0, 0, 2}}));                // plane x+y+z=2 meets the box
-    CHECK(intersects(B, triangle3{{3, 0, 0}, {0, 3, 0}, {0, 0, 3}}));                // plane x+y+z=3 touches corner (1,1,1)
+    CHECK(intersects(B, triangle3{{1.5, 0, 0}, {0, 1.5, 0}, {0, 0, 1.5}})); // plane cutting the corner region
+    CHECK(intersects(B, triangle3{{2, 0, 0}, {0, 2, 0}, {0, 0, 2}}));       // plane x+y+z=2 meets the box
+    CHECK(intersects(B, triangle3{{3, 0, 0}, {0, 3, 0}, {0, 0, 3}}));       // plane x+y+z=3 touches corner (1,1,1)
     CHECK_FALSE(intersects(B, triangle3{{3, 0, std::nextafter(0.0, 1.0)}, {0, 3, std::nextafter(0.0, 1.0)}, {0, 0, 3.0000000000000004}}));
-    CHECK_FALSE(intersects(B, triangle3{{2, 0, 0}, {3, 0, 0}, {2, 1, 0}}));          // beside the box
+    CHECK_FALSE(intersects(B, triangle3{{2, 0, 0}, {3, 0, 0}, {2, 1, 0}}));              // beside the box
     CHECK_FALSE(intersects(B, triangle3{{1.5, -1, 0.5}, {3, 0.5, 0.5}, {1.5, 2, 0.5}})); // only an edge axis separates
     // flat boxes: a rectangle, a segment, a point
     CHECK(intersects(aabb3{{0, 0, 0}, {1, 1, 0}}, triangle3{{0.5, 0.5, -1}, {0.5, 0.5, 1}, {3, 3, 0}}));
@@ -171,7 +177,10 @@ bool collinear_truth(const aabb3& b, const triangle3& t) {
         }
     }
     double mn[3], mx[3], p[3], q[3];
-    arr(b.min, mn); arr(b.max, mx); arr(v[lo], p); arr(v[hi], q);
+    arr(b.min, mn);
+    arr(b.max, mx);
+    arr(v[lo], p);
+    arr(v[hi], q);
     return oracle::box_segment(mn, mx, p, q);
 }
 TEST_CASE("aabb_triangle: the rounded axes never decide against the oracle", "[aabb_triangle][oracle]") {
@@ -183,11 +192,14 @@ TEST_CASE("aabb_triangle: the rounded axes never decide against the oracle", "[a
     long n = 0, decided = 0, one_n = 0, one_decided = 0, wrong = 0;
     for (long i = 0; i < support::cases(100000); ++i) {
         const int kind = int(i % 4);
-        auto [b, t] = kind == 0 ? random_case(r) : kind == 1 ? random_case(one) : kind == 2 ? near_case(r) : [&] {
-            auto g = [&] { return double(r.integer(-2, 2)); };
-            auto p = [&] { return point3{g(), g(), g()}; };
-            return std::pair{support::ordered(aabb3{p(), p()}), triangle3{p(), p(), p()}};
-        }();
+        auto [b, t] = kind == 0   ? random_case(r)
+                      : kind == 1 ? random_case(one)
+                      : kind == 2 ? near_case(r)
+                                  : [&] {
+                                        auto g = [&] { return double(r.integer(-2, 2)); };
+                                        auto p = [&] { return point3{g(), g(), g()}; };
+                                        return std::pair{support::ordered(aabb3{p(), p()}), triangle3{p(), p(), p()}};
+                                    }();
         if (r.integer(0, 199) == 0) t.b.z = r.coin() ? std::nan("") : (r.coin() ? 1.0 : -1.0) * INFINITY;
         const point3 v[3] = {t.a, t.b, t.c};
         const certainty fast = detail::box_triangle::rounded_axes_decide(b, v);
@@ -210,9 +222,14 @@ TEST_CASE("aabb_triangle: the rounded axes never decide against the oracle", "[a
     CHECK(one_decided > one_n * 9 / 10);
 }
 TEST_CASE("aabb_triangle: contains(aabb, triangle)", "[aabb_triangle][oracle]") {
-    support::contains_oracle<aabb3, triangle3>("aabb_triangle (aabb around triangle)", support::cases(10000), approx_bound,
-                                     [](support::rng& r) { const auto tr = support::random_transform(r, false); return std::pair{support::random_aabb(r, tr), triangle3{support::random_point(r, tr), support::random_point(r, tr), support::random_point(r, tr)}}; },
-                                     support::aabb_holding<triangle3>, true);
+    support::contains_oracle<aabb3, triangle3>(
+        "aabb_triangle (aabb around triangle)", support::cases(10000), approx_bound,
+        [](support::rng& r) {
+            const auto tr = support::random_transform(r, false);
+            return std::pair{support::random_aabb(r, tr),
+                             triangle3{support::random_point(r, tr), support::random_point(r, tr), support::random_point(r, tr)}};
+        },
+        support::aabb_holding<triangle3>, true);
 }
 
 } // namespace test_query_aabb_triangle

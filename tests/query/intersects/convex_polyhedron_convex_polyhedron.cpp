@@ -25,7 +25,8 @@ using namespace incidence;
 using namespace support::polyhedron_fixtures;
 
 namespace {
-const double approx_bound = catalog::approximate_bound("convex_polyhedron_convex_polyhedron"); // stated in the catalog (modules/query/catalog.cppm)
+const double approx_bound =
+    catalog::approximate_bound("convex_polyhedron_convex_polyhedron"); // stated in the catalog (modules/query/catalog.cppm)
 // x + y + z >= t within a box of side 5: beyond the cut face of unit_cube_cut when t > 5/2
 constexpr convex_polyhedron3 beyond_cut(double t) {
     return {{plane3{{-1, -1, -1}, -t}, plane3{{1, 0, 0}, 5}, plane3{{0, 1, 0}, 5}, plane3{{0, 0, 1}, 5}}, 4};
@@ -41,8 +42,8 @@ TEST_CASE("convex_polyhedron_convex_polyhedron: fixtures", "[convex_polyhedron_c
     CHECK_FALSE(intersects(roof, convex_polyhedron3{{plane3{{0, 0, -1}, -0x1p-1074}}, 1}));
     CHECK(intersects(half_space, convex_polyhedron3{{plane3{{-2, 0, 0}, 0}}, 1})); // x >= 0: the plane x = 0
     CHECK_FALSE(intersects(half_space, convex_polyhedron3{{plane3{{-2, 0, 0}, -0x1p-1074}}, 1}));
-    CHECK(intersects(roof, trough(0)));                // the ridges cross at the origin alone
-    CHECK_FALSE(intersects(trough(0x1p-1074), roof));  // no face of either has the other beyond it
+    CHECK(intersects(roof, trough(0)));               // the ridges cross at the origin alone
+    CHECK_FALSE(intersects(trough(0x1p-1074), roof)); // no face of either has the other beyond it
     CHECK(intersects(roof, trough(-1)));
     CHECK_FALSE(intersects(empty_slab, half_space));
     CHECK(intersects(unit_cube_cut, unit_cube_cut));

@@ -35,7 +35,8 @@ TEST_CASE("convex_polyhedron_kdop: fixtures", "[convex_polyhedron_kdop]") {
     CHECK(intersects(half_space, support::unit6)); // x <= 0 against [0, 1]^3: the face x = 0
     CHECK_FALSE(intersects(half_space, kdop<6>{{0x1p-1074, 0, 0}, {1, 1, 1}}));
     CHECK(intersects(roof, support::unit26)); // the ridge's point (0, 0, 0)
-    CHECK_FALSE(intersects(roof, kdop<26>{{0, 0, 0x1p-1074, -5, -5, -5, -5, -5, -5, -5, -5, -5, -5}, {1, 1, 1, 5, 5, 5, 5, 5, 5, 5, 5, 5, 5}}));
+    CHECK_FALSE(
+        intersects(roof, kdop<26>{{0, 0, 0x1p-1074, -5, -5, -5, -5, -5, -5, -5, -5, -5, -5}, {1, 1, 1, 5, 5, 5, 5, 5, 5, 5, 5, 5, 5}}));
     CHECK_FALSE(intersects(empty_slab, support::unit6));
     CHECK_FALSE(intersects(unit_cube_cut, support::empty14));
     CHECK_FALSE(intersects(unit_cube_cut, kdop<6>{{0, 0, 1}, {1, 1, 0}})); // an inverted slab: no set

@@ -26,9 +26,9 @@ const double approx_bound = catalog::approximate_bound("convex_polyhedron_line")
 
 TEST_CASE("convex_polyhedron_line: fixtures", "[convex_polyhedron_line]") {
     CHECK(intersects(unit_cube_cut, line3{{2, 2, 2}, {1, 1, 1}}));
-    CHECK(intersects(unit_cube_cut, line3{{0, 1.5, 1}, {1, -1, 0}}));  // along the cut face's top edge
+    CHECK(intersects(unit_cube_cut, line3{{0, 1.5, 1}, {1, -1, 0}})); // along the cut face's top edge
     CHECK_FALSE(intersects(unit_cube_cut, line3{{0, 0x1.0000000000001p0 * 1.5, 1}, {1, -1, 0}}));
-    CHECK(intersects(line3{{-7, 0, 0}, {1, 0, 0}}, unit_cube_cut));    // along an edge
+    CHECK(intersects(line3{{-7, 0, 0}, {1, 0, 0}}, unit_cube_cut)); // along an edge
     CHECK_FALSE(intersects(half_space, line3{{1, 0, 0}, {0, 1, 1}}));
     CHECK(intersects(half_space, line3{{1, 0, 0}, {-0x1p-1074, 1, 1}}));
     CHECK_FALSE(intersects(empty_slab, line3{{0, 0, 0}, {1, 2, 3}}));

@@ -26,20 +26,20 @@ using support::dented;
 namespace {
 const double approx_bound = catalog::approximate_bound("convex_polyhedron_mesh"); // stated in the catalog (modules/query/catalog.cppm)
 constexpr convex_polyhedron3 box(point3 lo, point3 hi) {
-    return {{plane3{{1, 0, 0}, hi.x}, plane3{{-1, 0, 0}, -lo.x}, plane3{{0, 1, 0}, hi.y}, plane3{{0, -1, 0}, -lo.y}, plane3{{0, 0, 1}, hi.z},
-             plane3{{0, 0, -1}, -lo.z}},
+    return {{plane3{{1, 0, 0}, hi.x}, plane3{{-1, 0, 0}, -lo.x}, plane3{{0, 1, 0}, hi.y}, plane3{{0, -1, 0}, -lo.y},
+             plane3{{0, 0, 1}, hi.z}, plane3{{0, 0, -1}, -lo.z}},
             6};
 }
 } // namespace
 
 TEST_CASE("convex_polyhedron_mesh: fixtures", "[convex_polyhedron_mesh]") {
-    CHECK(intersects(box({0.4, 0.4, 0.4}, {0.6, 0.6, 0.6}), cube)); // inside: no triangle meets it, its vertex decides
-    CHECK(intersects(cube, box({-1, -1, -1}, {2, 2, 2})));           // around the whole mesh
+    CHECK(intersects(box({0.4, 0.4, 0.4}, {0.6, 0.6, 0.6}), cube));             // inside: no triangle meets it, its vertex decides
+    CHECK(intersects(cube, box({-1, -1, -1}, {2, 2, 2})));                      // around the whole mesh
     CHECK_FALSE(intersects(box({0.45, 0.45, 0.5}, {0.55, 0.55, 0.9}), dented)); // above the dent
     CHECK(intersects(box({0.5, 0.5, 0.25}, {0.5, 0.5, 0.9}), dented));          // a flat box (a segment) on the dent's apex
     CHECK_FALSE(intersects(box({0.5, 0.5, 0x1.0000000000001p-2}, {0.5, 0.5, 0.9}), dented));
     CHECK(intersects(box({0.5, 0.5, 0x1.0000000000001p-2}, {0.55, 0.55, 0.9}), dented)); // reaching under the dent's side
-    CHECK(intersects(convex_polyhedron3{{plane3{{1, 0, 0}, 0}}, 1}, cube)); // x <= 0: the face x = 0
+    CHECK(intersects(convex_polyhedron3{{plane3{{1, 0, 0}, 0}}, 1}, cube));              // x <= 0: the face x = 0
     CHECK_FALSE(intersects(convex_polyhedron3{{plane3{{1, 0, 0}, -0x1p-1074}}, 1}, cube));
     CHECK_FALSE(intersects(convex_polyhedron3{{plane3{{1, 0, 0}, 1}, plane3{{-1, 0, 0}, -2}}, 2}, cube)); // empty
 }

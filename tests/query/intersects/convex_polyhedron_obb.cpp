@@ -29,19 +29,23 @@ namespace {
 const double approx_bound = catalog::approximate_bound("convex_polyhedron_obb"); // stated in the catalog (modules/query/catalog.cppm)
 // A box turned 45 degrees about z (axes of length sqrt 2, read as given): x + y = 3 + 2 s0 and
 // x - y = -2 s1 about the centre (3/2, 3/2).
-constexpr obb3 diamond(double h0, double z, double h2) { return {{1.5, 1.5, z}, {vec3{1, 1, 0}, vec3{-1, 1, 0}, vec3{0, 0, 1}}, {h0, 0.5, h2}}; }
-constexpr obb3 upright(point3 c, double hx, double hy, double hz) { return {c, {vec3{1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1}}, {hx, hy, hz}}; }
+constexpr obb3 diamond(double h0, double z, double h2) {
+    return {{1.5, 1.5, z}, {vec3{1, 1, 0}, vec3{-1, 1, 0}, vec3{0, 0, 1}}, {h0, 0.5, h2}};
+}
+constexpr obb3 upright(point3 c, double hx, double hy, double hz) {
+    return {c, {vec3{1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1}}, {hx, hy, hz}};
+}
 } // namespace
 
 TEST_CASE("convex_polyhedron_obb: fixtures", "[convex_polyhedron_obb]") {
-    CHECK(intersects(unit_cube_cut, diamond(0.5, 0.5, 0.5)));                    // touches along the edge x = y = 1, z <= 1/2
+    CHECK(intersects(unit_cube_cut, diamond(0.5, 0.5, 0.5)));                        // touches along the edge x = y = 1, z <= 1/2
     CHECK_FALSE(intersects(diamond(0x1.fffffffffffffp-2, 0.5, 0.5), unit_cube_cut)); // x + y >= 2 + 2^-52
-    CHECK(intersects(unit_cube_cut, diamond(0.5, 1, 0.5)));                      // the edge point (1, 1, 1/2) alone
+    CHECK(intersects(unit_cube_cut, diamond(0.5, 1, 0.5)));                          // the edge point (1, 1, 1/2) alone
     CHECK_FALSE(intersects(unit_cube_cut, diamond(0.5, 0x1.0000000000001p0, 0.5)));
-    CHECK(intersects(unit_cube_cut, upright({0.5, 0.5, 0.5}, 5, 5, 5)));         // around it
-    CHECK(intersects(unit_cube_cut, upright({0.5, 0.5, 0.5}, 0, 0, 0)));         // a point inside
-    CHECK_FALSE(intersects(upright({0, 0.5, 0.75}, 1, 0.5, 0.25), roof));          // above the ridge: no single plane separates
-    CHECK(intersects(upright({0, 0.5, 0.5}, 1, 0.5, 0.5), roof));                  // touches along the ridge
+    CHECK(intersects(unit_cube_cut, upright({0.5, 0.5, 0.5}, 5, 5, 5)));  // around it
+    CHECK(intersects(unit_cube_cut, upright({0.5, 0.5, 0.5}, 0, 0, 0)));  // a point inside
+    CHECK_FALSE(intersects(upright({0, 0.5, 0.75}, 1, 0.5, 0.25), roof)); // above the ridge: no single plane separates
+    CHECK(intersects(upright({0, 0.5, 0.5}, 1, 0.5, 0.5), roof));         // touches along the ridge
     CHECK_FALSE(intersects(empty_slab, upright({0, 0, 0}, 5, 5, 5)));
     CHECK(intersects(half_space, obb3{{1, 0, 0}, {vec3{1, 1, 0}, vec3{-1, 1, 0}, vec3{0, 0, 1}}, {0.5, 0.5, 1}})); // x >= 0 at one edge
     CHECK_FALSE(intersects(half_space, obb3{{1, 0, 0}, {vec3{1, 1, 0}, vec3{-1, 1, 0}, vec3{0, 0, 1}}, {0.5, 0x1.fffffffffffffp-2, 1}}));

@@ -37,12 +37,12 @@ TEST_CASE("convex_polyhedron_plane: fixtures", "[convex_polyhedron_plane]") {
     CHECK(intersects(roof, plane3{{0, 0, 1}, 0})); // along the ridge x = z = 0 (normals of rank 2)
     CHECK_FALSE(intersects(roof, plane3{{0, 0, 1}, 0x1p-1074}));
     CHECK(intersects(roof, plane3{{0, 0, -1}, 1e300}));
-    CHECK(intersects(half_space, plane3{{0, 1, 0}, 5}));   // across it
-    CHECK(intersects(half_space, plane3{{-2, 0, 0}, 2}));  // parallel, inside (normals of rank 1)
-    CHECK(intersects(half_space, plane3{{1, 0, 0}, 0}));   // its own boundary
+    CHECK(intersects(half_space, plane3{{0, 1, 0}, 5}));  // across it
+    CHECK(intersects(half_space, plane3{{-2, 0, 0}, 2})); // parallel, inside (normals of rank 1)
+    CHECK(intersects(half_space, plane3{{1, 0, 0}, 0}));  // its own boundary
     CHECK_FALSE(intersects(half_space, plane3{{1, 0, 0}, 0x1p-1074}));
     CHECK_FALSE(intersects(empty_slab, plane3{{0, 1, 0}, 0}));
-    CHECK(intersects(half_space, plane3{{0, 0, 0}, 0}));  // a zero normal with offset 0: all of space
+    CHECK(intersects(half_space, plane3{{0, 0, 0}, 0})); // a zero normal with offset 0: all of space
     CHECK_FALSE(intersects(half_space, plane3{{0, 0, 0}, 1}));
     CHECK_FALSE(intersects(unit_cube_cut, plane3{{1, 0, 0}, NAN}));
 }

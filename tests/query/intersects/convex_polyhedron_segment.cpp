@@ -28,7 +28,7 @@ TEST_CASE("convex_polyhedron_segment: fixtures", "[convex_polyhedron_segment]") 
     CHECK(intersects(unit_cube_cut, segment3{{2, 2, 2}, {0.5, 0.5, 0.5}}));
     CHECK(intersects(segment3{{2, 2, 0.5}, {1, 1, 0.5}}, unit_cube_cut)); // ends on the cut face
     CHECK_FALSE(intersects(segment3{{2, 2, 0.5}, {0x1.0000000000001p0, 1, 0.5}}, unit_cube_cut));
-    CHECK(intersects(unit_cube_cut, segment3{{-1, 0, 0}, {2, 0, 0}})); // along an edge
+    CHECK(intersects(unit_cube_cut, segment3{{-1, 0, 0}, {2, 0, 0}}));    // along an edge
     CHECK(intersects(unit_cube_cut, segment3{{1.5, 0, 1}, {0, 1.5, 1}})); // along the cut face's edge
     CHECK_FALSE(intersects(empty_slab, segment3{{-5, -5, -5}, {5, 5, 5}}));
     CHECK(contains(unit_cube_cut, segment3{{0, 0, 0}, {1, 1, 0.5}}));

@@ -23,18 +23,19 @@ using namespace incidence;
 using namespace support::polyhedron_fixtures;
 
 namespace {
-const double approx_bound = catalog::approximate_bound("convex_polyhedron_tetrahedron"); // stated in the catalog (modules/query/catalog.cppm)
+const double approx_bound =
+    catalog::approximate_bound("convex_polyhedron_tetrahedron"); // stated in the catalog (modules/query/catalog.cppm)
 } // namespace
 
 TEST_CASE("convex_polyhedron_tetrahedron: fixtures", "[convex_polyhedron_tetrahedron]") {
-    CHECK(intersects(unit_cube_cut, wide_tetrahedron(2)));  // no face meets the cube: it lies inside
-    CHECK(intersects(wide_tetrahedron(1), unit_cube_cut));  // the top faces in one plane
+    CHECK(intersects(unit_cube_cut, wide_tetrahedron(2)));   // no face meets the cube: it lies inside
+    CHECK(intersects(wide_tetrahedron(1), unit_cube_cut));   // the top faces in one plane
     CHECK(intersects(unit_cube_cut, wide_tetrahedron(0.5))); // a face through the cube
     CHECK(intersects(unit_cube_cut, wide_tetrahedron(0)));   // below, touching the bottom face
     CHECK_FALSE(intersects(unit_cube_cut, wide_tetrahedron(-0x1p-1074)));
     CHECK(intersects(unit_cube_cut, tetrahedron3{{1, 1, 0.5}, {3, 3, 3}, {3, 2, 3}, {2, 3, 2}})); // a vertex on the cut face
     CHECK_FALSE(intersects(unit_cube_cut, tetrahedron3{{1, 1, 0x1.0000000000001p-1}, {3, 3, 3}, {3, 2, 3}, {2, 3, 2}}));
-    CHECK(intersects(half_space, wide_tetrahedron(0)));      // unbounded: through a face
+    CHECK(intersects(half_space, wide_tetrahedron(0))); // unbounded: through a face
     CHECK_FALSE(intersects(empty_slab, wide_tetrahedron(0)));
     CHECK(intersects(unit_cube_cut, tetrahedron3{{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {5, 5, 5}})); // flat: a segment
     CHECK(contains(unit_cube_cut, tetrahedron3{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 1, 1}}));
@@ -43,11 +44,13 @@ TEST_CASE("convex_polyhedron_tetrahedron: fixtures", "[convex_polyhedron_tetrahe
 TEST_CASE("convex_polyhedron_tetrahedron: oracle, random and near-degenerate", "[convex_polyhedron_tetrahedron][oracle]") {
     support::halfspace_oracle<convex_polyhedron3, tetrahedron3>("convex_polyhedron_tetrahedron", support::cases(20000), approx_bound);
 }
-TEST_CASE("convex_polyhedron_tetrahedron: rewrites of both shapes and exact translations give the same answer", "[convex_polyhedron_tetrahedron]") {
+TEST_CASE("convex_polyhedron_tetrahedron: rewrites of both shapes and exact translations give the same answer",
+          "[convex_polyhedron_tetrahedron]") {
     support::halfspace_symmetries<convex_polyhedron3, tetrahedron3>("convex_polyhedron_tetrahedron", support::cases(5000));
 }
 TEST_CASE("convex_polyhedron_tetrahedron: contains", "[convex_polyhedron_tetrahedron][oracle]") {
-    support::halfspace_contains_oracle<convex_polyhedron3, tetrahedron3>("convex_polyhedron_tetrahedron", support::cases(2000), approx_bound);
+    support::halfspace_contains_oracle<convex_polyhedron3, tetrahedron3>("convex_polyhedron_tetrahedron", support::cases(2000),
+                                                                         approx_bound);
 }
 
 } // namespace test_query_convex_polyhedron_tetrahedron

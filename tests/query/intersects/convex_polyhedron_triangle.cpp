@@ -33,8 +33,8 @@ TEST_CASE("convex_polyhedron_triangle: fixtures", "[convex_polyhedron_triangle]"
     CHECK_FALSE(intersects(unit_cube_cut, wide_triangle(0x1.0000000000001p0)));
     CHECK(intersects(unit_cube_cut, triangle3{{2, 0, 0.5}, {0, 2, 0.5}, {1, 1, 3}})); // through the cut face
     CHECK_FALSE(intersects(unit_cube_cut, triangle3{{2, 1, 0}, {1, 2, 0}, {2, 2, 5}}));
-    CHECK(intersects(half_space, triangle3{{0, 5, 5}, {3, 0, 0}, {3, 1, 0}}));          // a corner on x = 0
-    CHECK(intersects(half_space, triangle3{{0, 5, 5}, {0, 5, 5}, {3, 1, 0}}));          // collinear corners: a segment
+    CHECK(intersects(half_space, triangle3{{0, 5, 5}, {3, 0, 0}, {3, 1, 0}})); // a corner on x = 0
+    CHECK(intersects(half_space, triangle3{{0, 5, 5}, {0, 5, 5}, {3, 1, 0}})); // collinear corners: a segment
     CHECK_FALSE(intersects(half_space, triangle3{{0x1p-1074, 5, 5}, {3, 0, 0}, {3, 1, 0}}));
     CHECK_FALSE(intersects(empty_slab, wide_triangle(0)));
     CHECK(contains(unit_cube_cut, triangle3{{0, 0, 0}, {1, 0, 0}, {0, 1, 1}}));
@@ -43,7 +43,8 @@ TEST_CASE("convex_polyhedron_triangle: fixtures", "[convex_polyhedron_triangle]"
 TEST_CASE("convex_polyhedron_triangle: oracle, random and near-degenerate", "[convex_polyhedron_triangle][oracle]") {
     support::halfspace_oracle<convex_polyhedron3, triangle3>("convex_polyhedron_triangle", support::cases(20000), approx_bound);
 }
-TEST_CASE("convex_polyhedron_triangle: rewrites of both shapes and exact translations give the same answer", "[convex_polyhedron_triangle]") {
+TEST_CASE("convex_polyhedron_triangle: rewrites of both shapes and exact translations give the same answer",
+          "[convex_polyhedron_triangle]") {
     support::halfspace_symmetries<convex_polyhedron3, triangle3>("convex_polyhedron_triangle", support::cases(5000));
 }
 TEST_CASE("convex_polyhedron_triangle: contains", "[convex_polyhedron_triangle][oracle]") {

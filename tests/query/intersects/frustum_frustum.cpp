@@ -29,13 +29,13 @@ const double approx_bound = catalog::approximate_bound("frustum_frustum"); // st
 
 TEST_CASE("frustum_frustum: fixtures", "[frustum_frustum]") {
     CHECK(intersects(integer_frustum, integer_frustum));
-    CHECK(intersects(integer_frustum, reflected(integer_frustum, {4, 4, 4})));  // the far corner: touching there only
-    CHECK(intersects(reflected(integer_frustum, {0, 4, 4}), integer_frustum));  // a far edge's midpoint: along that edge
-    CHECK(intersects(integer_frustum, reflected(integer_frustum, {0, 0, 1})));  // the near face's centre: the near face
+    CHECK(intersects(integer_frustum, reflected(integer_frustum, {4, 4, 4}))); // the far corner: touching there only
+    CHECK(intersects(reflected(integer_frustum, {0, 4, 4}), integer_frustum)); // a far edge's midpoint: along that edge
+    CHECK(intersects(integer_frustum, reflected(integer_frustum, {0, 0, 1}))); // the near face's centre: the near face
     CHECK_FALSE(intersects(integer_frustum, reflected(integer_frustum, {0x1.0000000001p2, 4, 4}))); // 2^-38 beyond it (exact planes)
     CHECK_FALSE(intersects(reflected(integer_frustum, {0, 0, 0x1.fffffffffffffp-1}), integer_frustum));
     CHECK(intersects(camera, reflected(integer_frustum, {0, 0, -1}))); // z in [-6, -3], inside the camera's view
-    CHECK_FALSE(intersects(camera, integer_frustum));                   // z >= 1 against z <= -1
+    CHECK_FALSE(intersects(camera, integer_frustum));                  // z >= 1 against z <= -1
     frustum3 empty = integer_frustum;
     empty.planes[1] = plane3{{0, 0, 1}, 0.5}; // near z >= 1 and far z <= 1/2
     CHECK_FALSE(intersects(empty, integer_frustum));

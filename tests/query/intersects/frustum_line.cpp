@@ -26,9 +26,9 @@ const double approx_bound = catalog::approximate_bound("frustum_line"); // state
 
 TEST_CASE("frustum_line: fixtures", "[frustum_line]") {
     CHECK(intersects(camera, line3{{0, 0, 0}, {0, 0, 1}}));
-    CHECK(intersects(integer_frustum, line3{{0, 0, 0}, {1, 1, 1}}));  // through a side edge
+    CHECK(intersects(integer_frustum, line3{{0, 0, 0}, {1, 1, 1}})); // through a side edge
     CHECK_FALSE(intersects(integer_frustum, line3{{0, 0, 0}, {1, 1, 0x1.fffffffffffffp-1}}));
-    CHECK(intersects(line3{{0, 4, 4}, {1, 0, 0}}, integer_frustum));  // along a far edge
+    CHECK(intersects(line3{{0, 4, 4}, {1, 0, 0}}, integer_frustum)); // along a far edge
     CHECK_FALSE(intersects(integer_frustum, line3{{0, 0x1.0000000000001p2, 4}, {1, 0, 0}}));
     CHECK_FALSE(intersects(integer_frustum, line3{{0, 0, 0}, {1, 0, 0}}));
 }

@@ -37,10 +37,10 @@ constexpr frustum3 shrunk(const frustum3& f, double s, point3 c) {
 } // namespace
 
 TEST_CASE("frustum_mesh: fixtures", "[frustum_mesh]") {
-    CHECK(intersects(shrunk(integer_frustum, 0.0625, {0.5, 0.5, 0.25}), cube)); // inside: its vertex decides
+    CHECK(intersects(shrunk(integer_frustum, 0.0625, {0.5, 0.5, 0.25}), cube));        // inside: its vertex decides
     CHECK_FALSE(intersects(dented, shrunk(integer_frustum, 0.0625, {0.5, 0.5, 0.5}))); // above the dent
-    CHECK(intersects(integer_frustum, cube)); // the near face on the top face
-    CHECK_FALSE(intersects(shrunk(integer_frustum, 1, {0, 0, 0x1p-52}), cube)); // moved 2^-52 up
+    CHECK(intersects(integer_frustum, cube));                                          // the near face on the top face
+    CHECK_FALSE(intersects(shrunk(integer_frustum, 1, {0, 0, 0x1p-52}), cube));        // moved 2^-52 up
     CHECK_FALSE(intersects(camera, cube)); // looking down -z from the origin: the cube is behind
     CHECK(intersects(frustum3::from_camera({0.5, 0.5, 5}, {0, 0, -1}, {0, 1, 0}, 0.5, 1.0, 1.0, 100.0).value(), dented));
 }

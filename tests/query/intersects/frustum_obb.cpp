@@ -27,7 +27,7 @@ using namespace incidence;
 using namespace support::polyhedron_fixtures;
 
 namespace {
-const double approx_bound = catalog::approximate_bound("frustum_obb"); // stated in the catalog (modules/query/catalog.cppm)
+const double approx_bound = catalog::approximate_bound("frustum_obb");              // stated in the catalog (modules/query/catalog.cppm)
 constexpr std::array<vec3, 3> turned{vec3{1, 1, 0}, vec3{-1, 1, 0}, vec3{0, 0, 1}}; // 45 degrees about z, length sqrt 2
 constexpr std::array<vec3, 3> unit{vec3{1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1}};
 } // namespace
@@ -53,8 +53,8 @@ TEST_CASE("frustum_obb: fixtures", "[frustum_obb]") {
     CHECK_FALSE(method::frustum_obb_sat(camera, obb3{{0, 0, -0.25}, turned, {1, 1, 0.25}}));
     CHECK(contains(integer_frustum, obb3{{0, 0, 1}, unit, {1, 1, 0}})); // the near face itself
     CHECK_FALSE(contains(integer_frustum, obb3{{0, 0, 1}, unit, {0x1.0000000000001p0, 1, 0}}));
-    CHECK(contains(integer_frustum, obb3{{0, 0, 2}, turned, {0.5, 0.5, 0}})); // the diamond |x| + |y| <= 1 at z = 2
-    CHECK_FALSE(contains(integer_frustum, obb3{{0, 0, 2}, turned, {0.5, 0.5, -1}}));  // negative extent: no box
+    CHECK(contains(integer_frustum, obb3{{0, 0, 2}, turned, {0.5, 0.5, 0}}));        // the diamond |x| + |y| <= 1 at z = 2
+    CHECK_FALSE(contains(integer_frustum, obb3{{0, 0, 2}, turned, {0.5, 0.5, -1}})); // negative extent: no box
 }
 TEST_CASE("frustum_obb: oracle, random and near-degenerate", "[frustum_obb][oracle]") {
     support::halfspace_oracle<frustum3, obb3>("frustum_obb", support::cases(20000), approx_bound);
@@ -78,7 +78,8 @@ TEST_CASE("frustum_obb: the separating-axis and decomposition tests' wrong answe
         split_wrong[i % 2] += method::frustum_obb_decomposition(c->first, c->second) != e;
     }
     std::printf("[cases] frustum_obb: %ld cases, %ld meet\n", n, yes);
-    std::printf("[cases] frustum_obb separating axes in double: wrong on %ld random and %ld near-degenerate cases\n", sat_wrong[0], sat_wrong[1]);
+    std::printf("[cases] frustum_obb separating axes in double: wrong on %ld random and %ld near-degenerate cases\n", sat_wrong[0],
+                sat_wrong[1]);
     std::printf("[cases] frustum_obb six tetrahedra in double: wrong on %ld random and %ld near-degenerate cases\n", split_wrong[0],
                 split_wrong[1]);
     CHECK(yes > 0);

@@ -35,7 +35,7 @@ TEST_CASE("frustum_plane: fixtures", "[frustum_plane]") {
     CHECK_FALSE(intersects(integer_frustum, plane3{{1, 0, 0}, 0x1.0000000000001p2}));
     CHECK(intersects(integer_frustum, plane3{{1, 1, 0}, 8})); // the far corner (4, 4, 4) alone
     CHECK_FALSE(intersects(integer_frustum, plane3{{1, 1, 0}, 0x1.0000000000001p3}));
-    CHECK(intersects(integer_frustum, plane3{{1, 1, 1}, 0})); // across: (-1, -1, 1) below, (1, 1, 1) above
+    CHECK(intersects(integer_frustum, plane3{{1, 1, 1}, 0}));  // across: (-1, -1, 1) below, (1, 1, 1) above
     CHECK(intersects(integer_frustum, plane3{{1, 1, 1}, -4})); // the far corner (-4, -4, 4) alone
     CHECK_FALSE(intersects(integer_frustum, plane3{{1, 1, 1}, -0x1.0000000000001p2}));
     CHECK(intersects(camera, plane3{{0, 0, 1}, -50}));

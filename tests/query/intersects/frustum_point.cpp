@@ -26,11 +26,11 @@ const double approx_bound = catalog::approximate_bound("frustum_point"); // stat
 
 TEST_CASE("frustum_point: fixtures", "[frustum_point]") {
     CHECK(intersects(camera, point3{0, 0, -5}));
-    CHECK(intersects(point3{0, 0, -1}, camera));   // on the near plane
+    CHECK(intersects(point3{0, 0, -1}, camera)); // on the near plane
     CHECK_FALSE(intersects(camera, point3{0, 0, -0x1.fffffffffffffp-1}));
-    CHECK(intersects(integer_frustum, point3{1, 1, 1}));  // a near corner
+    CHECK(intersects(integer_frustum, point3{1, 1, 1})); // a near corner
     CHECK_FALSE(intersects(integer_frustum, point3{0x1.0000000000001p0, 1, 1}));
-    CHECK(intersects(integer_frustum, point3{4, -4, 4}));  // a far corner
+    CHECK(intersects(integer_frustum, point3{4, -4, 4}));      // a far corner
     CHECK_FALSE(intersects(integer_frustum, point3{0, 0, 0})); // the eye, apex of the sides
     CHECK(contains(integer_frustum, point3{0, 0.5, 2}));
 }

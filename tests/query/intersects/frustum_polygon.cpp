@@ -40,7 +40,8 @@ TEST_CASE("frustum_polygon: fixtures", "[frustum_polygon]") {
     CHECK_FALSE(intersects(integer_frustum, ring)); // its section lies in the hole
     CHECK(intersects(integer_frustum, holed));      // [0, 1]^2 at z = 1
     CHECK(intersects(holed, integer_frustum));
-    static constexpr std::array<point3, 8> tight{{{-2, -2, 1}, {2, -2, 1}, {2, 2, 1}, {-2, 2, 1}, {-1, -1, 1}, {-1, 1, 1}, {1, 1, 1}, {1, -1, 1}}};
+    static constexpr std::array<point3, 8> tight{
+        {{-2, -2, 1}, {2, -2, 1}, {2, 2, 1}, {-2, 2, 1}, {-1, -1, 1}, {-1, 1, 1}, {1, 1, 1}, {1, -1, 1}}};
     CHECK(intersects(integer_frustum, polygon3{tight, holed_ends, {0, 2, 1}, 2})); // the hole's edges on its section's
     CHECK_FALSE(intersects(camera, holed)); // the camera looks down -z from the origin: z = 1 is behind it
 }

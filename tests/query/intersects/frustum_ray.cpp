@@ -27,9 +27,9 @@ const double approx_bound = catalog::approximate_bound("frustum_ray"); // stated
 TEST_CASE("frustum_ray: fixtures", "[frustum_ray]") {
     CHECK(intersects(camera, ray3{{0, 0, 0}, {0, 0, -1}}));
     CHECK_FALSE(intersects(camera, ray3{{0, 0, 0}, {0, 0, 1}}));
-    CHECK(intersects(integer_frustum, ray3{{0, 0, 0}, {1, 1, 1}}));    // along a side edge from the eye
+    CHECK(intersects(integer_frustum, ray3{{0, 0, 0}, {1, 1, 1}})); // along a side edge from the eye
     CHECK_FALSE(intersects(integer_frustum, ray3{{0, 0, 0}, {1, 1, 0x1.fffffffffffffp-1}}));
-    CHECK(intersects(ray3{{8, 0, 4}, {-1, 0, 0}}, integer_frustum));  // across the far face
+    CHECK(intersects(ray3{{8, 0, 4}, {-1, 0, 0}}, integer_frustum)); // across the far face
     CHECK_FALSE(intersects(integer_frustum, ray3{{8, 0, 0x1.0000000000001p2}, {-1, 0, 0}}));
 }
 TEST_CASE("frustum_ray: oracle, random and near-degenerate", "[frustum_ray][oracle]") {

@@ -30,7 +30,7 @@ TEST_CASE("frustum_segment: fixtures", "[frustum_segment]") {
     CHECK(intersects(integer_frustum, segment3{{0, 0, 0}, {1, 1, 1}})); // from the eye to a near corner
     CHECK_FALSE(intersects(integer_frustum, segment3{{0, 0, 0}, {1, 1, 0x1.fffffffffffffp-1}}));
     CHECK(intersects(segment3{{2, 2, 2}, {2, 5, 2}}, integer_frustum)); // touches a side edge
-    CHECK(contains(integer_frustum, segment3{{1, 1, 1}, {-4, -4, 4}}));   // corner to corner
+    CHECK(contains(integer_frustum, segment3{{1, 1, 1}, {-4, -4, 4}})); // corner to corner
     CHECK_FALSE(contains(integer_frustum, segment3{{1, 1, 1}, {-4, -4, 0x1.0000000000001p2}}));
 }
 TEST_CASE("frustum_segment: oracle, random and near-degenerate", "[frustum_segment][oracle]") {

@@ -30,8 +30,8 @@ TEST_CASE("frustum_triangle: fixtures", "[frustum_triangle]") {
     CHECK(intersects(integer_frustum, wide_triangle(2))); // the edges miss the frustum: its section lies inside
     CHECK(intersects(wide_triangle(4), integer_frustum)); // the far face
     CHECK_FALSE(intersects(integer_frustum, wide_triangle(0x1.0000000000001p2)));
-    CHECK_FALSE(intersects(integer_frustum, wide_triangle(0))); // through the eye, before the near face
-    CHECK(intersects(integer_frustum, triangle3{{4, 4, 4}, {9, 4, 4}, {4, 9, 9}}));          // a corner on the far corner
+    CHECK_FALSE(intersects(integer_frustum, wide_triangle(0)));                     // through the eye, before the near face
+    CHECK(intersects(integer_frustum, triangle3{{4, 4, 4}, {9, 4, 4}, {4, 9, 9}})); // a corner on the far corner
     CHECK_FALSE(intersects(integer_frustum, triangle3{{0x1.0000000000001p2, 4, 4}, {9, 4, 4}, {4, 9, 9}}));
     CHECK(intersects(camera, triangle3{{-50, -50, -10}, {50, -50, -10}, {0, 50, -10}}));
     CHECK_FALSE(intersects(camera, triangle3{{-50, -50, 10}, {50, -50, 10}, {0, 50, 10}})); // behind the eye

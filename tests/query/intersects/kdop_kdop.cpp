@@ -83,7 +83,7 @@ TEST_CASE("kdop_kdop: fixtures", "[kdop_kdop]") {
     CHECK_FALSE(intersects(kdop<6>{{0, 0, 0}, {1, nan, 1}}, unit6));
     CHECK_FALSE(intersects(unit6, kdop<6>{{0, 0, 0}, {1, -1, 1}}));
     CHECK_FALSE(intersects(unit26, kdop<26>{{0, 0, 0, -5, -5, -5, -5, -5, -5, -5, -5, -5, -5},
-                                             {1, 1, 1, 5, 5, 5, 5, 5, 5, 5, 5, 5, std::numeric_limits<double>::infinity()}}));
+                                            {1, 1, 1, 5, 5, 5, 5, 5, 5, 5, 5, 5, std::numeric_limits<double>::infinity()}}));
 }
 TEST_CASE("kdop_kdop: oracle, random and near-degenerate, K = 6, 14, 18, 26 and mixed", "[kdop_kdop][oracle]") {
     const long n = support::cases(5000);
@@ -116,7 +116,8 @@ TEST_CASE("kdop_kdop: the cases reach pairs that slab overlap alone gets wrong",
                 overlap = overlap && c->first.min[j] <= c->second.max[j] && c->second.min[j] <= c->first.max[j];
             overlap_but_apart += overlap && !intersects(c->first, c->second);
         }
-        std::printf("[cases] kdop_kdop %d-dop: %ld of %ld near-degenerate pairs overlap in every slab and are disjoint\n", K, overlap_but_apart, n);
+        std::printf("[cases] kdop_kdop %d-dop: %ld of %ld near-degenerate pairs overlap in every slab and are disjoint\n", K,
+                    overlap_but_apart, n);
         return overlap_but_apart;
     };
     CHECK(count.template operator()<6>() == 0); // slab overlap is exact for boxes

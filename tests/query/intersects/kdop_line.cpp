@@ -32,9 +32,9 @@ const double approx_bound = catalog::approximate_bound("kdop_line"); // stated i
 
 TEST_CASE("kdop_line: fixtures", "[kdop_line]") {
     CHECK(intersects(corner_cut, line3{{2, 2, 2}, {1, 1, 1}}));
-    CHECK_FALSE(intersects(corner_cut, line3{{1, 1, 1}, {1, -1, 0}}));  // only the cut corner on the box
+    CHECK_FALSE(intersects(corner_cut, line3{{1, 1, 1}, {1, -1, 0}})); // only the cut corner on the box
     CHECK(intersects(corner_cut, line3{{1, 1, 0.5}, {1, -1, 0}}));     // touches at (1, 1, 1/2)
-    CHECK(intersects(line3{{-3, 0, 0}, {1, 0, 0}}, unit6));             // along an edge
+    CHECK(intersects(line3{{-3, 0, 0}, {1, 0, 0}}, unit6));            // along an edge
     CHECK_FALSE(intersects(line3{{-3, -0x1p-1074, 0}, {1, 0, 0}}, unit6));
     CHECK(intersects(unit26, line3{{0.5, 0.5, 0.5}, {0, 0, 0}}));
     CHECK_FALSE(intersects(empty14, line3{{-5, -5, -5}, {1, 1, 1}}));

@@ -33,7 +33,7 @@ TEST_CASE("kdop_mesh: fixtures", "[kdop_mesh]") {
     CHECK(intersects(kdop<6>{{0.4, 0.4, 0.4}, {0.6, 0.6, 0.6}}, cube)); // inside: its vertex decides
     CHECK(intersects(cube, kdop<14>{{0.4, 0.4, 0.4, -5, -5, -5, -5}, {0.6, 0.6, 0.6, 5, 5, 5, 5}}));
     CHECK_FALSE(intersects(kdop<6>{{0.45, 0.45, 0.5}, {0.55, 0.55, 0.9}}, dented)); // above the dent
-    CHECK(intersects(kdop<6>{{0.5, 0.5, 0.25}, {0.5, 0.5, 0.9}}, dented)); // a flat 6-DOP (a segment) on the dent's apex
+    CHECK(intersects(kdop<6>{{0.5, 0.5, 0.25}, {0.5, 0.5, 0.9}}, dented));          // a flat 6-DOP (a segment) on the dent's apex
     CHECK_FALSE(intersects(kdop<6>{{0.5, 0.5, 0x1.0000000000001p-2}, {0.5, 0.5, 0.9}}, dented));
     CHECK(intersects(corner_cut, cube));
 }

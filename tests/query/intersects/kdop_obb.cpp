@@ -25,7 +25,7 @@ using support::empty14;
 using support::unit26;
 
 namespace {
-const double approx_bound = catalog::approximate_bound("kdop_obb"); // stated in the catalog (modules/query/catalog.cppm)
+const double approx_bound = catalog::approximate_bound("kdop_obb");                 // stated in the catalog (modules/query/catalog.cppm)
 constexpr std::array<vec3, 3> turned{vec3{1, 1, 0}, vec3{-1, 1, 0}, vec3{0, 0, 1}}; // 45 degrees about z, length sqrt 2
 } // namespace
 

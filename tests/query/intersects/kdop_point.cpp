@@ -33,9 +33,9 @@ const double approx_bound = catalog::approximate_bound("kdop_point"); // stated 
 TEST_CASE("kdop_point: fixtures", "[kdop_point]") {
     CHECK(intersects(unit6, point3{1, 1, 1}));
     CHECK_FALSE(intersects(point3{1, 1, 0x1.0000000000001p0}, unit6));
-    CHECK(intersects(corner_cut, point3{1, 1, 0.5}));                       // on the cut face
+    CHECK(intersects(corner_cut, point3{1, 1, 0.5}));                        // on the cut face
     CHECK_FALSE(intersects(corner_cut, point3{1, 1, 0x1.0000000000001p-1})); // one ulp beyond it
-    CHECK_FALSE(intersects(corner_cut, point3{1, 1, 1}));                   // the cut corner
+    CHECK_FALSE(intersects(corner_cut, point3{1, 1, 1}));                    // the cut corner
     CHECK(intersects(edge_cut, point3{1, 0.5, 0.25}));
     CHECK_FALSE(intersects(edge_cut, point3{1, 0x1.0000000000001p-1, 0.25}));
     CHECK_FALSE(intersects(empty14, point3{1, 1, 1}));

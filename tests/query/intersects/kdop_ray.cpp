@@ -34,9 +34,9 @@ TEST_CASE("kdop_ray: fixtures", "[kdop_ray]") {
     CHECK(intersects(corner_cut, ray3{{2, 2, 2}, {-1, -1, -1}}));
     CHECK_FALSE(intersects(corner_cut, ray3{{2, 2, 2}, {1, 1, 1}}));
     CHECK(intersects(ray3{{2, 2, 0.5}, {-1, -1, 0}}, corner_cut));
-    CHECK(intersects(corner_cut, ray3{{3, -1, 0.5}, {-1, 1, 0}}));   // along the cut face's line x + y = 2, z = 1/2
+    CHECK(intersects(corner_cut, ray3{{3, -1, 0.5}, {-1, 1, 0}})); // along the cut face's line x + y = 2, z = 1/2
     CHECK_FALSE(intersects(corner_cut, ray3{{3, -1, 0x1.0000000000001p-1}, {-1, 1, 0}}));
-    CHECK(intersects(unit6, ray3{{0.5, 0.5, 0.5}, {0, 0, 0}}));       // a zero direction: the origin
+    CHECK(intersects(unit6, ray3{{0.5, 0.5, 0.5}, {0, 0, 0}})); // a zero direction: the origin
     CHECK_FALSE(intersects(unit6, ray3{{2, 0.5, 0.5}, {0, 0, 0}}));
     CHECK_FALSE(intersects(empty14, ray3{{-5, -5, -5}, {1, 1, 1}}));
 }

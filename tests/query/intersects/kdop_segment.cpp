@@ -35,7 +35,7 @@ TEST_CASE("kdop_segment: fixtures", "[kdop_segment]") {
     CHECK(intersects(corner_cut, segment3{{0.5, 0.5, 0.5}, {1, 1, 1}}));
     CHECK(intersects(segment3{{2, 2, 0.5}, {1, 1, 0.5}}, corner_cut)); // ends on the cut face
     CHECK_FALSE(intersects(segment3{{2, 2, 0.5}, {0x1.0000000000001p0, 1, 0.5}}, corner_cut));
-    CHECK(intersects(unit6, segment3{{-1, 0, 0}, {2, 0, 0}}));         // along an edge
+    CHECK(intersects(unit6, segment3{{-1, 0, 0}, {2, 0, 0}})); // along an edge
     CHECK(intersects(unit6, segment3{{0.25, 0.25, 0.25}, {0.5, 0.5, 0.5}}));
     CHECK_FALSE(intersects(empty14, segment3{{-5, -5, -5}, {5, 5, 5}}));
     CHECK(intersects(edge_cut, segment3{{2, 1, 0.5}, {1, 2, 0.5}}) == false);

@@ -34,7 +34,7 @@ TEST_CASE("kdop_triangle: fixtures", "[kdop_triangle]") {
     CHECK(intersects(corner_cut, triangle3{{20, -10, -7.5}, {-10, 20, -7.5}, {-10, -10, 22.5}}));
     constexpr double d = 0x1p-20;
     CHECK_FALSE(intersects(triangle3{{20, -10, -7.5 + d}, {-10, 20, -7.5 + d}, {-10, -10, 22.5 + d}}, corner_cut));
-    CHECK(intersects(corner_cut, triangle3{{1, 1, 0.5}, {3, 3, 3}, {3, 2, 3}}));                 // a corner on the cut face
+    CHECK(intersects(corner_cut, triangle3{{1, 1, 0.5}, {3, 3, 3}, {3, 2, 3}})); // a corner on the cut face
     CHECK_FALSE(intersects(corner_cut, triangle3{{1, 1, 0x1.0000000000001p-1}, {3, 3, 3}, {3, 2, 3}}));
     CHECK_FALSE(intersects(empty14, triangle3{{-5, -5, -5}, {5, 5, 5}, {5, -5, 0}}));
     CHECK(contains(corner_cut, triangle3{{0, 0, 0}, {1, 1, 0.5}, {0, 1, 1}}));

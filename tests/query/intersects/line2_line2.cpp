@@ -20,10 +20,10 @@ const double approx_bound = catalog::approximate_bound("line2_line2"); // stated
 TEST_CASE("line2_line2: fixtures", "[line2_line2]") {
     const line2 l{{0, 0}, {1, 0}};
     CHECK(intersects(l, line2{{5, 1}, {1, 1}}));
-    CHECK_FALSE(intersects(l, line2{{0, 1}, {2, 0}}));                     // parallel
-    CHECK(intersects(l, line2{{7, 0}, {-3, 0}}));                          // the same line
-    CHECK(intersects(l, line2{{0, 1}, {1, 0x1p-1074}}));                   // barely tilted: crosses far away
-    CHECK_FALSE(intersects(l, line2{{7, 0x1p-1074}, {0, 0}}));             // a point a subnormal off it
+    CHECK_FALSE(intersects(l, line2{{0, 1}, {2, 0}}));         // parallel
+    CHECK(intersects(l, line2{{7, 0}, {-3, 0}}));              // the same line
+    CHECK(intersects(l, line2{{0, 1}, {1, 0x1p-1074}}));       // barely tilted: crosses far away
+    CHECK_FALSE(intersects(l, line2{{7, 0x1p-1074}, {0, 0}})); // a point a subnormal off it
 }
 TEST_CASE("line2_line2: CGAL 5.5's do_intersect(Line_2, Line_2) says no for crossing lines past 2^340", "[line2_line2]") {
     // Line_2_Line_2_pair gives up when is_finite fails on the double approximation of b1 c2 - b2 c1;

@@ -30,11 +30,11 @@ const double approx_bound = catalog::approximate_bound("line2_polygon2"); // sta
 TEST_CASE("line2_polygon2: fixtures", "[line2_polygon2]") {
     CHECK(intersects(line2{{2, 2}, {1, 1}}, frame));
     CHECK_FALSE(intersects(line2{{5, 0}, {0, 1}}, frame));
-    CHECK(intersects(line2{{4, 7}, {0, 1}}, frame));                 // along the right edge
-    CHECK(intersects(frame, line2{{0, 8}, {1, -1}}));                // through the vertex (4, 4)
+    CHECK(intersects(line2{{4, 7}, {0, 1}}, frame));  // along the right edge
+    CHECK(intersects(frame, line2{{0, 8}, {1, -1}})); // through the vertex (4, 4)
     CHECK_FALSE(intersects(frame, line2{{0, 0x1.0000000000001p3}, {1, -1}}));
-    CHECK(intersects(c_shape, line2{{9, 2}, {1, 0}}));               // along the notch, meets its wall
-    CHECK(intersects(line2{{0.5, 0.5}, {0, 0}}, frame));             // zero direction: the origin
+    CHECK(intersects(c_shape, line2{{9, 2}, {1, 0}}));   // along the notch, meets its wall
+    CHECK(intersects(line2{{0.5, 0.5}, {0, 0}}, frame)); // zero direction: the origin
     CHECK_FALSE(intersects(line2{{2, 2}, {0, 0}}, frame));
 }
 TEST_CASE("line2_polygon2: oracle, random and near-degenerate", "[line2_polygon2][oracle]") {

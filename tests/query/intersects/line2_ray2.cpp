@@ -19,11 +19,11 @@ const double approx_bound = catalog::approximate_bound("line2_ray2"); // stated 
 
 TEST_CASE("line2_ray2: fixtures", "[line2_ray2]") {
     const line2 l{{10, 0}, {1, 0}};
-    CHECK(intersects(l, ray2{{5, 1}, {0, -1}}));                           // the line's point on the far side
-    CHECK_FALSE(intersects(l, ray2{{5, 1}, {0, 1}}));                      // heads away
-    CHECK(intersects(l, ray2{{5, 0}, {3, 3}}));                            // starts on it
-    CHECK(intersects(ray2{{-9, 0}, {-1, 0}}, l));                          // collinear
-    CHECK_FALSE(intersects(l, ray2{{0, 1}, {1, 0}}));                      // parallel
+    CHECK(intersects(l, ray2{{5, 1}, {0, -1}}));      // the line's point on the far side
+    CHECK_FALSE(intersects(l, ray2{{5, 1}, {0, 1}})); // heads away
+    CHECK(intersects(l, ray2{{5, 0}, {3, 3}}));       // starts on it
+    CHECK(intersects(ray2{{-9, 0}, {-1, 0}}, l));     // collinear
+    CHECK_FALSE(intersects(l, ray2{{0, 1}, {1, 0}})); // parallel
 }
 TEST_CASE("line2_ray2: oracle, random and near-degenerate", "[line2_ray2][oracle]") {
     support::flat_oracle<line2, ray2>("line2_ray2", support::cases(50000), approx_bound);

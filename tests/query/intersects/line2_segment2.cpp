@@ -20,9 +20,9 @@ const double approx_bound = catalog::approximate_bound("line2_segment2"); // sta
 TEST_CASE("line2_segment2: fixtures", "[line2_segment2]") {
     const line2 l{{0, 0}, {1, 1}};
     CHECK(intersects(l, segment2{{0, 2}, {2, 0}}));
-    CHECK(intersects(l, segment2{{0, 2}, {1, 1}}));                        // ends on it
-    CHECK_FALSE(intersects(l, segment2{{0, 2}, {0.5, 1.5}}));              // stops short
-    CHECK(intersects(segment2{{5, 5}, {6, 6}}, l));                        // collinear
+    CHECK(intersects(l, segment2{{0, 2}, {1, 1}}));           // ends on it
+    CHECK_FALSE(intersects(l, segment2{{0, 2}, {0.5, 1.5}})); // stops short
+    CHECK(intersects(segment2{{5, 5}, {6, 6}}, l));           // collinear
     CHECK(intersects(l, segment2{{-3, -3}, {-3, -3}}));
 }
 TEST_CASE("line2_segment2: oracle, random and near-degenerate", "[line2_segment2][oracle]") {

@@ -20,12 +20,12 @@ const double approx_bound = catalog::approximate_bound("line_line"); // stated i
 
 TEST_CASE("line_line: fixtures", "[line_line]") {
     const line3 l{{0, 0, 0}, {1, 0, 0}};
-    CHECK(intersects(l, line3{{5, 1, 0}, {0, 1, 0}}));                     // crossing at (5, 0, 0)
-    CHECK_FALSE(intersects(l, line3{{5, 1, 1}, {0, 1, 0}}));               // skew
-    CHECK_FALSE(intersects(l, line3{{0, 1, 0}, {2, 0, 0}}));               // parallel
-    CHECK(intersects(l, line3{{7, 0, 0}, {-3, 0, 0}}));                    // the same line
-    CHECK(intersects(l, line3{{7, 0, 0}, {0, 0, 0}}));                     // a point on it
-    CHECK_FALSE(intersects(l, line3{{7, 0x1p-1074, 0}, {0, 0, 0}}));      // a point one subnormal off it
+    CHECK(intersects(l, line3{{5, 1, 0}, {0, 1, 0}}));                                   // crossing at (5, 0, 0)
+    CHECK_FALSE(intersects(l, line3{{5, 1, 1}, {0, 1, 0}}));                             // skew
+    CHECK_FALSE(intersects(l, line3{{0, 1, 0}, {2, 0, 0}}));                             // parallel
+    CHECK(intersects(l, line3{{7, 0, 0}, {-3, 0, 0}}));                                  // the same line
+    CHECK(intersects(l, line3{{7, 0, 0}, {0, 0, 0}}));                                   // a point on it
+    CHECK_FALSE(intersects(l, line3{{7, 0x1p-1074, 0}, {0, 0, 0}}));                     // a point one subnormal off it
     CHECK(intersects(line3{{0, 0, 0}, {1, 1, 1}}, line3{{1e300, 1e300, 0}, {0, 0, 1}})); // meets far away
 }
 TEST_CASE("line_line: oracle, random and near-degenerate", "[line_line][oracle]") {

@@ -28,7 +28,7 @@ const double approx_bound = catalog::approximate_bound("line_mesh"); // stated i
 
 TEST_CASE("line_mesh: fixtures", "[line_mesh]") {
     CHECK(intersects(line3{{5, 0.5, 0.5}, {1, 0, 0}}, cube));
-    CHECK(intersects(cube, line3{{5, 1, 1}, {1, 0, 0}}));                    // along an edge
+    CHECK(intersects(cube, line3{{5, 1, 1}, {1, 0, 0}})); // along an edge
     CHECK_FALSE(intersects(cube, line3{{5, 1, 0x1.0000000000001p0}, {1, 0, 0}}));
     CHECK(intersects(line3{{0.5, 0.5, 7}, {0, 0, 1}}, dented));
 }

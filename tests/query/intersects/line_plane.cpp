@@ -21,10 +21,10 @@ const double approx_bound = catalog::approximate_bound("line_plane"); // stated 
 TEST_CASE("line_plane: fixtures", "[line_plane]") {
     const plane3 P{{0, 0, 1}, 2};
     CHECK(intersects(line3{{0, 0, 0}, {1, 1, 1}}, P));
-    CHECK(intersects(P, line3{{0, 0, 2}, {1, 1, 0}}));                     // in the plane
+    CHECK(intersects(P, line3{{0, 0, 2}, {1, 1, 0}}));                         // in the plane
     CHECK_FALSE(intersects(line3{{0, 0, 0x1.0000000000001p1}, {1, 1, 0}}, P)); // parallel, one ulp above
-    CHECK(intersects(line3{{0, 0, 0}, {1, 0, 0x1p-1074}}, P));             // nearly parallel still crosses
-    CHECK_FALSE(intersects(line3{{0, 0, 0}, {0, 0, 0}}, P));               // a point off the plane
+    CHECK(intersects(line3{{0, 0, 0}, {1, 0, 0x1p-1074}}, P));                 // nearly parallel still crosses
+    CHECK_FALSE(intersects(line3{{0, 0, 0}, {0, 0, 0}}, P));                   // a point off the plane
     CHECK(intersects(line3{{0, 0, 0}, {1, 0, 0}}, plane3{{0, 0, 0}, 0}));
     CHECK_FALSE(intersects(line3{{0, 0, 0}, {1, 0, 0}}, plane3{{0, 0, 0}, 1}));
 }

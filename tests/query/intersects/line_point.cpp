@@ -21,9 +21,9 @@ const double approx_bound = catalog::approximate_bound("line_point"); // stated 
 TEST_CASE("line_point: fixtures", "[line_point]") {
     const line3 l{{1, 1, 1}, {1, 2, 3}};
     CHECK(intersects(l, point3{3, 5, 7}));
-    CHECK(intersects(point3{-1, -3, -5}, l));                              // behind the origin: a line has no start
+    CHECK(intersects(point3{-1, -3, -5}, l)); // behind the origin: a line has no start
     CHECK_FALSE(intersects(l, point3{3, 5, 0x1.0000000000001p2 + 3}));
-    CHECK(intersects(line3{{1, 2, 3}, {0, 0, 0}}, point3{1, 2, 3}));        // zero direction: the point itself
+    CHECK(intersects(line3{{1, 2, 3}, {0, 0, 0}}, point3{1, 2, 3})); // zero direction: the point itself
     CHECK_FALSE(intersects(line3{{1, 2, 3}, {0, 0, 0}}, point3{1, 2, 4}));
 }
 TEST_CASE("line_point: oracle, random and near-degenerate", "[line_point][oracle]") {

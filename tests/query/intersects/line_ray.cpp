@@ -20,12 +20,12 @@ const double approx_bound = catalog::approximate_bound("line_ray"); // stated in
 
 TEST_CASE("line_ray: fixtures", "[line_ray]") {
     const line3 l{{0, 0, 0}, {1, 0, 0}};
-    CHECK(intersects(l, ray3{{3, 2, 0}, {0, -1, 0}}));                     // heads into it
-    CHECK_FALSE(intersects(l, ray3{{3, 2, 0}, {0, 1, 0}}));                // heads away
-    CHECK(intersects(l, ray3{{3, 0, 0}, {0, 1, 5}}));                      // starts on it
-    CHECK(intersects(ray3{{-9, 0, 0}, {-1, 0, 0}}, l));                    // collinear
-    CHECK_FALSE(intersects(l, ray3{{0, 1, 0}, {1, 0, 0}}));                // parallel
-    CHECK_FALSE(intersects(l, ray3{{3, 2, 0x1p-1074}, {0, -1, 0}}));       // skew by a subnormal
+    CHECK(intersects(l, ray3{{3, 2, 0}, {0, -1, 0}}));               // heads into it
+    CHECK_FALSE(intersects(l, ray3{{3, 2, 0}, {0, 1, 0}}));          // heads away
+    CHECK(intersects(l, ray3{{3, 0, 0}, {0, 1, 5}}));                // starts on it
+    CHECK(intersects(ray3{{-9, 0, 0}, {-1, 0, 0}}, l));              // collinear
+    CHECK_FALSE(intersects(l, ray3{{0, 1, 0}, {1, 0, 0}}));          // parallel
+    CHECK_FALSE(intersects(l, ray3{{3, 2, 0x1p-1074}, {0, -1, 0}})); // skew by a subnormal
 }
 TEST_CASE("line_ray: CGAL 5.5's do_intersect(Line_3, Ray_3) is wrong when the line's point is on the far side", "[line_ray]") {
     // The oracle uses CGAL::intersection for this pair (tests/oracle/cgal_flat.cpp).

@@ -20,12 +20,12 @@ const double approx_bound = catalog::approximate_bound("line_segment"); // state
 
 TEST_CASE("line_segment: fixtures", "[line_segment]") {
     const line3 l{{0, 0, 0}, {1, 1, 0}};
-    CHECK(intersects(l, segment3{{0, 2, 0}, {2, 0, 0}}));                  // crossing at (1, 1, 0)
-    CHECK(intersects(l, segment3{{0, 2, 0}, {1, 1, 0}}));                  // ends on it
-    CHECK_FALSE(intersects(l, segment3{{0, 2, 0}, {0.5, 1.5, 0}}));        // stops short
-    CHECK(intersects(segment3{{5, 5, 0}, {6, 6, 0}}, l));                  // collinear
-    CHECK(intersects(l, segment3{{-3, -3, 0}, {-3, -3, 0}}));              // a point segment on it
-    CHECK_FALSE(intersects(l, segment3{{0, 2, 1}, {2, 0, 1}}));            // skew
+    CHECK(intersects(l, segment3{{0, 2, 0}, {2, 0, 0}}));           // crossing at (1, 1, 0)
+    CHECK(intersects(l, segment3{{0, 2, 0}, {1, 1, 0}}));           // ends on it
+    CHECK_FALSE(intersects(l, segment3{{0, 2, 0}, {0.5, 1.5, 0}})); // stops short
+    CHECK(intersects(segment3{{5, 5, 0}, {6, 6, 0}}, l));           // collinear
+    CHECK(intersects(l, segment3{{-3, -3, 0}, {-3, -3, 0}}));       // a point segment on it
+    CHECK_FALSE(intersects(l, segment3{{0, 2, 1}, {2, 0, 1}}));     // skew
 }
 TEST_CASE("line_segment: oracle, random and near-degenerate", "[line_segment][oracle]") {
     support::flat_oracle<line3, segment3>("line_segment", support::cases(50000), approx_bound);

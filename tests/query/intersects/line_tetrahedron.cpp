@@ -30,7 +30,7 @@ TEST_CASE("line_tetrahedron: fixtures", "[line_tetrahedron]") {
     CHECK(intersects(T, line3{{7, 0, 0}, {3, 0, 0}}));                         // along an edge
     CHECK(intersects(line3{{-1, 0.5, 0}, {1, 0, 0}}, T));                      // in the face z = 0
     CHECK_FALSE(intersects(line3{{-1, 0.5, -0x1p-1074}, {1, 0, 0}}, T));
-    CHECK(intersects(line3{{1, 1, 1}, {-1, -1, -1}}, T));                      // through the slanted face and a vertex
+    CHECK(intersects(line3{{1, 1, 1}, {-1, -1, -1}}, T)); // through the slanted face and a vertex
     const tetrahedron3 flat{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {1, 1, 0}};
     CHECK(intersects(line3{{0.5, 0.5, 3}, {0, 0, 1}}, flat));
     CHECK_FALSE(intersects(line3{{1.5, 1.5, 3}, {0, 0, 1}}, flat));
@@ -71,7 +71,8 @@ TEST_CASE("line_tetrahedron: the rounded stage never claims what the oracle deni
         one_claimed += kind == 1;
         const bool truth = ray ? support::flat_truth(ray3{l.origin, l.direction}, t) : support::flat_truth(l, t);
         if ((got == certainty::yes) != truth && ++wrong <= 5)
-            std::printf("  rounded %s stage wrong: %s %s\n", ray ? "ray" : "line", support::shape_str(l).c_str(), support::shape_str(t).c_str());
+            std::printf("  rounded %s stage wrong: %s %s\n", ray ? "ray" : "line", support::shape_str(l).c_str(),
+                        support::shape_str(t).c_str());
     }
     std::printf("[cases] tetrahedron rounded line stage: %ld cases, %ld claimed (%ld of %ld random at scale 1), wrong %ld\n", n, claimed,
                 one_claimed, one_n, wrong);

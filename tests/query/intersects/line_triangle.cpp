@@ -20,14 +20,14 @@ const double approx_bound = catalog::approximate_bound("line_triangle"); // stat
 
 TEST_CASE("line_triangle: fixtures", "[line_triangle]") {
     const triangle3 t{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-    CHECK(intersects(line3{{0.25, 0.25, 5}, {0, 0, 1}}, t));               // both sides: no start
-    CHECK(intersects(line3{{0.5, 0, 5}, {0, 0, -1}}, t));                  // through an edge
-    CHECK(intersects(t, line3{{1, 0, 5}, {0, 0, 3}}));                     // through a vertex
+    CHECK(intersects(line3{{0.25, 0.25, 5}, {0, 0, 1}}, t));                       // both sides: no start
+    CHECK(intersects(line3{{0.5, 0, 5}, {0, 0, -1}}, t));                          // through an edge
+    CHECK(intersects(t, line3{{1, 0, 5}, {0, 0, 3}}));                             // through a vertex
     CHECK_FALSE(intersects(line3{{0.5, 0x1.0000000000001p-1, 5}, {0, 0, -1}}, t)); // one ulp outside
-    CHECK(intersects(line3{{-1, 0.5, 0}, {1, 0, 0}}, t));                  // in the plane, across
-    CHECK_FALSE(intersects(line3{{-1, 0.5, 1}, {1, 0, 0}}, t));            // parallel above
+    CHECK(intersects(line3{{-1, 0.5, 0}, {1, 0, 0}}, t));                          // in the plane, across
+    CHECK_FALSE(intersects(line3{{-1, 0.5, 1}, {1, 0, 0}}, t));                    // parallel above
     CHECK(intersects(line3{{0, 0, 0}, {1, 1, 0}}, triangle3{{1, 1, 1}, {2, 2, 2}, {3, 3, 3}}) == false);
-    CHECK(intersects(line3{{0, 0, 0}, {1, 1, 1}}, triangle3{{1, 1, 1}, {2, 2, 2}, {3, 3, 3}}));         // collinear triangle on the line
+    CHECK(intersects(line3{{0, 0, 0}, {1, 1, 1}}, triangle3{{1, 1, 1}, {2, 2, 2}, {3, 3, 3}})); // collinear triangle on the line
 }
 TEST_CASE("line_triangle: oracle, random and near-degenerate", "[line_triangle][oracle]") {
     support::flat_oracle<line3, triangle3>("line_triangle", support::cases(50000), approx_bound);

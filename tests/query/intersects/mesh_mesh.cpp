@@ -30,9 +30,10 @@ TEST_CASE("mesh_mesh: fixtures", "[mesh_mesh]") {
     for (unsigned i = 0; i < 8; ++i) up[i] = cube.vertices[i] + vec3{0.5, 0, 0.25};
     CHECK(intersects(dented, mesh3{up, support::cube_triangles})); // overlaps
     std::array<point3, 8> small;
-    for (unsigned i = 0; i < 8; ++i) small[i] = point3{0.4 + 0.1 * cube.vertices[i].x, 0.4 + 0.1 * cube.vertices[i].y, 0.6 + 0.1 * cube.vertices[i].z};
-    CHECK_FALSE(intersects(dented, mesh3{small, support::cube_triangles}));  // a small cube in the dent
-    for (unsigned i = 0; i < 8; ++i) small[i].z -= 0.5;                        // now inside, under the dent
+    for (unsigned i = 0; i < 8; ++i)
+        small[i] = point3{0.4 + 0.1 * cube.vertices[i].x, 0.4 + 0.1 * cube.vertices[i].y, 0.6 + 0.1 * cube.vertices[i].z};
+    CHECK_FALSE(intersects(dented, mesh3{small, support::cube_triangles})); // a small cube in the dent
+    for (unsigned i = 0; i < 8; ++i) small[i].z -= 0.5;                     // now inside, under the dent
     CHECK(intersects(dented, mesh3{small, support::cube_triangles}));
 }
 TEST_CASE("mesh_mesh: oracle, random and near-degenerate", "[mesh_mesh][oracle]") {

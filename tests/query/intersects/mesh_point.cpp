@@ -28,12 +28,12 @@ const double approx_bound = catalog::approximate_bound("mesh_point"); // stated 
 } // namespace
 
 TEST_CASE("mesh_point: fixtures", "[mesh_point]") {
-    CHECK(intersects(cube, point3{0.3, 0.3, 0.3}));                 // the ray along +x meets the diagonal y = z: retried
-    CHECK(intersects(point3{1, 0.5, 0.25}, cube));                  // on a face
+    CHECK(intersects(cube, point3{0.3, 0.3, 0.3})); // the ray along +x meets the diagonal y = z: retried
+    CHECK(intersects(point3{1, 0.5, 0.25}, cube));  // on a face
     CHECK_FALSE(intersects(cube, point3{0x1.0000000000001p0, 0.5, 0.25}));
-    CHECK(intersects(dented, point3{0.5, 0.5, 0.2}));               // under the dent
-    CHECK_FALSE(intersects(dented, point3{0.5, 0.5, 0.5}));         // in the dent
-    CHECK(intersects(dented, point3{0.5, 0.5, 0.25}));              // its apex
+    CHECK(intersects(dented, point3{0.5, 0.5, 0.2}));       // under the dent
+    CHECK_FALSE(intersects(dented, point3{0.5, 0.5, 0.5})); // in the dent
+    CHECK(intersects(dented, point3{0.5, 0.5, 0.25}));      // its apex
     CHECK(intersects(dented, point3{0.1, 0.5, 0.8}));
     CHECK_FALSE(intersects(dented, point3{0.1, 0.5, 0.9}));
     CHECK(contains(dented, point3{0.5, 0.5, 0.2}));

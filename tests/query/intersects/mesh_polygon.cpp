@@ -38,10 +38,11 @@ const double approx_bound = catalog::approximate_bound("mesh_polygon"); // state
 
 TEST_CASE("mesh_polygon: fixtures", "[mesh_polygon]") {
     CHECK(intersects(support::cube, holed)); // the cube's top face is at z = 1
-    static constexpr std::array<point3, 3> above{{{0.25, 0.25, 0x1.0000000000001p0}, {0.75, 0.25, 0x1.0000000000001p0}, {0.5, 0.75, 0x1.0000000000001p0}}};
+    static constexpr std::array<point3, 3> above{
+        {{0.25, 0.25, 0x1.0000000000001p0}, {0.75, 0.25, 0x1.0000000000001p0}, {0.5, 0.75, 0x1.0000000000001p0}}};
     CHECK_FALSE(intersects(polygon3{above, {}, {0, 1, 2}, 2}, support::cube));
     static constexpr std::array<point3, 3> inside{{{0.25, 0.25, 0.75}, {0.75, 0.25, 0.75}, {0.5, 0.75, 0.75}}};
-    CHECK(intersects(support::cube, polygon3{inside, {}, {0, 1, 2}, 2})); // wholly inside the solid
+    CHECK(intersects(support::cube, polygon3{inside, {}, {0, 1, 2}, 2}));         // wholly inside the solid
     CHECK_FALSE(intersects(support::dented, polygon3{inside, {}, {0, 1, 2}, 2})); // in the dent, which reaches down to z = 1/4
     static constexpr std::array<point3, 3> low{{{0.25, 0.25, 0.125}, {0.75, 0.25, 0.125}, {0.5, 0.75, 0.125}}};
     CHECK(intersects(support::dented, polygon3{low, {}, {0, 1, 2}, 2})); // below the dent: inside the solid

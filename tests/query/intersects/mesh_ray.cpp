@@ -30,7 +30,7 @@ TEST_CASE("mesh_ray: fixtures", "[mesh_ray]") {
     CHECK(intersects(cube, ray3{{0.3, 0.3, 0.3}, {1, 2, 3}}));
     CHECK_FALSE(intersects(dented, ray3{{0.5, 0.5, 0.5}, {0, 0, 1}}));
     CHECK(intersects(dented, ray3{{0.5, 0.5, 0.5}, {0, 0, -1}}));
-    CHECK(intersects(ray3{{-1, 0, 0.5}, {1, 0, 0}}, cube));            // along the face y = 0
+    CHECK(intersects(ray3{{-1, 0, 0.5}, {1, 0, 0}}, cube)); // along the face y = 0
     CHECK_FALSE(intersects(ray3{{-1, -0x1p-1074, 0.5}, {1, 0, 0}}, cube));
 }
 TEST_CASE("mesh_ray: oracle, random and near-degenerate", "[mesh_ray][oracle]") {

@@ -34,47 +34,61 @@ const double approx_bound = catalog::approximate_bound("mesh_segment"); // state
 
 // The unit cube and a fin on its top face: two back-to-back triangles (0.5, 0.5, 1), (2, 0.5, 1),
 // (0.5, 2, 1) (closed: each edge used twice), reaching past the cube.
-constexpr std::array<point3, 11> fin_vertices{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}, {1, 1, 1}, {0.5, 0.5, 1}, {2, 0.5, 1}, {0.5, 2, 1}}};
-constexpr std::array<std::array<std::uint32_t, 3>, 14> fin_triangles{{{0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}, {0, 1, 5}, {0, 5, 4}, {2, 6, 7},
-                                                                      {2, 7, 3}, {0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {8, 9, 10}, {8, 10, 9}}};
+constexpr std::array<point3, 11> fin_vertices{
+    {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}, {1, 1, 1}, {0.5, 0.5, 1}, {2, 0.5, 1}, {0.5, 2, 1}}};
+constexpr std::array<std::array<std::uint32_t, 3>, 14> fin_triangles{{{0, 4, 6},
+                                                                      {0, 6, 2},
+                                                                      {1, 3, 7},
+                                                                      {1, 7, 5},
+                                                                      {0, 1, 5},
+                                                                      {0, 5, 4},
+                                                                      {2, 6, 7},
+                                                                      {2, 7, 3},
+                                                                      {0, 2, 3},
+                                                                      {0, 3, 1},
+                                                                      {4, 5, 7},
+                                                                      {4, 7, 6},
+                                                                      {8, 9, 10},
+                                                                      {8, 10, 9}}};
 constexpr mesh3 finned{fin_vertices, fin_triangles};
 // The box [-2048, 1] x [0, 1] x [0, 1] (the cube's triangles): a segment along it ending 2^-52 past
 // x = 1 leaves it at t = 1 - 2^-52 / 1025, with no double between that and 1, so the last piece is
 // decided at its exact rational midpoint.
-constexpr std::array<point3, 8> long_vertices{{{-2048, 0, 0}, {1, 0, 0}, {-2048, 1, 0}, {1, 1, 0}, {-2048, 0, 1}, {1, 0, 1}, {-2048, 1, 1}, {1, 1, 1}}};
+constexpr std::array<point3, 8> long_vertices{
+    {{-2048, 0, 0}, {1, 0, 0}, {-2048, 1, 0}, {1, 1, 0}, {-2048, 0, 1}, {1, 0, 1}, {-2048, 1, 1}, {1, 1, 1}}};
 constexpr mesh3 long_box{long_vertices, support::cube_triangles};
 } // namespace
 
 TEST_CASE("mesh_segment: fixtures", "[mesh_segment]") {
     CHECK(intersects(cube, segment3{{-1, 0.5, 0.5}, {2, 0.5, 0.5}}));
-    CHECK(intersects(cube, segment3{{0.2, 0.2, 0.2}, {0.3, 0.3, 0.3}}));      // inside
+    CHECK(intersects(cube, segment3{{0.2, 0.2, 0.2}, {0.3, 0.3, 0.3}}));       // inside
     CHECK_FALSE(intersects(dented, segment3{{0.5, 0.5, 0.5}, {0.5, 0.5, 2}})); // in the dent
-    CHECK(intersects(dented, segment3{{0.5, 0.5, 0.5}, {0.5, 0.5, 0.25}}));   // down to the apex
+    CHECK(intersects(dented, segment3{{0.5, 0.5, 0.5}, {0.5, 0.5, 0.25}}));    // down to the apex
     CHECK_FALSE(intersects(dented, segment3{{0.5, 0.5, 0.5}, {0.5, 0.5, 0x1.0000000000001p-2}}));
     CHECK_FALSE(intersects(segment3{{0x1.0000000000001p0, 0, 0}, {2, 1, 1}}, cube));
 }
 TEST_CASE("mesh_segment: contains, fixtures", "[mesh_segment]") {
     using support::cube;
     CHECK(contains(cube, segment3{{0.2, 0.2, 0.2}, {0.8, 0.8, 0.8}}));
-    CHECK(contains(cube, segment3{{0, 0, 0}, {1, 1, 1}}));             // corner to corner
-    CHECK(contains(cube, segment3{{0.5, 0.5, 0.5}, {0.5, 0.5, 1}}));   // up to the top face
+    CHECK(contains(cube, segment3{{0, 0, 0}, {1, 1, 1}}));           // corner to corner
+    CHECK(contains(cube, segment3{{0.5, 0.5, 0.5}, {0.5, 0.5, 1}})); // up to the top face
     CHECK_FALSE(contains(cube, segment3{{0.5, 0.5, 0.5}, {0.5, 0.5, 0x1.0000000000001p0}}));
-    CHECK(contains(cube, segment3{{0.1, 0.2, 1}, {0.9, 0.7, 1}}));     // on the top face, across its diagonal
-    CHECK(contains(cube, segment3{{0, 0, 0}, {1, 0, 0}}));             // along an edge
+    CHECK(contains(cube, segment3{{0.1, 0.2, 1}, {0.9, 0.7, 1}})); // on the top face, across its diagonal
+    CHECK(contains(cube, segment3{{0, 0, 0}, {1, 0, 0}}));         // along an edge
     CHECK_FALSE(contains(cube, segment3{{0, 0, 0}, {1.5, 0, 0}}));
     CHECK_FALSE(contains(cube, segment3{{0.5, 0.5, 1}, {1.5, 0.5, 1}})); // on the top face's plane, then past it
     CHECK(contains(cube, segment3{{0.5, 0.5, 0.5}, {0.5, 0.5, 0.5}}));
     CHECK_FALSE(contains(cube, segment3{{2, 2, 2}, {2, 2, 2}}));
     CHECK(contains(support::dented, segment3{{0.5, 0.5, 0.1}, {0.5, 0.5, 0.25}})); // up to the dent's apex
     CHECK_FALSE(contains(support::dented, segment3{{0.5, 0.5, 0.1}, {0.5, 0.5, 0x1.0000000000001p-2}}));
-    CHECK(contains(support::dented, segment3{{0.1, 0.1, 0.2}, {0.9, 0.9, 0.2}}));  // below the apex
+    CHECK(contains(support::dented, segment3{{0.1, 0.1, 0.2}, {0.9, 0.9, 0.2}}));       // below the apex
     CHECK_FALSE(contains(support::dented, segment3{{0.1, 0.5, 0.9}, {0.9, 0.5, 0.9}})); // through the dent
-    CHECK_FALSE(contains(support::dented, segment3{{0, 0, 1}, {1, 1, 1}})); // over the dent's opening, corner to corner
-    CHECK(contains(support::dented, segment3{{0, 0, 1}, {1, 0, 1}}));      // its rim
+    CHECK_FALSE(contains(support::dented, segment3{{0, 0, 1}, {1, 1, 1}}));             // over the dent's opening, corner to corner
+    CHECK(contains(support::dented, segment3{{0, 0, 1}, {1, 0, 1}}));                   // its rim
     REQUIRE(mesh3::make(fin_vertices, fin_triangles).has_value());
-    CHECK(contains(finned, segment3{{0.2, 0.6, 1}, {1.5, 0.6, 1}}));   // the top face, then the fin
-    CHECK(contains(finned, segment3{{1.2, 0.6, 1}, {1.5, 0.9, 1}}));   // on the fin alone
-    CHECK(contains(finned, segment3{{0.25, 0.625, 1}, {1.875, 0.625, 1}}));   // to the fin's edge x + y = 5/2
+    CHECK(contains(finned, segment3{{0.2, 0.6, 1}, {1.5, 0.6, 1}}));                            // the top face, then the fin
+    CHECK(contains(finned, segment3{{1.2, 0.6, 1}, {1.5, 0.9, 1}}));                            // on the fin alone
+    CHECK(contains(finned, segment3{{0.25, 0.625, 1}, {1.875, 0.625, 1}}));                     // to the fin's edge x + y = 5/2
     CHECK_FALSE(contains(finned, segment3{{0.25, 0.625, 1}, {0x1.e000000000001p0, 0.625, 1}})); // one ulp past it
     CHECK_FALSE(contains(finned, segment3{{0.2, 0.6, 1}, {2.2, 0.6, 1}}));
     CHECK_FALSE(contains(finned, segment3{{1.5, 0.6, 0.5}, {1.5, 0.6, 1.5}})); // across the fin, outside the cube
@@ -89,7 +103,8 @@ TEST_CASE("mesh_segment: contains, fixtures", "[mesh_segment]") {
                                            {0, 0, 0},
                                            {0, 0, 0},
                                            {0, 0, 0}}};
-    const std::array<std::array<std::uint32_t, 3>, 8> octahedron{{{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}}};
+    const std::array<std::array<std::uint32_t, 3>, 8> octahedron{
+        {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}}};
     const mesh3 odd{collapsed, octahedron};
     CHECK_FALSE(contains(odd, segment3{{0, 0, 0}, {0, 0, 0x1.e6e6ep+743}})); // the far end is outside
     CHECK_FALSE(contains(odd, point3{0, 0, 0x1.e6e6ep+743}));

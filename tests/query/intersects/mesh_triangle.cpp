@@ -40,30 +40,31 @@ const double approx_bound = catalog::approximate_bound("mesh_triangle"); // stat
 } // namespace
 
 TEST_CASE("mesh_triangle: fixtures", "[mesh_triangle]") {
-    CHECK(intersects(cube, triangle3{{0.2, 0.2, 0.2}, {0.3, 0.2, 0.2}, {0.2, 0.3, 0.2}})); // inside
+    CHECK(intersects(cube, triangle3{{0.2, 0.2, 0.2}, {0.3, 0.2, 0.2}, {0.2, 0.3, 0.2}}));         // inside
     CHECK_FALSE(intersects(dented, triangle3{{0.4, 0.5, 0.5}, {0.6, 0.5, 0.5}, {0.5, 0.6, 0.9}})); // in the dent
     CHECK(intersects(dented, triangle3{{0.4, 0.5, 0.5}, {0.6, 0.5, 0.5}, {0.5, 0.5, 0.25}}));
-    CHECK(intersects(cube, triangle3{{-1, -1, 0}, {3, -1, 0}, {-1, 3, 0}}));                 // in the bottom face's plane
+    CHECK(intersects(cube, triangle3{{-1, -1, 0}, {3, -1, 0}, {-1, 3, 0}})); // in the bottom face's plane
     CHECK_FALSE(intersects(cube, triangle3{{-1, -1, -0x1p-1074}, {3, -1, -0x1p-1074}, {-1, 3, -0x1p-1074}}));
 }
 TEST_CASE("mesh_triangle: contains, fixtures", "[mesh_triangle]") {
     CHECK(contains(cube, triangle3{{0.2, 0.2, 0.2}, {0.8, 0.2, 0.2}, {0.2, 0.8, 0.8}}));
-    CHECK(contains(cube, triangle3{{0, 0, 1}, {1, 0, 1}, {0, 1, 1}}));            // on the top face
-    CHECK(contains(cube, triangle3{{0.2, 0.2, 1}, {0.8, 0.2, 1}, {0.2, 0.8, 1}}));  // inside the top face
-    CHECK(contains(cube, triangle3{{0, 0.1, 0.1}, {0, 0.9, 0.1}, {0, 0.5, 0.9}}));  // on a side face
-    CHECK(contains(cube, triangle3{{0, 0, 0}, {1, 1, 0}, {1, 1, 1}}));              // a diagonal plane, along edges
+    CHECK(contains(cube, triangle3{{0, 0, 1}, {1, 0, 1}, {0, 1, 1}}));             // on the top face
+    CHECK(contains(cube, triangle3{{0.2, 0.2, 1}, {0.8, 0.2, 1}, {0.2, 0.8, 1}})); // inside the top face
+    CHECK(contains(cube, triangle3{{0, 0.1, 0.1}, {0, 0.9, 0.1}, {0, 0.5, 0.9}})); // on a side face
+    CHECK(contains(cube, triangle3{{0, 0, 0}, {1, 1, 0}, {1, 1, 1}}));             // a diagonal plane, along edges
     CHECK(contains(cube, triangle3{{0, 0, 0}, {1, 0, 0}, {1, 1, 1}}));
     CHECK_FALSE(contains(cube, triangle3{{0, 0, 1}, {0x1.0000000000001p0, 0, 1}, {0, 1, 1}}));
     CHECK_FALSE(contains(dented, triangle3{{0.1, 0.1, 0.5}, {0.9, 0.1, 0.5}, {0.5, 0.9, 0.5}})); // around the dent
-    CHECK(contains(dented, triangle3{{0.1, 0.1, 0.2}, {0.9, 0.1, 0.2}, {0.5, 0.9, 0.2}}));      // below its apex
-    CHECK(contains(dented, triangle3{{0.1, 0.1, 0.25}, {0.9, 0.1, 0.25}, {0.5, 0.9, 0.25}}));   // touching the apex
-    CHECK_FALSE(contains(dented, triangle3{{0.1, 0.1, 0x1.0000000000001p-2}, {0.9, 0.1, 0x1.0000000000001p-2}, {0.5, 0.9, 0x1.0000000000001p-2}}));
-    CHECK_FALSE(contains(dented, triangle3{{0, 0, 1}, {1, 0, 1}, {0, 1, 1}}));       // over the dent's opening
+    CHECK(contains(dented, triangle3{{0.1, 0.1, 0.2}, {0.9, 0.1, 0.2}, {0.5, 0.9, 0.2}}));       // below its apex
+    CHECK(contains(dented, triangle3{{0.1, 0.1, 0.25}, {0.9, 0.1, 0.25}, {0.5, 0.9, 0.25}}));    // touching the apex
+    CHECK_FALSE(
+        contains(dented, triangle3{{0.1, 0.1, 0x1.0000000000001p-2}, {0.9, 0.1, 0x1.0000000000001p-2}, {0.5, 0.9, 0x1.0000000000001p-2}}));
+    CHECK_FALSE(contains(dented, triangle3{{0, 0, 1}, {1, 0, 1}, {0, 1, 1}}));        // over the dent's opening
     CHECK_FALSE(contains(dented, triangle3{{0, 0, 1}, {1, 1, 1}, {0.5, 0.5, 0.25}})); // down the dent, vertices on the surface
     CHECK(contains(dented, triangle3{{0, 0, 0}, {1, 1, 0}, {0.5, 0.5, 0.25}}));       // under the dent, up to its apex
     CHECK(contains(dented, triangle3{{0, 1, 0}, {1, 0, 0}, {0.5, 0.5, 0.25}}));
     CHECK_FALSE(contains(dented, triangle3{{0, 1, 0}, {1, 0, 0}, {0.5, 0.5, 0x1.0000000000001p-2}}));
-    CHECK(contains(cube, triangle3{{0.5, 0.5, 0.5}, {0.5, 0.5, 0.5}, {1, 1, 1}}));   // collinear: a segment
+    CHECK(contains(cube, triangle3{{0.5, 0.5, 0.5}, {0.5, 0.5, 0.5}, {1, 1, 1}})); // collinear: a segment
     CHECK_FALSE(contains(cube, triangle3{{0.5, 0.5, 0.5}, {0.75, 0.75, 0.75}, {1.5, 1.5, 1.5}}));
     CHECK(contains<conservative>(cube, triangle3{{0.2, 0.2, 0.2}, {0.8, 0.2, 0.2}, {0.2, 0.8, 0.8}}));
     CHECK_FALSE(contains<aggressive>(dented, triangle3{{0.1, 0.1, 0.5}, {0.9, 0.1, 0.5}, {0.5, 0.9, 0.5}}));
@@ -82,7 +83,7 @@ TEST_CASE("mesh_triangle: contains on a self-intersecting mesh", "[mesh_triangle
     std::vector<std::array<std::uint32_t, 3>> t(support::cube_triangles.begin(), support::cube_triangles.end());
     for (const auto& f : support::cube_triangles) t.push_back({f[0] + 8, f[1] + 8, f[2] + 8});
     const mesh3 two{v, t};
-    CHECK(contains(two, triangle3{{0.5, 0.5, 1}, {1.1, 0.45, 1}, {1.1, 0.55, 1}}));  // the top face, then the second box
+    CHECK(contains(two, triangle3{{0.5, 0.5, 1}, {1.1, 0.45, 1}, {1.1, 0.55, 1}})); // the top face, then the second box
     CHECK(contains(two, triangle3{{0.5, 0.5, 1}, {1.1, 0.41, 1}, {0.9, 0.45, 1}}));
     // a corner x > 1, y < 0.4 outside both, cut off by the top face's edge x = 1 and the second
     // box's face y = 0.4, which cross at (1, 0.4, 1)
@@ -115,7 +116,8 @@ TEST_CASE("mesh_triangle: contains in blocks glued, overlapping or nested, again
     (void)support::contains_in_store(
         "mesh_triangle contains, blocks glued, overlapping or nested", support::cases(4000), 43, approx_bound,
         [](support::rng& r, support::mesh_store& store) { return support::triangle_in_blocks(r, store); },
-        [](const mesh3& m, const triangle3& t) { return support::triangle_in_mesh_truth(m, t); }, [](const mesh3&, const triangle3&) { return false; });
+        [](const mesh3& m, const triangle3& t) { return support::triangle_in_mesh_truth(m, t); },
+        [](const mesh3&, const triangle3&) { return false; });
 }
 TEST_CASE("mesh_triangle: contains against the oracle, random and near-degenerate", "[mesh_triangle][oracle]") {
     support::mesh_store store;
@@ -152,7 +154,8 @@ TEST_CASE("mesh_triangle: contains on self-crossing surfaces against the oracle"
             UNSCOPED_INFO(support::shape_str(m) + " " + support::shape_str(t) + " truth " + (truth ? "contained" : "not contained"));
         }
     }
-    std::printf("[cases] mesh_triangle contains, self-crossing surfaces: %ld cases, %ld contained, %ld skipped, exact disagreements %ld\n", n, yes, skipped, wrong);
+    std::printf("[cases] mesh_triangle contains, self-crossing surfaces: %ld cases, %ld contained, %ld skipped, exact disagreements %ld\n",
+                n, yes, skipped, wrong);
     CHECK(wrong == 0);
     CHECK(yes > n / 20);
 }

@@ -34,12 +34,12 @@ TEST_CASE("obb_obb: fixtures (closed boxes, touching counts)", "[obb_obb]") {
     const obb3 A{{0, 0, 0}, {vec3{1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1}}, {1, 1, 1}};
     // a box rotated 45 degrees about z (axes (1, 1, 0) and (-1, 1, 0), not unit: a parallelepiped)
     const obb3 D{{3, 0, 0}, {vec3{1, 1, 0}, vec3{-1, 1, 0}, vec3{0, 0, 1}}, {1, 1, 1}};
-    CHECK(intersects(A, D));  // D's corner (3 - 2, 0, 0) = (1, 0, 0) lies on A's face x = 1
+    CHECK(intersects(A, D)); // D's corner (3 - 2, 0, 0) = (1, 0, 0) lies on A's face x = 1
     CHECK_FALSE(intersects(A, obb3{{3.0000000000000004, 0, 0}, D.axes, D.half_extents}));
-    CHECK(intersects(A, obb3{{2, 2, 2}, A.axes, {1, 1, 1}}));                       // corner to corner
+    CHECK(intersects(A, obb3{{2, 2, 2}, A.axes, {1, 1, 1}})); // corner to corner
     CHECK_FALSE(intersects(A, obb3{{2, 2, 2.0000000000000004}, A.axes, {1, 1, 1}}));
-    CHECK(intersects(A, obb3{{0.5, 0.5, 0.5}, D.axes, {0.1, 0.1, 0.1}}));           // inside
-    CHECK(intersects(A, obb3{{0, 0, 5}, A.axes, {0, 0, 4}}));                       // a flat box (a point) on the face
+    CHECK(intersects(A, obb3{{0.5, 0.5, 0.5}, D.axes, {0.1, 0.1, 0.1}})); // inside
+    CHECK(intersects(A, obb3{{0, 0, 5}, A.axes, {0, 0, 4}}));             // a flat box (a point) on the face
     CHECK_FALSE(intersects(A, obb3{{0, 0, 5}, A.axes, {0, 0, 0x1.fffffffffffffp1}}));
     // two coplanar flat boxes (rectangles in z = 0) missing each other in the plane: needs the
     // in-plane axes, none of the 15 separates them
@@ -57,9 +57,9 @@ TEST_CASE("obb_obb: rewritten boxes and swapped arguments give the same answer",
 }
 
 TEST_CASE("obb_obb: contains(obb, obb)", "[obb_obb][oracle]") {
-    support::contains_oracle<obb3, obb3>("obb_obb (obb around obb)", support::cases(10000), approx_bound,
-                                     [](support::rng& r) { return support::obb_case<obb3, obb3>::random(r); },
-                                     support::obb_holding<obb3>);
+    support::contains_oracle<obb3, obb3>(
+        "obb_obb (obb around obb)", support::cases(10000), approx_bound,
+        [](support::rng& r) { return support::obb_case<obb3, obb3>::random(r); }, support::obb_holding<obb3>);
 }
 
 } // namespace test_query_obb_obb

@@ -26,11 +26,11 @@ std::vector<std::pair<obb3, plane3>> variants(const obb3& a, const plane3& b, su
 
 TEST_CASE("obb_plane: fixtures", "[obb_plane]") {
     const obb3 D{{0, 0, 0}, {vec3{1, 1, 0}, vec3{-1, 1, 0}, vec3{0, 0, 1}}, {1, 1, 1}};
-    CHECK(intersects(D, plane3{{1, 0, 0}, 2}));                    // x = 2 touches the corner edge
+    CHECK(intersects(D, plane3{{1, 0, 0}, 2})); // x = 2 touches the corner edge
     CHECK_FALSE(intersects(D, plane3{{1, 0, 0}, 2.0000000000000004}));
-    CHECK(intersects(plane3{{1, 1, 0}, 2}, D));                    // x + y = 2 holds a face
-    CHECK(intersects(D, plane3{{0, 0, 0}, 0}));                    // the zero plane is everything
-    CHECK_FALSE(intersects(D, plane3{{0, 0, 0}, 1}));              // and nothing
+    CHECK(intersects(plane3{{1, 1, 0}, 2}, D));       // x + y = 2 holds a face
+    CHECK(intersects(D, plane3{{0, 0, 0}, 0}));       // the zero plane is everything
+    CHECK_FALSE(intersects(D, plane3{{0, 0, 0}, 1})); // and nothing
 }
 TEST_CASE("obb_plane: oracle", "[obb_plane][oracle]") {
     support::run_obb_pair<obb3, plane3>("obb_plane", support::cases(20000), approx_bound, near_case, random_case);

@@ -30,9 +30,9 @@ std::vector<std::pair<obb3, point3>> variants(const obb3& a, const point3& b, su
 
 TEST_CASE("obb_point: fixtures", "[obb_point]") {
     const obb3 D{{0, 0, 0}, {vec3{1, 1, 0}, vec3{-1, 1, 0}, vec3{0, 0, 1}}, {1, 1, 1}};
-    CHECK(intersects(D, point3{2, 0, 0}));  // a corner of the rotated (and scaled) box
+    CHECK(intersects(D, point3{2, 0, 0})); // a corner of the rotated (and scaled) box
     CHECK_FALSE(intersects(D, point3{2.0000000000000004, 0, 0}));
-    CHECK(intersects(point3{1, 1, 1}, D));  // on an edge
+    CHECK(intersects(point3{1, 1, 1}, D)); // on an edge
     CHECK_FALSE(intersects(obb3{{0, 0, 0}, D.axes, {1, 1, -0.0 - 1}}, point3{0, 0, 0}));
 }
 TEST_CASE("obb_point: oracle", "[obb_point][oracle]") {
@@ -43,9 +43,9 @@ TEST_CASE("obb_point: rewritten shapes give the same answer", "[obb_point]") {
 }
 
 TEST_CASE("obb_point: contains(obb, point)", "[obb_point][oracle]") {
-    support::contains_oracle<obb3, point3>("obb_point (obb around point)", support::cases(10000), approx_bound,
-                                     [](support::rng& r) { return support::obb_case<obb3, point3>::random(r); },
-                                     support::obb_holding<point3>);
+    support::contains_oracle<obb3, point3>(
+        "obb_point (obb around point)", support::cases(10000), approx_bound,
+        [](support::rng& r) { return support::obb_case<obb3, point3>::random(r); }, support::obb_holding<point3>);
 }
 
 } // namespace test_query_obb_point

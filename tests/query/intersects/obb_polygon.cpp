@@ -42,7 +42,7 @@ TEST_CASE("obb_polygon: fixtures", "[obb_polygon]") {
     CHECK_FALSE(intersects(obb3{{2, 2, 1}, turned, {0x1.fffffffffffffp-2, 0x1.fffffffffffffp-2, 1}}, holed));
     CHECK(intersects(holed, obb3{{0.5, 0.5, 5}, turned, {0.25, 0.25, 4}}));
     CHECK_FALSE(intersects(holed, obb3{{0.5, 0.5, 5}, turned, {0.25, 0.25, 0x1.fffffffffffffp1}}));
-    CHECK(intersects(obb3{{3.5, 3.5, 1}, unit, {0.25, 0.25, 0}}, holed));  // flat, in the plane, inside
+    CHECK(intersects(obb3{{3.5, 3.5, 1}, unit, {0.25, 0.25, 0}}, holed));   // flat, in the plane, inside
     CHECK_FALSE(intersects(obb3{{2, 2, 1}, unit, {0.25, 0.25, 0}}, holed)); // flat, in the hole
 }
 TEST_CASE("obb_polygon: oracle, random and near-degenerate", "[obb_polygon][oracle]") {

@@ -31,11 +31,11 @@ std::vector<std::pair<obb3, segment3>> variants(const obb3& a, const segment3& b
 
 TEST_CASE("obb_segment: fixtures", "[obb_segment]") {
     const obb3 D{{0, 0, 0}, {vec3{1, 1, 0}, vec3{-1, 1, 0}, vec3{0, 0, 1}}, {1, 1, 1}};
-    CHECK(intersects(D, segment3{{2, 0, 0}, {3, 0, 0}}));    // starts at a corner
+    CHECK(intersects(D, segment3{{2, 0, 0}, {3, 0, 0}})); // starts at a corner
     CHECK_FALSE(intersects(D, segment3{{2.0000000000000004, 0, 0}, {3, 0, 0}}));
-    CHECK(intersects(D, segment3{{2, 0, -5}, {2, 0, 5}}));   // along the vertical edge at x = 2
-    CHECK(intersects(D, segment3{{-3, 0, 0}, {3, 0, 0}}));   // through the box
-    CHECK(intersects(segment3{{0, 0, 0}, {0, 0, 0}}, D));    // a point segment inside
+    CHECK(intersects(D, segment3{{2, 0, -5}, {2, 0, 5}})); // along the vertical edge at x = 2
+    CHECK(intersects(D, segment3{{-3, 0, 0}, {3, 0, 0}})); // through the box
+    CHECK(intersects(segment3{{0, 0, 0}, {0, 0, 0}}, D));  // a point segment inside
 }
 TEST_CASE("obb_segment: oracle", "[obb_segment][oracle]") {
     support::run_obb_pair<obb3, segment3>("obb_segment", support::cases(20000), approx_bound, near_case, random_case);
@@ -45,9 +45,9 @@ TEST_CASE("obb_segment: rewritten shapes give the same answer", "[obb_segment]")
 }
 
 TEST_CASE("obb_segment: contains(obb, segment)", "[obb_segment][oracle]") {
-    support::contains_oracle<obb3, segment3>("obb_segment (obb around segment)", support::cases(10000), approx_bound,
-                                     [](support::rng& r) { return support::obb_case<obb3, segment3>::random(r); },
-                                     support::obb_holding<segment3>);
+    support::contains_oracle<obb3, segment3>(
+        "obb_segment (obb around segment)", support::cases(10000), approx_bound,
+        [](support::rng& r) { return support::obb_case<obb3, segment3>::random(r); }, support::obb_holding<segment3>);
 }
 
 } // namespace test_query_obb_segment

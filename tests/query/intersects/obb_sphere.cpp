@@ -31,9 +31,9 @@ TEST_CASE("obb_sphere: fixtures", "[obb_sphere]") {
     // its faces along the first two axes lie at distance sqrt 2 from the centre; along z at 2
     CHECK(contains(T, sphere3{{0, 0, 0}, 1.4142135623730949})); // below sqrt 2 (1.41421356237309504...)
     CHECK_FALSE(contains(T, sphere3{{0, 0, 0}, 1.4142135623730951}));
-    CHECK(contains(T, sphere3{{0, 0, 1}, 1}));  // tangent to the top face
+    CHECK(contains(T, sphere3{{0, 0, 1}, 1})); // tangent to the top face
     CHECK_FALSE(contains(T, sphere3{{0, 0, 1}, 0x1.0000000000001p+0}));
-    CHECK(contains(T, sphere3{{2, 0, 0}, 0}));  // a ball of radius 0 at a corner of the section
+    CHECK(contains(T, sphere3{{2, 0, 0}, 0}));               // a ball of radius 0 at a corner of the section
     CHECK_FALSE(contains(T, sphere3{{1, 1, 0}, 0x1p-1074})); // on a face, a subnormal radius pokes out
     const obb3 U{{1, 1, 1}, {vec3{0, 1, 0}, vec3{0, 0, -1}, vec3{1, 0, 0}}, {1, 2, 2}};
     CHECK(contains(sphere3{{1, 1, 1}, 3}, U)); // corners (1 +- 2, 1 +- 1, 1 +- 2) on the sphere: 1-2-2-3
@@ -52,9 +52,13 @@ TEST_CASE("obb_sphere: fixtures", "[obb_sphere]") {
 TEST_CASE("obb_sphere: contains", "[obb_sphere][oracle]") {
     support::contains_oracle<obb3, sphere3>("obb_sphere (obb around sphere)", support::cases(10000), approx_bound, random_case,
                                             support::obb_holding_ball);
-    support::contains_oracle<sphere3, obb3>("obb_sphere (sphere around obb)", support::cases(10000), approx_bound,
-                                            [](support::rng& r) { const auto [b, s] = random_case(r); return std::pair{s, b}; },
-                                            support::ball_holding_obb);
+    support::contains_oracle<sphere3, obb3>(
+        "obb_sphere (sphere around obb)", support::cases(10000), approx_bound,
+        [](support::rng& r) {
+            const auto [b, s] = random_case(r);
+            return std::pair{s, b};
+        },
+        support::ball_holding_obb);
 }
 
 } // namespace test_query_obb_sphere

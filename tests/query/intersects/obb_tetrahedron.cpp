@@ -36,10 +36,10 @@ const tetrahedron3 T{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
 
 TEST_CASE("obb_tetrahedron: fixtures", "[obb_tetrahedron]") {
     const obb3 I{{2, 0, 0}, {vec3{1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1}}, {1, 1, 1}};
-    CHECK(intersects(I, T));                                                     // x >= 1 touches the vertex (1,0,0)
-    CHECK_FALSE(intersects(obb3{{2, 0, 0}, I.axes, {0x1.fffffffffffffp-1, 1, 1}}, T)); // x >= 1 + 2^-53
-    CHECK(intersects(T, obb3{{0, 0, 0}, I.axes, {5, 5, 5}}));                    // around it
-    CHECK(intersects(obb3{{0.2, 0.2, 0.2}, I.axes, {0.01, 0.01, 0.01}}, T));     // inside it
+    CHECK(intersects(I, T));                                                              // x >= 1 touches the vertex (1,0,0)
+    CHECK_FALSE(intersects(obb3{{2, 0, 0}, I.axes, {0x1.fffffffffffffp-1, 1, 1}}, T));    // x >= 1 + 2^-53
+    CHECK(intersects(T, obb3{{0, 0, 0}, I.axes, {5, 5, 5}}));                             // around it
+    CHECK(intersects(obb3{{0.2, 0.2, 0.2}, I.axes, {0.01, 0.01, 0.01}}, T));              // inside it
     const obb3 D{{1, 1, 0}, {vec3{1, 1, 0}, vec3{-1, 1, 0}, vec3{0, 0, 1}}, {0.5, 1, 1}}; // skew: x + y >= 1, on the edge
     CHECK(intersects(D, T));
     CHECK_FALSE(intersects(obb3{D.center, D.axes, {0x1.fffffffffffffp-2, 1, 1}}, T));
@@ -58,16 +58,16 @@ TEST_CASE("obb_tetrahedron: rewritten shapes give the same answer", "[obb_tetrah
 }
 
 TEST_CASE("obb_tetrahedron: contains(obb, tetrahedron)", "[obb_tetrahedron][oracle]") {
-    support::contains_oracle<obb3, tetrahedron3>("obb_tetrahedron (obb around tetrahedron)", support::cases(10000), approx_bound,
-                                     [](support::rng& r) { return support::obb_case<obb3, tetrahedron3>::random(r); },
-                                     support::obb_holding<tetrahedron3>);
+    support::contains_oracle<obb3, tetrahedron3>(
+        "obb_tetrahedron (obb around tetrahedron)", support::cases(10000), approx_bound,
+        [](support::rng& r) { return support::obb_case<obb3, tetrahedron3>::random(r); }, support::obb_holding<tetrahedron3>);
 }
 
 TEST_CASE("obb_tetrahedron: contains(tetrahedron, obb), fixtures", "[obb_tetrahedron]") {
     const vec3 x{1, 0, 0}, y{0, 1, 0}, z{0, 0, 1};
     const obb3 cube{{0.5, 0.5, 0.5}, {x, y, z}, {0.5, 0.5, 0.5}};
     const tetrahedron3 T3{{0, 0, 0}, {3, 0, 0}, {0, 3, 0}, {0, 0, 3}};
-    CHECK(contains(T3, cube)); // the far corner (1, 1, 1) on the face x + y + z = 3
+    CHECK(contains(T3, cube));                                   // the far corner (1, 1, 1) on the face x + y + z = 3
     CHECK(contains(tetrahedron3{T3.b, T3.a, T3.c, T3.d}, cube)); // the other orientation
     CHECK_FALSE(contains(tetrahedron3{{0, 0, 0}, {3, 0, 0}, {0, 3, 0}, {0, 0, 0x1.7ffffffffffffp+1}}, cube));
     CHECK_FALSE(contains(T3, obb3{{0.5, 0.5, 0.5}, {x, y, z}, {0.5, 0.5, 0x1.0000000000001p-1}}));

@@ -31,9 +31,9 @@ std::vector<std::pair<obb3, triangle3>> variants(const obb3& a, const triangle3&
 
 TEST_CASE("obb_triangle: fixtures", "[obb_triangle]") {
     const obb3 D{{0, 0, 0}, {vec3{1, 1, 0}, vec3{-1, 1, 0}, vec3{0, 0, 1}}, {1, 1, 1}};
-    CHECK(intersects(D, triangle3{{2, 0, 0}, {3, 1, 0}, {3, -1, 0}}));    // a vertex at the corner
+    CHECK(intersects(D, triangle3{{2, 0, 0}, {3, 1, 0}, {3, -1, 0}})); // a vertex at the corner
     CHECK_FALSE(intersects(D, triangle3{{2.0000000000000004, 0, 0}, {3, 1, 0}, {3, -1, 0}}));
-    CHECK(intersects(D, triangle3{{3, 0, -3}, {1, 0, 3}, {3, 0, 3}}));    // an edge through the corner edge
+    CHECK(intersects(D, triangle3{{3, 0, -3}, {1, 0, 3}, {3, 0, 3}}));         // an edge through the corner edge
     CHECK(intersects(triangle3{{-5, -5, 0.5}, {5, -5, 0.5}, {0, 5, 0.5}}, D)); // cuts the box
     CHECK_FALSE(intersects(D, triangle3{{-5, -5, 1.0000000000000002}, {5, -5, 1.0000000000000002}, {0, 5, 1.0000000000000002}}));
 }
@@ -45,9 +45,9 @@ TEST_CASE("obb_triangle: rewritten shapes give the same answer", "[obb_triangle]
 }
 
 TEST_CASE("obb_triangle: contains(obb, triangle)", "[obb_triangle][oracle]") {
-    support::contains_oracle<obb3, triangle3>("obb_triangle (obb around triangle)", support::cases(10000), approx_bound,
-                                     [](support::rng& r) { return support::obb_case<obb3, triangle3>::random(r); },
-                                     support::obb_holding<triangle3>);
+    support::contains_oracle<obb3, triangle3>(
+        "obb_triangle (obb around triangle)", support::cases(10000), approx_bound,
+        [](support::rng& r) { return support::obb_case<obb3, triangle3>::random(r); }, support::obb_holding<triangle3>);
 }
 
 } // namespace test_query_obb_triangle

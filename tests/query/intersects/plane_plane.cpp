@@ -21,11 +21,11 @@ const double approx_bound = catalog::approximate_bound("plane_plane"); // stated
 TEST_CASE("plane_plane: fixtures", "[plane_plane]") {
     const plane3 P{{0, 0, 1}, 2};
     CHECK(intersects(P, plane3{{1, 0, 0}, 7}));
-    CHECK(intersects(P, plane3{{0, 0, -3}, -6}));                          // the same plane
-    CHECK_FALSE(intersects(P, plane3{{0, 0, 3}, 0x1.8000000000001p2}));    // parallel, one ulp apart
-    CHECK(intersects(P, plane3{{0, 0x1p-1074, 1}, 0}));                    // barely tilted: they cross far away
-    CHECK(intersects(P, plane3{{0, 0, 0}, 0}));                            // zero normal, zero offset: everything
-    CHECK_FALSE(intersects(P, plane3{{0, 0, 0}, 1}));                      // zero normal, offset 1: nothing
+    CHECK(intersects(P, plane3{{0, 0, -3}, -6}));                       // the same plane
+    CHECK_FALSE(intersects(P, plane3{{0, 0, 3}, 0x1.8000000000001p2})); // parallel, one ulp apart
+    CHECK(intersects(P, plane3{{0, 0x1p-1074, 1}, 0}));                 // barely tilted: they cross far away
+    CHECK(intersects(P, plane3{{0, 0, 0}, 0}));                         // zero normal, zero offset: everything
+    CHECK_FALSE(intersects(P, plane3{{0, 0, 0}, 1}));                   // zero normal, offset 1: nothing
     CHECK_FALSE(intersects(plane3{{0, 0, 0}, 0}, plane3{{0, 0, 0}, 1}));
 }
 TEST_CASE("plane_plane: oracle, random and near-degenerate", "[plane_plane][oracle]") {

@@ -23,8 +23,8 @@ TEST_CASE("plane_point: fixtures", "[plane_point]") {
     CHECK(intersects(P, point3{1, 1, 1}));
     CHECK(intersects(point3{6, 0, 0}, P));
     CHECK_FALSE(intersects(P, point3{1, 1, 0x1.0000000000001p0}));
-    CHECK(intersects(plane3{{0, 0, 0}, 0}, point3{5, 6, 7}));             // zero normal, zero offset: everything
-    CHECK_FALSE(intersects(plane3{{0, 0, 0}, 1}, point3{5, 6, 7}));       // zero normal, offset 1: nothing
+    CHECK(intersects(plane3{{0, 0, 0}, 0}, point3{5, 6, 7}));       // zero normal, zero offset: everything
+    CHECK_FALSE(intersects(plane3{{0, 0, 0}, 1}, point3{5, 6, 7})); // zero normal, offset 1: nothing
 }
 TEST_CASE("plane_point: oracle, random and near-degenerate", "[plane_point][oracle]") {
     support::flat_oracle<plane3, point3>("plane_point", support::cases(50000), approx_bound);

@@ -40,7 +40,7 @@ TEST_CASE("plane_polygon: fixtures", "[plane_polygon]") {
     CHECK_FALSE(intersects(holed, plane3{{0, 0, 1}, 0x1.0000000000001p0}));
     CHECK(intersects(plane3{{1, 0, 0}, 4}, holed));
     CHECK_FALSE(intersects(plane3{{1, 0, 0}, 0x1.0000000000001p2}, holed));
-    CHECK(intersects(plane3{{1, 0, 0}, 2}, holed));                       // across the hole too
+    CHECK(intersects(plane3{{1, 0, 0}, 2}, holed)); // across the hole too
     CHECK(intersects(plane3{{0, 0, 1}, 1.5}, tilted_l));
     // two triangles apart, one on each side of x = 0: the plane passes between them (found by the flat fuzzer)
     static constexpr std::array<point3, 6> apart{{{-3, 0, 0}, {-1, 0, 0}, {-2, 1, 0}, {1, 0, 0}, {3, 0, 0}, {2, 1, 0}}};

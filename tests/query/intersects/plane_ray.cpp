@@ -21,12 +21,12 @@ const double approx_bound = catalog::approximate_bound("plane_ray"); // stated i
 TEST_CASE("plane_ray: fixtures", "[plane_ray]") {
     const plane3 P{{0, 0, 1}, 2};
     CHECK(intersects(P, ray3{{0, 0, 0}, {1, 1, 1}}));
-    CHECK_FALSE(intersects(P, ray3{{0, 0, 0}, {1, 1, -1}}));               // heads away
-    CHECK(intersects(ray3{{5, 5, 2}, {1, 1, -1}}, P));                     // starts on it
-    CHECK(intersects(P, ray3{{0, 0, 2}, {1, 0, 0}}));                      // in it
-    CHECK_FALSE(intersects(P, ray3{{0, 0, 1}, {1, 0, 0}}));                // parallel below
-    CHECK(intersects(P, ray3{{0, 0, 0}, {1, 0, 0x1p-1074}}));              // a subnormal climb reaches it
-    CHECK_FALSE(intersects(P, ray3{{0, 0, 3}, {0, 0, 0}}));                // a point above
+    CHECK_FALSE(intersects(P, ray3{{0, 0, 0}, {1, 1, -1}}));  // heads away
+    CHECK(intersects(ray3{{5, 5, 2}, {1, 1, -1}}, P));        // starts on it
+    CHECK(intersects(P, ray3{{0, 0, 2}, {1, 0, 0}}));         // in it
+    CHECK_FALSE(intersects(P, ray3{{0, 0, 1}, {1, 0, 0}}));   // parallel below
+    CHECK(intersects(P, ray3{{0, 0, 0}, {1, 0, 0x1p-1074}})); // a subnormal climb reaches it
+    CHECK_FALSE(intersects(P, ray3{{0, 0, 3}, {0, 0, 0}}));   // a point above
 }
 TEST_CASE("plane_ray: oracle, random and near-degenerate", "[plane_ray][oracle]") {
     support::flat_oracle<plane3, ray3>("plane_ray", support::cases(50000), approx_bound);

@@ -22,7 +22,9 @@ std::string describe(const plane3& p, const segment3& s) {
 }
 bool truth(const plane3& p, const segment3& s) {
     double n[3], a[3], b[3];
-    arr(p.normal, n); arr(s.a, a); arr(s.b, b);
+    arr(p.normal, n);
+    arr(s.a, a);
+    arr(s.b, b);
     return oracle::plane_segment(n, p.offset, a, b);
 }
 bool skip(const plane3& p, const segment3&) { return p.normal == vec3{0, 0, 0}; }
@@ -40,10 +42,10 @@ std::pair<plane3, segment3> random_case(support::rng& r) {
 TEST_CASE("plane_segment: fixtures", "[plane_segment]") {
     const plane3 P{{0, 0, 1}, 1};
     CHECK(intersects(P, segment3{{0, 0, 0}, {0, 0, 2}}));
-    CHECK(intersects(P, segment3{{0, 0, 0}, {5, 5, 1}}));                 // ends on the plane
+    CHECK(intersects(P, segment3{{0, 0, 0}, {5, 5, 1}})); // ends on the plane
     CHECK_FALSE(intersects(P, segment3{{0, 0, 0}, {5, 5, 0.9999999999999999}}));
-    CHECK(intersects(segment3{{1, 2, 1}, {3, 4, 1}}, P));                 // in the plane, reversed order
-    CHECK(intersects(P, segment3{{0, 0, 1}, {0, 0, 1}}));                 // a point segment on it
+    CHECK(intersects(segment3{{1, 2, 1}, {3, 4, 1}}, P)); // in the plane, reversed order
+    CHECK(intersects(P, segment3{{0, 0, 1}, {0, 0, 1}})); // a point segment on it
 }
 TEST_CASE("plane_segment: oracle, random", "[plane_segment][oracle]") {
     support::run_oracle("plane_segment random", support::cases(100000), approx_bound, random_case, truth, skip, describe);

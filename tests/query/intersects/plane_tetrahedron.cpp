@@ -22,13 +22,13 @@ const tetrahedron3 T{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
 } // namespace
 
 TEST_CASE("plane_tetrahedron: fixtures", "[plane_tetrahedron]") {
-    CHECK(intersects(plane3{{0, 0, 1}, 1}, T));                                // the top vertex
-    CHECK_FALSE(intersects(plane3{{0, 0, 1}, 0x1.0000000000001p0}, T));        // one ulp above it
-    CHECK(intersects(T, plane3{{1, 1, 1}, 1}));                                // the slanted face
-    CHECK(intersects(plane3{{1, 1, 1}, 0.5}, T));                              // cutting it
-    CHECK_FALSE(intersects(plane3{{1, 1, 1}, -0x1p-1074}, T));                 // a subnormal below the corner
-    CHECK(intersects(plane3{{0, 0, 0}, 0}, T));                                // a zero normal, offset 0: everything
-    CHECK_FALSE(intersects(plane3{{0, 0, 0}, 1}, T));                          // nothing
+    CHECK(intersects(plane3{{0, 0, 1}, 1}, T));                         // the top vertex
+    CHECK_FALSE(intersects(plane3{{0, 0, 1}, 0x1.0000000000001p0}, T)); // one ulp above it
+    CHECK(intersects(T, plane3{{1, 1, 1}, 1}));                         // the slanted face
+    CHECK(intersects(plane3{{1, 1, 1}, 0.5}, T));                       // cutting it
+    CHECK_FALSE(intersects(plane3{{1, 1, 1}, -0x1p-1074}, T));          // a subnormal below the corner
+    CHECK(intersects(plane3{{0, 0, 0}, 0}, T));                         // a zero normal, offset 0: everything
+    CHECK_FALSE(intersects(plane3{{0, 0, 0}, 1}, T));                   // nothing
     const tetrahedron3 flat{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {1, 1, 0}};
     CHECK(intersects(plane3{{1, 0, 0}, 2}, flat));
     CHECK_FALSE(intersects(plane3{{1, 0, 0}, 0x1.0000000000001p1}, flat));

@@ -18,16 +18,22 @@ namespace {
 const double approx_bound = catalog::approximate_bound("plane_triangle"); // stated in the catalog (modules/query/catalog.cppm)
 
 std::string describe(const plane3& p, const triangle3& t) {
-    return "plane " + support::str(p.normal) + " " + support::hex(p.offset) + " tri " + support::str(t.a) + support::str(t.b) + support::str(t.c);
+    return "plane " + support::str(p.normal) + " " + support::hex(p.offset) + " tri " + support::str(t.a) + support::str(t.b) +
+           support::str(t.c);
 }
 bool truth(const plane3& p, const triangle3& t) {
     double n[3], a[3], b[3], c[3];
-    arr(p.normal, n); arr(t.a, a); arr(t.b, b); arr(t.c, c);
+    arr(p.normal, n);
+    arr(t.a, a);
+    arr(t.b, b);
+    arr(t.c, c);
     return oracle::plane_triangle(n, p.offset, a, b, c);
 }
 bool skip(const plane3& p, const triangle3& t) {
     double a[3], b[3], c[3];
-    arr(t.a, a); arr(t.b, b); arr(t.c, c);
+    arr(t.a, a);
+    arr(t.b, b);
+    arr(t.c, c);
     return p.normal == vec3{0, 0, 0} || oracle::triangle_is_degenerate(a, b, c);
 }
 std::pair<plane3, triangle3> near_case(support::rng& r) {
@@ -46,10 +52,10 @@ std::pair<plane3, triangle3> random_case(support::rng& r) {
 TEST_CASE("plane_triangle: fixtures", "[plane_triangle]") {
     const plane3 P{{0, 0, 1}, 1};
     CHECK(intersects(P, triangle3{{0, 0, 0}, {1, 0, 2}, {0, 1, 0}}));
-    CHECK(intersects(P, triangle3{{0, 0, 1}, {1, 0, 2}, {0, 1, 2}}));     // a vertex on the plane
+    CHECK(intersects(P, triangle3{{0, 0, 1}, {1, 0, 2}, {0, 1, 2}})); // a vertex on the plane
     CHECK_FALSE(intersects(P, triangle3{{0, 0, 1.0000000000000002}, {1, 0, 2}, {0, 1, 2}}));
-    CHECK(intersects(triangle3{{0, 0, 1}, {1, 0, 1}, {0, 1, 3}}, P));     // an edge in the plane, reversed order
-    CHECK(intersects(P, triangle3{{0, 0, 1}, {1, 0, 1}, {0, 1, 1}}));     // lying in the plane
+    CHECK(intersects(triangle3{{0, 0, 1}, {1, 0, 1}, {0, 1, 3}}, P)); // an edge in the plane, reversed order
+    CHECK(intersects(P, triangle3{{0, 0, 1}, {1, 0, 1}, {0, 1, 1}})); // lying in the plane
 }
 TEST_CASE("plane_triangle: oracle, random", "[plane_triangle][oracle]") {
     support::run_oracle("plane_triangle random", support::cases(100000), approx_bound, random_case, truth, skip, describe);

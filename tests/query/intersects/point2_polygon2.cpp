@@ -31,11 +31,11 @@ const double approx_bound = catalog::approximate_bound("point2_polygon2"); // st
 
 TEST_CASE("point2_polygon2: fixtures", "[point2_polygon2]") {
     CHECK(intersects(point2{0.5, 0.5}, frame));
-    CHECK_FALSE(intersects(point2{2, 2}, frame)); // in the hole
-    CHECK(intersects(frame, point2{1, 2}));       // on the hole's edge
-    CHECK(intersects(point2{4, 4}, frame));       // a vertex
-    CHECK(intersects(point2{0.5, 3}, frame));     // the ray along +x runs along the hole's top edge
-    CHECK(intersects(point2{0.5, 1}, frame));     // ... and its bottom edge
+    CHECK_FALSE(intersects(point2{2, 2}, frame));  // in the hole
+    CHECK(intersects(frame, point2{1, 2}));        // on the hole's edge
+    CHECK(intersects(point2{4, 4}, frame));        // a vertex
+    CHECK(intersects(point2{0.5, 3}, frame));      // the ray along +x runs along the hole's top edge
+    CHECK(intersects(point2{0.5, 1}, frame));      // ... and its bottom edge
     CHECK_FALSE(intersects(point2{-1, 4}, frame)); // level with the top edge, outside
     CHECK_FALSE(intersects(point2{-1, 0}, frame));
     CHECK(intersects(point2{4, 2}, frame));

@@ -20,8 +20,8 @@ const double approx_bound = catalog::approximate_bound("point2_ray2"); // stated
 TEST_CASE("point2_ray2: fixtures", "[point2_ray2]") {
     const ray2 r{{1, 1}, {1, 2}};
     CHECK(intersects(point2{3, 5}, r));
-    CHECK(intersects(r, point2{1, 1}));                                    // the origin
-    CHECK_FALSE(intersects(point2{-1, -3}, r));                            // behind
+    CHECK(intersects(r, point2{1, 1}));         // the origin
+    CHECK_FALSE(intersects(point2{-1, -3}, r)); // behind
     CHECK_FALSE(intersects(point2{3, 0x1.4000000000001p2}, r));
     CHECK(intersects(point2{1, 2}, ray2{{1, 2}, {0, 0}}));
 }

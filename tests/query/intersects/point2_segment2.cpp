@@ -21,7 +21,7 @@ TEST_CASE("point2_segment2: fixtures", "[point2_segment2]") {
     const segment2 s{{0, 0}, {4, 2}};
     CHECK(intersects(point2{2, 1}, s));
     CHECK(intersects(s, point2{4, 2}));
-    CHECK_FALSE(intersects(point2{6, 3}, s));                              // past the end, on the line
+    CHECK_FALSE(intersects(point2{6, 3}, s)); // past the end, on the line
     CHECK_FALSE(intersects(point2{2, 0x1.0000000000001p0}, s));
     CHECK(intersects(point2{1, 1}, segment2{{1, 1}, {1, 1}}));
 }

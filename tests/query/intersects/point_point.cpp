@@ -20,7 +20,7 @@ const double approx_bound = catalog::approximate_bound("point_point"); // stated
 
 TEST_CASE("point_point: fixtures", "[point_point]") {
     CHECK(intersects(point3{1, 2, 3}, point3{1, 2, 3}));
-    CHECK(intersects(point3{0.0, -0.0, 0}, point3{-0.0, 0.0, 0}));          // signed zeros are one value
+    CHECK(intersects(point3{0.0, -0.0, 0}, point3{-0.0, 0.0, 0})); // signed zeros are one value
     CHECK_FALSE(intersects(point3{1, 2, 3}, point3{1, 2, 0x1.8000000000001p1}));
     CHECK_FALSE(intersects(point3{0x1p-1074, 0, 0}, point3{0, 0, 0}));
 }

@@ -39,13 +39,13 @@ const double approx_bound = catalog::approximate_bound("point_polygon"); // stat
 
 TEST_CASE("point_polygon: fixtures", "[point_polygon]") {
     CHECK(intersects(point3{0.5, 0.5, 1}, holed));
-    CHECK_FALSE(intersects(point3{2, 2, 1}, holed));                  // in the hole
-    CHECK(intersects(holed, point3{1, 2, 1}));                        // on the hole's edge
-    CHECK(contains(holed, point3{3, 3, 1}));                          // a hole corner
+    CHECK_FALSE(intersects(point3{2, 2, 1}, holed));                       // in the hole
+    CHECK(intersects(holed, point3{1, 2, 1}));                             // on the hole's edge
+    CHECK(contains(holed, point3{3, 3, 1}));                               // a hole corner
     CHECK_FALSE(intersects(point3{0.5, 0.5, 0x1.0000000000001p0}, holed)); // one ulp above
-    CHECK(intersects(point3{1.5, 0.5, 0.5}, tilted_l));               // x + z = 2 inside the L
-    CHECK_FALSE(intersects(point3{1.5, 1.5, 0.5}, tilted_l));         // in the L's notch
-    CHECK(intersects(point3{1, 1.5, 1}, tilted_l));                   // on its inner edge
+    CHECK(intersects(point3{1.5, 0.5, 0.5}, tilted_l));                    // x + z = 2 inside the L
+    CHECK_FALSE(intersects(point3{1.5, 1.5, 0.5}, tilted_l));              // in the L's notch
+    CHECK(intersects(point3{1, 1.5, 1}, tilted_l));                        // on its inner edge
     const auto made = polygon3::make(holed_vertices, holed_ends);
     REQUIRE(made.has_value());
     CHECK(intersects(point3{0.5, 0.5, 1}, made.value()));
@@ -63,7 +63,7 @@ TEST_CASE("point_polygon: fixtures", "[point_polygon]") {
     const std::array<point3, 3> bad{{{0, 0, 0}, {1, 0, 0}, {0, std::nan(""), 0}}};
     CHECK(polygon3::make(bad).error().code == errc::not_finite);
     CHECK_FALSE(intersects(point3{0.5, 0.5, 1}, polygon3{holed_vertices, holed_ends, {0, 2, 9}, 2})); // bad plane index: no set
-    CHECK_FALSE(intersects(point3{0.5, 0.5, 1}, polygon3{holed_vertices, holed_ends, {0, 2, 1}, 0}));  // n has no x component: no set
+    CHECK_FALSE(intersects(point3{0.5, 0.5, 1}, polygon3{holed_vertices, holed_ends, {0, 2, 1}, 0})); // n has no x component: no set
 }
 TEST_CASE("point_polygon: oracle, random and near-degenerate", "[point_polygon][oracle]") {
     support::polygon3_oracle<point3>("point_polygon", support::cases(20000), approx_bound);
@@ -86,7 +86,8 @@ TEST_CASE("point_polygon: the rounded crossing stage never claims what the oracl
         const detail::linear3 x = detail::as_linear(*b);
         arith::exact_kernel k;
         sign w = sign::zero;
-        if (!detail::polygon3d::usable(k, g.g) || detail::polygon3d::plane_contact(k, g.g, x, w) != detail::polygon3d::contact::crosses) return;
+        if (!detail::polygon3d::usable(k, g.g) || detail::polygon3d::plane_contact(k, g.g, x, w) != detail::polygon3d::contact::crosses)
+            return;
         ++n;
         one_n += kind == 1;
         const certainty got = detail::polygon3d::rounded_crossing(g.g, x);

@@ -21,10 +21,10 @@ const double approx_bound = catalog::approximate_bound("point_ray"); // stated i
 TEST_CASE("point_ray: fixtures", "[point_ray]") {
     const ray3 r{{1, 1, 1}, {1, 2, 3}};
     CHECK(intersects(point3{3, 5, 7}, r));
-    CHECK(intersects(r, point3{1, 1, 1}));                                 // the origin
-    CHECK_FALSE(intersects(point3{-1, -3, -5}, r));                        // behind the origin
+    CHECK(intersects(r, point3{1, 1, 1}));          // the origin
+    CHECK_FALSE(intersects(point3{-1, -3, -5}, r)); // behind the origin
     CHECK_FALSE(intersects(point3{3, 5, 0x1.c000000000001p2}, r));
-    CHECK(intersects(point3{1, 2, 3}, ray3{{1, 2, 3}, {0, 0, 0}}));         // zero direction: its origin
+    CHECK(intersects(point3{1, 2, 3}, ray3{{1, 2, 3}, {0, 0, 0}})); // zero direction: its origin
 }
 TEST_CASE("point_ray: oracle, random and near-degenerate", "[point_ray][oracle]") {
     support::flat_oracle<point3, ray3>("point_ray", support::cases(50000), approx_bound);

@@ -21,8 +21,8 @@ const double approx_bound = catalog::approximate_bound("point_segment"); // stat
 TEST_CASE("point_segment: fixtures", "[point_segment]") {
     const segment3 s{{0, 0, 0}, {4, 2, 6}};
     CHECK(intersects(point3{2, 1, 3}, s));
-    CHECK(intersects(s, point3{4, 2, 6}));                                 // an end
-    CHECK_FALSE(intersects(point3{6, 3, 9}, s));                           // past the end, on the line
+    CHECK(intersects(s, point3{4, 2, 6}));       // an end
+    CHECK_FALSE(intersects(point3{6, 3, 9}, s)); // past the end, on the line
     CHECK_FALSE(intersects(point3{2, 1, 0x1.8000000000001p1}, s));
     CHECK(intersects(point3{1, 1, 1}, segment3{{1, 1, 1}, {1, 1, 1}}));
 }

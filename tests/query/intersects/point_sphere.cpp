@@ -20,7 +20,8 @@ std::string describe(const point3& p, const sphere3& s) {
 }
 bool truth(const point3& p, const sphere3& s) {
     double a[3], c[3];
-    arr(p, a); arr(s.center, c);
+    arr(p, a);
+    arr(s.center, c);
     return oracle::point_in_ball(a, c, s.radius);
 }
 bool skip(const point3&, const sphere3&) { return false; }

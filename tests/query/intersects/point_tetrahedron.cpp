@@ -28,14 +28,14 @@ const tetrahedron3 T{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
 
 TEST_CASE("point_tetrahedron: fixtures", "[point_tetrahedron]") {
     CHECK(intersects(point3{0.25, 0.25, 0.25}, T));
-    CHECK(intersects(T, point3{0, 0, 1}));                                  // a vertex
-    CHECK(intersects(point3{0.5, 0.5, 0}, T));                              // an edge
-    CHECK(intersects(point3{0.5, 0.25, 0.25}, T));                          // the slanted face
-    CHECK_FALSE(intersects(point3{0.5, 0.25, 0x1.0000000000001p-2}, T));    // one ulp beyond it
-    CHECK(intersects(point3{0, 0.1, 0.1}, T));                              // the face x = 0
-    CHECK_FALSE(intersects(point3{-0x1p-1074, 0.1, 0.1}, T));               // a subnormal outside it
+    CHECK(intersects(T, point3{0, 0, 1}));                                         // a vertex
+    CHECK(intersects(point3{0.5, 0.5, 0}, T));                                     // an edge
+    CHECK(intersects(point3{0.5, 0.25, 0.25}, T));                                 // the slanted face
+    CHECK_FALSE(intersects(point3{0.5, 0.25, 0x1.0000000000001p-2}, T));           // one ulp beyond it
+    CHECK(intersects(point3{0, 0.1, 0.1}, T));                                     // the face x = 0
+    CHECK_FALSE(intersects(point3{-0x1p-1074, 0.1, 0.1}, T));                      // a subnormal outside it
     CHECK(intersects(point3{0.25, 0.25, 0.25}, tetrahedron3{T.b, T.a, T.c, T.d})); // the other orientation
-    const tetrahedron3 flat{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {1, 1, 0}};   // coplanar: the triangle's hull
+    const tetrahedron3 flat{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {1, 1, 0}};           // coplanar: the triangle's hull
     CHECK(intersects(point3{0.5, 0.5, 0}, flat));
     CHECK_FALSE(intersects(point3{0.5, 0.5, 0x1p-1000}, flat));
     CHECK_FALSE(intersects(point3{std::nan(""), 0.25, 0.25}, T));
@@ -188,8 +188,8 @@ TEST_CASE("point_tetrahedron: the rounded stage never claims what the exact sign
             if (++axes_wrong <= 5) std::printf("  rounded edge axes wrong on touching edges\n");
         }
     }
-    std::printf("[cases] tetrahedron rounded face planes: %ld cases, %ld decided (%ld of %ld random at scale 1), wrong %ld\n", n,
-                decided, one_decided, one_n, wrong);
+    std::printf("[cases] tetrahedron rounded face planes: %ld cases, %ld decided (%ld of %ld random at scale 1), wrong %ld\n", n, decided,
+                one_decided, one_n, wrong);
     std::printf("[cases] tetrahedron rounded crossings: %ld claimed, wrong %ld; rounded edge axes: %ld claimed, wrong %ld\n", crossing,
                 crossing_wrong, axes, axes_wrong);
     CHECK(wrong == 0);

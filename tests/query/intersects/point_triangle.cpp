@@ -21,10 +21,10 @@ const double approx_bound = catalog::approximate_bound("point_triangle"); // sta
 TEST_CASE("point_triangle: fixtures", "[point_triangle]") {
     const triangle3 t{{0, 0, 0}, {4, 0, 0}, {0, 4, 4}};
     CHECK(intersects(point3{1, 1, 1}, t));
-    CHECK(intersects(t, point3{2, 2, 2}));                                 // on the edge b c
-    CHECK(intersects(point3{4, 0, 0}, t));                                 // a vertex
-    CHECK_FALSE(intersects(point3{2, 0x1.0000000000001p1, 2}, t));         // one ulp off the plane
-    CHECK_FALSE(intersects(point3{-0x1p-1074, 0, 0}, t));                  // a subnormal outside
+    CHECK(intersects(t, point3{2, 2, 2}));                                          // on the edge b c
+    CHECK(intersects(point3{4, 0, 0}, t));                                          // a vertex
+    CHECK_FALSE(intersects(point3{2, 0x1.0000000000001p1, 2}, t));                  // one ulp off the plane
+    CHECK_FALSE(intersects(point3{-0x1p-1074, 0, 0}, t));                           // a subnormal outside
     CHECK(intersects(point3{1, 1, 1}, triangle3{{0, 0, 0}, {2, 2, 2}, {3, 3, 3}})); // collinear triangle
     CHECK_FALSE(intersects(point3{4, 4, 4}, triangle3{{0, 0, 0}, {2, 2, 2}, {3, 3, 3}}));
 }

@@ -28,15 +28,15 @@ const double approx_bound = catalog::approximate_bound("polygon2_ray2"); // stat
 } // namespace
 
 TEST_CASE("polygon2_ray2: fixtures", "[polygon2_ray2]") {
-    CHECK(intersects(frame, ray2{{2, 2}, {1, 0}}));                 // from the hole outwards
-    CHECK(intersects(frame, ray2{{0.5, 0.5}, {-1, -1}}));           // from inside
+    CHECK(intersects(frame, ray2{{2, 2}, {1, 0}}));       // from the hole outwards
+    CHECK(intersects(frame, ray2{{0.5, 0.5}, {-1, -1}})); // from inside
     CHECK_FALSE(intersects(frame, ray2{{5, 5}, {1, 0}}));
-    CHECK(intersects(ray2{{8, 0}, {-1, 1}}, frame));                // grazes the vertex (4, 4)
+    CHECK(intersects(ray2{{8, 0}, {-1, 1}}, frame)); // grazes the vertex (4, 4)
     CHECK_FALSE(intersects(ray2{{0x1.0000000000001p3, 0}, {-1, 1}}, frame));
-    CHECK(intersects(frame, ray2{{-1, 0}, {1, 0}}));                // along the bottom edge
-    CHECK_FALSE(intersects(c_shape, ray2{{2, 2}, {1, 0}}));         // out of the notch
+    CHECK(intersects(frame, ray2{{-1, 0}, {1, 0}}));        // along the bottom edge
+    CHECK_FALSE(intersects(c_shape, ray2{{2, 2}, {1, 0}})); // out of the notch
     CHECK(intersects(c_shape, ray2{{2, 2}, {-1, 0}}));
-    CHECK(intersects(frame, ray2{{0.5, 0.5}, {0, 0}}));             // a zero direction: the origin
+    CHECK(intersects(frame, ray2{{0.5, 0.5}, {0, 0}})); // a zero direction: the origin
     CHECK_FALSE(intersects(frame, ray2{{2, 2}, {0, 0}}));
 }
 TEST_CASE("polygon2_ray2: oracle, random and near-degenerate", "[polygon2_ray2][oracle]") {

@@ -35,7 +35,7 @@ const double approx_bound = catalog::approximate_bound("polygon2_segment2"); // 
 } // namespace
 
 TEST_CASE("polygon2_segment2: fixtures", "[polygon2_segment2]") {
-    CHECK(intersects(frame, segment2{{0.25, 0.25}, {0.5, 0.75}}));   // inside, touching nothing
+    CHECK(intersects(frame, segment2{{0.25, 0.25}, {0.5, 0.75}}));    // inside, touching nothing
     CHECK_FALSE(intersects(frame, segment2{{1.5, 1.5}, {2.5, 2.5}})); // in the hole
     CHECK(intersects(segment2{{1.5, 1.5}, {2.5, 3.5}}, frame));       // out of the hole
     CHECK_FALSE(intersects(c_shape, segment2{{1.5, 2}, {5, 2}}));     // through the notch
@@ -45,11 +45,11 @@ TEST_CASE("polygon2_segment2: fixtures", "[polygon2_segment2]") {
     CHECK_FALSE(intersects(frame, segment2{{0.5, 0.5}, {std::numeric_limits<double>::quiet_NaN(), 0.5}}));
 }
 TEST_CASE("polygon2_segment2: contains, fixtures", "[polygon2_segment2]") {
-    CHECK(contains(frame, segment2{{0.25, 0.25}, {0.5, 3.75}}));  // in the left strip
+    CHECK(contains(frame, segment2{{0.25, 0.25}, {0.5, 3.75}}));    // in the left strip
     CHECK_FALSE(contains(frame, segment2{{0.5, 0.5}, {3.5, 3.5}})); // across the hole
-    CHECK(contains(frame, segment2{{0, 0}, {4, 0}}));              // an outer edge
-    CHECK(contains(frame, segment2{{1, 1}, {1, 3}}));              // the hole's edge
-    CHECK(contains(frame, segment2{{0.5, 1}, {3.5, 1}}));          // along the hole's bottom edge
+    CHECK(contains(frame, segment2{{0, 0}, {4, 0}}));               // an outer edge
+    CHECK(contains(frame, segment2{{1, 1}, {1, 3}}));               // the hole's edge
+    CHECK(contains(frame, segment2{{0.5, 1}, {3.5, 1}}));           // along the hole's bottom edge
     CHECK_FALSE(contains(frame, segment2{{0.5, 1.5}, {3.5, 1.5}}));
     CHECK(contains(frame, segment2{{0.5, 0.5}, {0.5, 4}}));
     CHECK_FALSE(contains(frame, segment2{{0.5, 0.5}, {0.5, 0x1.0000000000001p2}})); // one ulp past the top edge

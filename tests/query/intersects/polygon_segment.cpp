@@ -44,12 +44,12 @@ const double approx_bound = catalog::approximate_bound("polygon_segment"); // st
 
 TEST_CASE("polygon_segment: fixtures", "[polygon_segment]") {
     CHECK(intersects(holed, segment3{{0.5, 0.5, 0}, {0.5, 0.5, 2}}));
-    CHECK_FALSE(intersects(segment3{{2, 2, 0}, {2, 2, 2}}, holed));          // through the hole
-    CHECK(intersects(holed, segment3{{0.5, 0.5, 0}, {0.5, 0.5, 1}}));        // ends on it
+    CHECK_FALSE(intersects(segment3{{2, 2, 0}, {2, 2, 2}}, holed));   // through the hole
+    CHECK(intersects(holed, segment3{{0.5, 0.5, 0}, {0.5, 0.5, 1}})); // ends on it
     CHECK_FALSE(intersects(holed, segment3{{0.5, 0.5, 0}, {0.5, 0.5, 0x1.fffffffffffffp-1}}));
-    CHECK_FALSE(intersects(holed, segment3{{1.5, 2, 1}, {2.5, 2, 1}}));      // in the plane, in the hole
-    CHECK(intersects(holed, segment3{{0.5, 2, 1}, {2, 2, 1}}));              // in the plane, across the hole's edge
-    CHECK(intersects(holed, segment3{{3.5, 3.5, 1}, {3.75, 3.5, 1}}));       // in the plane, inside
+    CHECK_FALSE(intersects(holed, segment3{{1.5, 2, 1}, {2.5, 2, 1}})); // in the plane, in the hole
+    CHECK(intersects(holed, segment3{{0.5, 2, 1}, {2, 2, 1}}));         // in the plane, across the hole's edge
+    CHECK(intersects(holed, segment3{{3.5, 3.5, 1}, {3.75, 3.5, 1}}));  // in the plane, inside
     CHECK(intersects(tilted_l, segment3{{1.5, 0.5, 0}, {1.5, 0.5, 2}}));
     CHECK_FALSE(intersects(tilted_l, segment3{{1.5, 1.5, 0}, {1.5, 1.5, 2}})); // through the notch
 }
@@ -61,7 +61,7 @@ TEST_CASE("polygon_segment: contains, fixtures", "[polygon_segment]") {
     CHECK(contains(holed, segment3{{0.5, 0.5, 1}, {0.5, 4, 1}}));
     CHECK_FALSE(contains(holed, segment3{{0.5, 0.5, 1}, {0.5, 0x1.0000000000001p2, 1}}));
     CHECK(contains(holed, segment3{{0.5, 0.5, 1}, {0.5, 0.5, 1}}));
-    CHECK(contains(tilted_l, segment3{{0, 0, 2}, {2, 0, 0}}));            // an edge of the tilted L
+    CHECK(contains(tilted_l, segment3{{0, 0, 2}, {2, 0, 0}}));                   // an edge of the tilted L
     CHECK_FALSE(contains(tilted_l, segment3{{0.5, 0.5, 1.5}, {1.5, 1.5, 0.5}})); // into the notch
 }
 TEST_CASE("polygon_segment: contains against the oracle, random and near-degenerate", "[polygon_segment][oracle]") {

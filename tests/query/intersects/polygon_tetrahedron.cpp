@@ -39,7 +39,7 @@ TEST_CASE("polygon_tetrahedron: fixtures", "[polygon_tetrahedron]") {
     CHECK(intersects(holed, tetrahedron3{{0.5, 0.5, 1}, {0, 0, 3}, {1, 0, 3}, {0, 1, 3}}));
     CHECK_FALSE(intersects(holed, tetrahedron3{{0.5, 0.5, 0x1.0000000000001p0}, {0, 0, 3}, {1, 0, 3}, {0, 1, 3}}));
     CHECK_FALSE(intersects(tetrahedron3{{1.5, 1.5, 0}, {2.5, 1.5, 0}, {2, 2.5, 0}, {2, 2, 2}}, holed)); // through the hole
-    CHECK(intersects(holed, tetrahedron3{{-20, -20, -5}, {20, -20, -5}, {0, 20, -5}, {0, 0, 20}}));      // around it
+    CHECK(intersects(holed, tetrahedron3{{-20, -20, -5}, {20, -20, -5}, {0, 20, -5}, {0, 0, 20}}));     // around it
 }
 TEST_CASE("polygon_tetrahedron: oracle, random and near-degenerate", "[polygon_tetrahedron][oracle]") {
     support::polygon3_oracle<tetrahedron3>("polygon_tetrahedron", support::cases(20000), approx_bound);

@@ -20,11 +20,11 @@ const double approx_bound = catalog::approximate_bound("ray2_ray2"); // stated i
 TEST_CASE("ray2_ray2: fixtures", "[ray2_ray2]") {
     const ray2 r{{0, 0}, {1, 0}};
     CHECK(intersects(r, ray2{{3, 2}, {0, -1}}));
-    CHECK_FALSE(intersects(r, ray2{{-3, 2}, {0, -1}}));                    // behind r's origin
-    CHECK_FALSE(intersects(ray2{{1, 0}, {1, 0}}, ray2{{0, 1}, {0, 1}}));   // the lines cross behind both
-    CHECK(intersects(r, ray2{{5, 0}, {-1, 0}}));                           // collinear, facing
-    CHECK_FALSE(intersects(r, ray2{{-5, 0}, {-1, 0}}));                    // collinear, apart
-    CHECK(intersects(r, ray2{{0, 0}, {-1, 0}}));                           // common origin
+    CHECK_FALSE(intersects(r, ray2{{-3, 2}, {0, -1}}));                  // behind r's origin
+    CHECK_FALSE(intersects(ray2{{1, 0}, {1, 0}}, ray2{{0, 1}, {0, 1}})); // the lines cross behind both
+    CHECK(intersects(r, ray2{{5, 0}, {-1, 0}}));                         // collinear, facing
+    CHECK_FALSE(intersects(r, ray2{{-5, 0}, {-1, 0}}));                  // collinear, apart
+    CHECK(intersects(r, ray2{{0, 0}, {-1, 0}}));                         // common origin
 }
 TEST_CASE("ray2_ray2: oracle, random and near-degenerate", "[ray2_ray2][oracle]") {
     support::flat_oracle<ray2, ray2>("ray2_ray2", support::cases(50000), approx_bound);

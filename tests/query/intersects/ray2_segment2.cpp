@@ -20,10 +20,10 @@ const double approx_bound = catalog::approximate_bound("ray2_segment2"); // stat
 TEST_CASE("ray2_segment2: fixtures", "[ray2_segment2]") {
     const ray2 r{{0, 0}, {1, 1}};
     CHECK(intersects(r, segment2{{0, 4}, {4, 0}}));
-    CHECK_FALSE(intersects(r, segment2{{0, -4}, {-4, 0}}));                // behind the origin
-    CHECK(intersects(segment2{{0, 0}, {0, -4}}, r));                       // ends at the origin
-    CHECK(intersects(r, segment2{{-1, -1}, {1, 1}}));                      // collinear, across the origin
-    CHECK_FALSE(intersects(r, segment2{{-1, -1}, {-0.5, -0.5}}));          // collinear, behind
+    CHECK_FALSE(intersects(r, segment2{{0, -4}, {-4, 0}}));       // behind the origin
+    CHECK(intersects(segment2{{0, 0}, {0, -4}}, r));              // ends at the origin
+    CHECK(intersects(r, segment2{{-1, -1}, {1, 1}}));             // collinear, across the origin
+    CHECK_FALSE(intersects(r, segment2{{-1, -1}, {-0.5, -0.5}})); // collinear, behind
 }
 TEST_CASE("ray2_segment2: oracle, random and near-degenerate", "[ray2_segment2][oracle]") {
     support::flat_oracle<ray2, segment2>("ray2_segment2", support::cases(50000), approx_bound);

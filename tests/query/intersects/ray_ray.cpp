@@ -20,12 +20,12 @@ const double approx_bound = catalog::approximate_bound("ray_ray"); // stated in 
 
 TEST_CASE("ray_ray: fixtures", "[ray_ray]") {
     const ray3 r{{0, 0, 0}, {1, 0, 0}};
-    CHECK(intersects(r, ray3{{3, 2, 0}, {0, -1, 0}}));                     // crossing
-    CHECK_FALSE(intersects(r, ray3{{-3, 2, 0}, {0, -1, 0}}));              // would cross behind r's origin
-    CHECK(intersects(r, ray3{{5, 0, 0}, {-1, 0, 0}}));                     // collinear, facing
-    CHECK_FALSE(intersects(r, ray3{{-5, 0, 0}, {-1, 0, 0}}));              // collinear, apart
-    CHECK(intersects(r, ray3{{0, 0, 0}, {-1, 0, 0}}));                     // common origin
-    CHECK_FALSE(intersects(r, ray3{{0, 1, 0}, {1, 0, 0}}));                // parallel
+    CHECK(intersects(r, ray3{{3, 2, 0}, {0, -1, 0}}));        // crossing
+    CHECK_FALSE(intersects(r, ray3{{-3, 2, 0}, {0, -1, 0}})); // would cross behind r's origin
+    CHECK(intersects(r, ray3{{5, 0, 0}, {-1, 0, 0}}));        // collinear, facing
+    CHECK_FALSE(intersects(r, ray3{{-5, 0, 0}, {-1, 0, 0}})); // collinear, apart
+    CHECK(intersects(r, ray3{{0, 0, 0}, {-1, 0, 0}}));        // common origin
+    CHECK_FALSE(intersects(r, ray3{{0, 1, 0}, {1, 0, 0}}));   // parallel
 }
 TEST_CASE("ray_ray: CGAL 5.5's do_intersect(Ray_3, Ray_3) is wrong where the lines cross behind both origins", "[ray_ray]") {
     // The oracle uses CGAL::intersection for this pair (tests/oracle/cgal_flat.cpp).

@@ -21,10 +21,10 @@ const double approx_bound = catalog::approximate_bound("ray_segment"); // stated
 TEST_CASE("ray_segment: fixtures", "[ray_segment]") {
     const ray3 r{{0, 0, 0}, {1, 1, 0}};
     CHECK(intersects(r, segment3{{0, 4, 0}, {4, 0, 0}}));
-    CHECK_FALSE(intersects(r, segment3{{0, -4, 0}, {-4, 0, 0}}));          // behind the origin
-    CHECK(intersects(segment3{{0, 0, 0}, {0, -4, 0}}, r));                 // ends at the origin
-    CHECK(intersects(r, segment3{{-1, -1, 0}, {1, 1, 0}}));                // collinear, across the origin
-    CHECK_FALSE(intersects(r, segment3{{-1, -1, 0}, {-0.5, -0.5, 0}}));    // collinear, behind
+    CHECK_FALSE(intersects(r, segment3{{0, -4, 0}, {-4, 0, 0}}));               // behind the origin
+    CHECK(intersects(segment3{{0, 0, 0}, {0, -4, 0}}, r));                      // ends at the origin
+    CHECK(intersects(r, segment3{{-1, -1, 0}, {1, 1, 0}}));                     // collinear, across the origin
+    CHECK_FALSE(intersects(r, segment3{{-1, -1, 0}, {-0.5, -0.5, 0}}));         // collinear, behind
     CHECK_FALSE(intersects(r, segment3{{0, 4, 0x1p-1074}, {4, 0, 0x1p-1074}})); // a subnormal above
 }
 TEST_CASE("ray_segment: oracle, random and near-degenerate", "[ray_segment][oracle]") {

@@ -19,11 +19,14 @@ namespace {
 const double approx_bound = catalog::approximate_bound("ray_sphere"); // stated in the catalog (modules/query/catalog.cppm)
 
 std::string describe(const ray3& r, const sphere3& s) {
-    return "ray " + support::str(r.origin) + " dir " + support::str(r.direction) + " ball " + support::str(s.center) + " r " + support::hex(s.radius);
+    return "ray " + support::str(r.origin) + " dir " + support::str(r.direction) + " ball " + support::str(s.center) + " r " +
+           support::hex(s.radius);
 }
 bool truth(const ray3& r, const sphere3& s) {
     double o[3], d[3], c[3];
-    arr(r.origin, o); arr(r.direction, d); arr(s.center, c);
+    arr(r.origin, o);
+    arr(r.direction, d);
+    arr(s.center, c);
     return oracle::ray_ball(o, d, c, s.radius);
 }
 bool skip(const ray3& r, const sphere3&) { return r.direction == vec3{0, 0, 0}; }
@@ -39,14 +42,31 @@ std::pair<ray3, sphere3> near_case(support::rng& r) {
     if (kind == 0) { // tangent: move along a direction perpendicular to (q.x, q.y, q.z)
         const double t[3] = {q.y, -q.x, 0.0};
         const double m = r.integer(1, 3);
-        for (int i = 0; i < 3; ++i) { O[i] = on[i] - m * t[i]; D[i] = t[i]; }
-        if (q.x == 0 && q.y == 0) { O[0] = on[0] - m; O[1] = on[1]; O[2] = on[2]; D[0] = 1; D[1] = 0; D[2] = 0; }
+        for (int i = 0; i < 3; ++i) {
+            O[i] = on[i] - m * t[i];
+            D[i] = t[i];
+        }
+        if (q.x == 0 && q.y == 0) {
+            O[0] = on[0] - m;
+            O[1] = on[1];
+            O[2] = on[2];
+            D[0] = 1;
+            D[1] = 0;
+            D[2] = 0;
+        }
     } else if (kind == 1) { // aimed at an exact surface point
-        for (int i = 0; i < 3; ++i) { O[i] = small(r) * 3; D[i] = on[i] - O[i]; }
+        for (int i = 0; i < 3; ++i) {
+            O[i] = small(r) * 3;
+            D[i] = on[i] - O[i];
+        }
     } else { // origin on the sphere
-        for (int i = 0; i < 3; ++i) { O[i] = on[i]; D[i] = small(r); }
+        for (int i = 0; i < 3; ++i) {
+            O[i] = on[i];
+            D[i] = small(r);
+        }
     }
-    if (r.integer(0, 7) == 0) for (double& di : D) di = -di;
+    if (r.integer(0, 7) == 0)
+        for (double& di : D) di = -di;
     support::transform tr = support::random_transform(r, true);
     return {ray3{{tr.apply(O[0], 0), tr.apply(O[1], 1), tr.apply(O[2], 2)}, {tr.dir(D[0]), tr.dir(D[1]), tr.dir(D[2])}},
             sphere3{{tr.apply(C[0], 0), tr.apply(C[1], 1), tr.apply(C[2], 2)}, tr.scale_only(k * q.w)}};
@@ -62,11 +82,11 @@ std::pair<ray3, sphere3> random_case(support::rng& r) {
 TEST_CASE("ray_sphere: fixtures (solid ball, tangent counts)", "[ray_sphere]") {
     const sphere3 S{{0, 0, 0}, 1};
     CHECK(intersects(ray3{{-5, 0, 0}, {1, 0, 0}}, S));
-    CHECK(intersects(ray3{{-5, 1, 0}, {1, 0, 0}}, S));      // tangent
+    CHECK(intersects(ray3{{-5, 1, 0}, {1, 0, 0}}, S)); // tangent
     CHECK_FALSE(intersects(ray3{{-5, 1.0000000001, 0}, {1, 0, 0}}, S));
     CHECK_FALSE(intersects(ray3{{-5, 0, 0}, {-1, 0, 0}}, S));
-    CHECK(intersects(ray3{{0, 0, 0}, {-1, 0, 0}}, S));      // origin inside
-    CHECK(intersects(ray3{{1, 0, 0}, {1, 0, 0}}, S));       // origin on the surface, leaving
+    CHECK(intersects(ray3{{0, 0, 0}, {-1, 0, 0}}, S)); // origin inside
+    CHECK(intersects(ray3{{1, 0, 0}, {1, 0, 0}}, S));  // origin on the surface, leaving
     const auto h = intersection(ray3{{-5, 0, 0}, {2, 0, 0}}, S);
     REQUIRE(h);
     CHECK(h->t_enter == 2.0);
@@ -102,7 +122,9 @@ TEST_CASE("ray_sphere: exact first hit is correctly rounded; algebraic method ag
         const auto h = intersection(ray, s);
         if (!h) continue;
         double o[3], d[3], c[3];
-        arr(ray.origin, o); arr(ray.direction, d); arr(s.center, c);
+        arr(ray.origin, o);
+        arr(ray.direction, d);
+        arr(s.center, c);
         ++checked;
         if (!oracle::is_rounded_ray_ball_t(o, d, c, s.radius, h->t_enter) && ++bad <= 5)
             std::printf("  t %a not correctly rounded: %s\n", h->t_enter, describe(ray, s).c_str());

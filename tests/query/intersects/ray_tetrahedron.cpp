@@ -23,16 +23,16 @@ const tetrahedron3 T{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
 } // namespace
 
 TEST_CASE("ray_tetrahedron: fixtures", "[ray_tetrahedron]") {
-    CHECK(intersects(ray3{{0.1, 0.1, 0.1}, {1, 2, 3}}, T));                    // from inside
-    CHECK(intersects(ray3{{-1, 0.2, 0.2}, {1, 0, 0}}, T));                     // towards it
-    CHECK_FALSE(intersects(ray3{{-1, 0.2, 0.2}, {-1, 0, 0}}, T));              // away from it
-    CHECK(intersects(T, ray3{{2, 0, 0}, {-1, 0, 0}}));                         // along an edge line, towards
-    CHECK_FALSE(intersects(T, ray3{{2, 0, 0}, {1, 0, 0}}));                    // along it, away
-    CHECK(intersects(ray3{{0.5, 0.5, 5}, {0, 0, -1}}, T));                     // down onto an edge point
+    CHECK(intersects(ray3{{0.1, 0.1, 0.1}, {1, 2, 3}}, T));       // from inside
+    CHECK(intersects(ray3{{-1, 0.2, 0.2}, {1, 0, 0}}, T));        // towards it
+    CHECK_FALSE(intersects(ray3{{-1, 0.2, 0.2}, {-1, 0, 0}}, T)); // away from it
+    CHECK(intersects(T, ray3{{2, 0, 0}, {-1, 0, 0}}));            // along an edge line, towards
+    CHECK_FALSE(intersects(T, ray3{{2, 0, 0}, {1, 0, 0}}));       // along it, away
+    CHECK(intersects(ray3{{0.5, 0.5, 5}, {0, 0, -1}}, T));        // down onto an edge point
     CHECK_FALSE(intersects(ray3{{0.5, 0x1.0000000000001p-1, 5}, {0, 0, -1}}, T));
-    CHECK(intersects(ray3{{0.25, 0.25, 0.25}, {0, 0, 0}}, T));                 // a zero direction: a point inside
+    CHECK(intersects(ray3{{0.25, 0.25, 0.25}, {0, 0, 0}}, T)); // a zero direction: a point inside
     const tetrahedron3 flat{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {1, 1, 0}};
-    CHECK(intersects(ray3{{-1, 0.5, 0}, {1, 0, 0}}, flat));                    // in its plane
+    CHECK(intersects(ray3{{-1, 0.5, 0}, {1, 0, 0}}, flat)); // in its plane
     CHECK_FALSE(intersects(ray3{{-1, 0.5, 0x1p-1000}, {1, 0, 0}}, flat));
     CHECK_FALSE(intersects(ray3{{-1, 0.2, 0.2}, {1, 0, std::nan("")}}, T));
 }

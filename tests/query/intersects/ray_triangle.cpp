@@ -16,17 +16,23 @@ const double approx_bound = catalog::approximate_bound("ray_triangle"); // state
 
 using support::arr;
 std::string describe(const ray3& r, const triangle3& t) {
-    return "ray " + support::str(r.origin) + " dir " + support::str(r.direction) + " tri " + support::str(t.a) +
-           support::str(t.b) + support::str(t.c);
+    return "ray " + support::str(r.origin) + " dir " + support::str(r.direction) + " tri " + support::str(t.a) + support::str(t.b) +
+           support::str(t.c);
 }
 bool truth(const ray3& r, const triangle3& t) {
     double o[3], d[3], a[3], b[3], c[3];
-    arr(r.origin, o); arr(r.direction, d); arr(t.a, a); arr(t.b, b); arr(t.c, c);
+    arr(r.origin, o);
+    arr(r.direction, d);
+    arr(t.a, a);
+    arr(t.b, b);
+    arr(t.c, c);
     return oracle::ray_triangle(o, d, a, b, c);
 }
 bool degenerate(const triangle3& t) {
     double a[3], b[3], c[3];
-    arr(t.a, a); arr(t.b, b); arr(t.c, c);
+    arr(t.a, a);
+    arr(t.b, b);
+    arr(t.c, c);
     return oracle::triangle_is_degenerate(a, b, c);
 }
 bool skip(const ray3& r, const triangle3& t) { return r.direction == vec3{0, 0, 0} || degenerate(t); }
@@ -36,16 +42,15 @@ point3 P(support::transform& tr, double x, double y, double z) { return {tr.appl
 // point just outside, or lying in the triangle's plane; then scaled, translated and nudged.
 std::pair<ray3, triangle3> near_case(support::rng& r) {
     using support::small;
-    const double A[3] = {small(r), small(r), small(r)}, B[3] = {small(r), small(r), small(r)},
-                 C[3] = {small(r), small(r), small(r)};
+    const double A[3] = {small(r), small(r), small(r)}, B[3] = {small(r), small(r), small(r)}, C[3] = {small(r), small(r), small(r)};
     const double s = r.integer(0, 4) * 0.25, u = r.integer(0, 4) * 0.25;
     double target[3];
     const int kind = r.integer(0, 4);
     for (int i = 0; i < 3; ++i) {
-        if (kind == 0) target[i] = A[i];                                   // vertex
-        else if (kind == 1) target[i] = A[i] + s * (B[i] - A[i]);          // edge point
+        if (kind == 0) target[i] = A[i];                                                          // vertex
+        else if (kind == 1) target[i] = A[i] + s * (B[i] - A[i]);                                 // edge point
         else if (kind == 2) target[i] = A[i] + s * (B[i] - A[i]) * 0.5 + u * (C[i] - A[i]) * 0.5; // inside
-        else target[i] = A[i] + (1 + s) * (B[i] - A[i]) - u * (C[i] - A[i]); // outside, in plane
+        else target[i] = A[i] + (1 + s) * (B[i] - A[i]) - u * (C[i] - A[i]);                      // outside, in plane
     }
     double O[3], D[3];
     const bool coplanar = r.integer(0, 3) == 0;
@@ -74,15 +79,15 @@ std::pair<ray3, triangle3> random_case(support::rng& r) {
 TEST_CASE("ray_triangle: fixtures (closed triangle, edges and vertices count)", "[ray_triangle]") {
     const triangle3 T{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
     CHECK(intersects(ray3{{0.25, 0.25, 1}, {0, 0, -1}}, T));
-    CHECK(intersects(ray3{{0.5, 0, 1}, {0, 0, -1}}, T));     // edge
-    CHECK(intersects(ray3{{1, 0, 1}, {0, 0, -1}}, T));       // vertex
-    CHECK(intersects(ray3{{0.5, 0.5, 1}, {0, 0, -1}}, T));   // hypotenuse
+    CHECK(intersects(ray3{{0.5, 0, 1}, {0, 0, -1}}, T));        // edge
+    CHECK(intersects(ray3{{1, 0, 1}, {0, 0, -1}}, T));          // vertex
+    CHECK(intersects(ray3{{0.5, 0.5, 1}, {0, 0, -1}}, T));      // hypotenuse
     CHECK_FALSE(intersects(ray3{{0.5, 0.5, 1}, {0, 0, 1}}, T)); // pointing away
-    CHECK(intersects(ray3{{0.25, 0.25, 0}, {0, 0, 1}}, T));  // origin on the triangle: t = 0
-    CHECK(intersects(ray3{{-1, 0.5, 0}, {1, 0, 0}}, T));     // coplanar, crossing
+    CHECK(intersects(ray3{{0.25, 0.25, 0}, {0, 0, 1}}, T));     // origin on the triangle: t = 0
+    CHECK(intersects(ray3{{-1, 0.5, 0}, {1, 0, 0}}, T));        // coplanar, crossing
     CHECK_FALSE(intersects(ray3{{-1, 0.5, 0}, {-1, 0, 0}}, T)); // coplanar, away
-    CHECK(intersects(ray3{{-1, 0, 0}, {1, 0, 0}}, T));       // coplanar, along an edge
-    CHECK(intersects(ray3{{2, -1, 0}, {-1, 1, 0}}, T));      // coplanar, through the vertex (1,0)
+    CHECK(intersects(ray3{{-1, 0, 0}, {1, 0, 0}}, T));          // coplanar, along an edge
+    CHECK(intersects(ray3{{2, -1, 0}, {-1, 1, 0}}, T));         // coplanar, through the vertex (1,0)
     // reversed winding, rotated vertices: same answers
     const triangle3 R{{0, 1, 0}, {1, 0, 0}, {0, 0, 0}};
     CHECK(intersects(ray3{{0.5, 0, 1}, {0, 0, -1}}, R));
@@ -91,7 +96,7 @@ TEST_CASE("ray_triangle: fixtures (closed triangle, edges and vertices count)", 
     const triangle3 S{{0, 0, 0}, {2, 0, 0}, {1, 0, 0}};
     CHECK(intersects(ray3{{1.5, 0, 1}, {0, 0, -1}}, S));
     CHECK_FALSE(intersects(ray3{{2.5, 0, 1}, {0, 0, -1}}, S));
-    CHECK(intersects(ray3{{-1, 0, 0}, {1, 0, 0}}, S));       // collinear
+    CHECK(intersects(ray3{{-1, 0, 0}, {1, 0, 0}}, S)); // collinear
     CHECK(intersects(ray3{{1, 1, 1}, {0, -1, -1}}, triangle3{{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}));
     // coplanar hits report the first contact, not the origin
     const auto cp = intersection(ray3{{-1, 0.25, 0}, {4, 0, 0}}, T);
@@ -118,18 +123,23 @@ TEST_CASE("ray_triangle: fixtures (closed triangle, edges and vertices count)", 
 
 TEST_CASE("ray_triangle: exact hit values are correctly rounded", "[ray_triangle]") {
     // t against CGAL (coplanar hits by their first contact); barycentrics sum to 1 within rounding
-    support::run_values("ray_triangle exact t", support::cases(20000), 1, near_case, random_case,
-                        [](const ray3& ray, const triangle3& tri) -> std::optional<bool> {
-                            if (skip(ray, tri)) return std::nullopt;
-                            const auto h = intersection(ray, tri);
-                            if (!h) return std::nullopt;
-                            double o[3], d[3], a[3], b[3], c[3];
-                            arr(ray.origin, o); arr(ray.direction, d); arr(tri.a, a); arr(tri.b, b); arr(tri.c, c);
-                            const double sum = std::fabs(h->u) + std::fabs(h->v) + std::fabs(h->w);
-                            return oracle::is_rounded_ray_triangle_t(o, d, a, b, c, h->t) &&
-                                   std::fabs(h->u + h->v + h->w - 1.0) <= 0x1p-50 * sum + 0x1p-1000;
-                        },
-                        describe);
+    support::run_values(
+        "ray_triangle exact t", support::cases(20000), 1, near_case, random_case,
+        [](const ray3& ray, const triangle3& tri) -> std::optional<bool> {
+            if (skip(ray, tri)) return std::nullopt;
+            const auto h = intersection(ray, tri);
+            if (!h) return std::nullopt;
+            double o[3], d[3], a[3], b[3], c[3];
+            arr(ray.origin, o);
+            arr(ray.direction, d);
+            arr(tri.a, a);
+            arr(tri.b, b);
+            arr(tri.c, c);
+            const double sum = std::fabs(h->u) + std::fabs(h->v) + std::fabs(h->w);
+            return oracle::is_rounded_ray_triangle_t(o, d, a, b, c, h->t) &&
+                   std::fabs(h->u + h->v + h->w - 1.0) <= 0x1p-50 * sum + 0x1p-1000;
+        },
+        describe);
 }
 
 TEST_CASE("ray_triangle: oracle, random", "[ray_triangle][oracle]") {
@@ -163,8 +173,8 @@ TEST_CASE("ray_triangle: approximate tier is watertight on shared edges", "[ray_
         if (!(intersects<approximate>(ray, t1) || intersects<approximate>(ray, t2))) ++watertight_miss;
         if (!(method::ray_triangle_moller_trumbore(ray, t1) || method::ray_triangle_moller_trumbore(ray, t2))) ++mt_miss;
     }
-    std::printf("[cases] ray_triangle shared-edge rays: %ld; watertight misses both %ld; Moeller-Trumbore misses both %ld\n",
-                n, watertight_miss, mt_miss);
+    std::printf("[cases] ray_triangle shared-edge rays: %ld; watertight misses both %ld; Moeller-Trumbore misses both %ld\n", n,
+                watertight_miss, mt_miss);
     CHECK(watertight_miss == 0);
 }
 
@@ -188,11 +198,18 @@ TEST_CASE("ray_triangle: coplanar rays report their first contact, correctly rou
         const ray3 ray{P(O[0], O[1], O[2]), vec3{std::ldexp(D[0], k), std::ldexp(D[1], k), std::ldexp(D[2], k)}};
         if (skip(ray, t)) continue;
         const auto h = intersection(ray, t);
-        if (h.has_value() != truth(ray, t)) { ++bad; continue; }
+        if (h.has_value() != truth(ray, t)) {
+            ++bad;
+            continue;
+        }
         if (!h) continue;
         ++hits;
         double o[3], d[3], a[3], b[3], c[3];
-        arr(ray.origin, o); arr(ray.direction, d); arr(t.a, a); arr(t.b, b); arr(t.c, c);
+        arr(ray.origin, o);
+        arr(ray.direction, d);
+        arr(t.a, a);
+        arr(t.b, b);
+        arr(t.c, c);
         if (!oracle::is_rounded_ray_triangle_t(o, d, a, b, c, h->t) && ++bad <= 5)
             std::printf("  coplanar t %a wrong: %s\n", h->t, describe(ray, t).c_str());
         if (std::fabs(h->u + h->v + h->w - 1.0) > 0x1p-50) ++bad;

@@ -20,11 +20,11 @@ const double approx_bound = catalog::approximate_bound("segment2_segment2"); // 
 TEST_CASE("segment2_segment2: fixtures", "[segment2_segment2]") {
     const segment2 s{{0, 0}, {2, 0}};
     CHECK(intersects(s, segment2{{1, -1}, {1, 1}}));
-    CHECK(intersects(s, segment2{{2, 0}, {3, 5}}));                        // end to end
-    CHECK_FALSE(intersects(s, segment2{{0x1.0000000000001p1, 0}, {3, 0}})); // collinear gap of one ulp
-    CHECK(intersects(s, segment2{{3, 0}, {1, 0}}));                        // collinear overlap
-    CHECK(intersects(s, segment2{{0.5, 0}, {0.5, 0}}));                    // a point segment on it
-    CHECK_FALSE(intersects(s, segment2{{1, 0x1p-1074}, {1, 1}}));          // stops a subnormal short
+    CHECK(intersects(s, segment2{{2, 0}, {3, 5}}));                                        // end to end
+    CHECK_FALSE(intersects(s, segment2{{0x1.0000000000001p1, 0}, {3, 0}}));                // collinear gap of one ulp
+    CHECK(intersects(s, segment2{{3, 0}, {1, 0}}));                                        // collinear overlap
+    CHECK(intersects(s, segment2{{0.5, 0}, {0.5, 0}}));                                    // a point segment on it
+    CHECK_FALSE(intersects(s, segment2{{1, 0x1p-1074}, {1, 1}}));                          // stops a subnormal short
     CHECK(intersects(segment2{{0.1, 0.1}, {0.3, 0.3}}, segment2{{0.1, 0.3}, {0.3, 0.1}})); // crossing at rounded coordinates
 }
 TEST_CASE("segment2_segment2: oracle, random and near-degenerate", "[segment2_segment2][oracle]") {

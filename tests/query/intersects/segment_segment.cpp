@@ -20,14 +20,14 @@ const double approx_bound = catalog::approximate_bound("segment_segment"); // st
 
 TEST_CASE("segment_segment: fixtures", "[segment_segment]") {
     const segment3 s{{0, 0, 0}, {2, 0, 0}};
-    CHECK(intersects(s, segment3{{1, -1, 0}, {1, 1, 0}}));                 // crossing
-    CHECK(intersects(s, segment3{{2, 0, 0}, {3, 5, 0}}));                  // end to end
-    CHECK(intersects(s, segment3{{1, 0, 0}, {1, 3, 4}}));                  // end on the interior
-    CHECK_FALSE(intersects(s, segment3{{1, -1, 1}, {1, 1, 1}}));           // skew
+    CHECK(intersects(s, segment3{{1, -1, 0}, {1, 1, 0}}));                        // crossing
+    CHECK(intersects(s, segment3{{2, 0, 0}, {3, 5, 0}}));                         // end to end
+    CHECK(intersects(s, segment3{{1, 0, 0}, {1, 3, 4}}));                         // end on the interior
+    CHECK_FALSE(intersects(s, segment3{{1, -1, 1}, {1, 1, 1}}));                  // skew
     CHECK_FALSE(intersects(s, segment3{{0x1.0000000000001p1, 0, 0}, {3, 0, 0}})); // collinear gap of one ulp
-    CHECK(intersects(s, segment3{{3, 0, 0}, {1, 0, 0}}));                  // collinear overlap
-    CHECK(intersects(s, segment3{{0.5, 0, 0}, {0.5, 0, 0}}));              // a point segment on it
-    CHECK_FALSE(intersects(s, segment3{{2.5, 1, 0}, {1.5, 0x1p-60, 0}}));  // passes just above the end
+    CHECK(intersects(s, segment3{{3, 0, 0}, {1, 0, 0}}));                         // collinear overlap
+    CHECK(intersects(s, segment3{{0.5, 0, 0}, {0.5, 0, 0}}));                     // a point segment on it
+    CHECK_FALSE(intersects(s, segment3{{2.5, 1, 0}, {1.5, 0x1p-60, 0}}));         // passes just above the end
 }
 TEST_CASE("segment_segment: oracle, random and near-degenerate", "[segment_segment][oracle]") {
     support::flat_oracle<segment3, segment3>("segment_segment", support::cases(50000), approx_bound);

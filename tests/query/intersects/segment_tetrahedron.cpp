@@ -23,15 +23,15 @@ const tetrahedron3 T{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
 } // namespace
 
 TEST_CASE("segment_tetrahedron: fixtures", "[segment_tetrahedron]") {
-    CHECK(intersects(segment3{{-1, 0.2, 0.2}, {2, 0.2, 0.2}}, T));             // through two faces
-    CHECK(intersects(segment3{{0.5, 0.5, -1}, {0.5, 0.5, 1}}, T));             // through an edge point
+    CHECK(intersects(segment3{{-1, 0.2, 0.2}, {2, 0.2, 0.2}}, T)); // through two faces
+    CHECK(intersects(segment3{{0.5, 0.5, -1}, {0.5, 0.5, 1}}, T)); // through an edge point
     CHECK_FALSE(intersects(segment3{{0.5, 0x1.0000000000001p-1, -1}, {0.5, 0x1.0000000000001p-1, 1}}, T));
-    CHECK(intersects(T, segment3{{0.1, 0.1, 0.1}, {0.2, 0.2, 0.2}}));          // inside
-    CHECK(intersects(segment3{{-1, 0.5, 0}, {1, 0.5, 0}}, T));                 // in the face z = 0
+    CHECK(intersects(T, segment3{{0.1, 0.1, 0.1}, {0.2, 0.2, 0.2}}));                  // inside
+    CHECK(intersects(segment3{{-1, 0.5, 0}, {1, 0.5, 0}}, T));                         // in the face z = 0
     CHECK_FALSE(intersects(segment3{{-1, 0.5, -0x1p-1074}, {1, 0.5, -0x1p-1074}}, T)); // a subnormal below it
-    CHECK(intersects(segment3{{1, 0, 0}, {2, 0, 0}}, T));                      // ends at a vertex
-    CHECK_FALSE(intersects(segment3{{-1, 0.2, 0.2}, {-0.5, 0.2, 0.2}}, T));    // short of it
-    CHECK(intersects(segment3{{0.5, 0.5, 0}, {0.5, 0.5, 0}}, T));              // a point segment on an edge
+    CHECK(intersects(segment3{{1, 0, 0}, {2, 0, 0}}, T));                              // ends at a vertex
+    CHECK_FALSE(intersects(segment3{{-1, 0.2, 0.2}, {-0.5, 0.2, 0.2}}, T));            // short of it
+    CHECK(intersects(segment3{{0.5, 0.5, 0}, {0.5, 0.5, 0}}, T));                      // a point segment on an edge
     const tetrahedron3 flat{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {1, 1, 0}};
     CHECK(intersects(segment3{{0.5, 0.5, -1}, {0.5, 0.5, 1}}, flat));
     CHECK_FALSE(intersects(segment3{{1.5, 1.5, -1}, {1.5, 1.5, 1}}, flat));

@@ -20,20 +20,25 @@ std::string describe(const segment3& s, const triangle3& t) {
 }
 bool truth(const segment3& s, const triangle3& t) {
     double p[3], q[3], a[3], b[3], c[3];
-    arr(s.a, p); arr(s.b, q); arr(t.a, a); arr(t.b, b); arr(t.c, c);
+    arr(s.a, p);
+    arr(s.b, q);
+    arr(t.a, a);
+    arr(t.b, b);
+    arr(t.c, c);
     return oracle::segment_triangle(p, q, a, b, c);
 }
 bool skip(const segment3& s, const triangle3& t) {
     double a[3], b[3], c[3];
-    arr(t.a, a); arr(t.b, b); arr(t.c, c);
+    arr(t.a, a);
+    arr(t.b, b);
+    arr(t.c, c);
     return s.a == s.b || oracle::triangle_is_degenerate(a, b, c);
 }
 point3 P(support::transform& tr, const double* v) { return {tr.apply(v[0], 0), tr.apply(v[1], 1), tr.apply(v[2], 2)}; }
 
 std::pair<segment3, triangle3> near_case(support::rng& r) {
     using support::small;
-    const double A[3] = {small(r), small(r), small(r)}, B[3] = {small(r), small(r), small(r)},
-                 C[3] = {small(r), small(r), small(r)};
+    const double A[3] = {small(r), small(r), small(r)}, B[3] = {small(r), small(r), small(r)}, C[3] = {small(r), small(r), small(r)};
     const double s = r.integer(0, 4) * 0.25, u = r.integer(0, 4) * 0.25;
     const int kind = r.integer(0, 3);
     const bool coplanar = r.integer(0, 3) == 0;
@@ -61,7 +66,7 @@ std::pair<segment3, triangle3> random_case(support::rng& r) {
 TEST_CASE("segment_triangle: fixtures", "[segment_triangle]") {
     const triangle3 T{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
     CHECK(intersects(segment3{{0.25, 0.25, 1}, {0.25, 0.25, -1}}, T));
-    CHECK(intersects(segment3{{0.25, 0.25, 1}, {0.25, 0.25, 0}}, T));   // end point on the triangle
+    CHECK(intersects(segment3{{0.25, 0.25, 1}, {0.25, 0.25, 0}}, T)); // end point on the triangle
     CHECK_FALSE(intersects(segment3{{0.25, 0.25, 1}, {0.25, 0.25, 0.5}}, T));
     CHECK(intersects(segment3{{0.5, 0, 1}, {0.5, 0, -1}}, T));          // through an edge
     CHECK(intersects(segment3{{-1, 0.5, 0}, {0, 0.5, 0}}, T));          // coplanar, touching the edge x = 0
@@ -82,16 +87,21 @@ TEST_CASE("segment_triangle: oracle, near-degenerate", "[segment_triangle][oracl
 }
 
 TEST_CASE("segment_triangle: exact first contact t is correctly rounded", "[segment_triangle][oracle]") {
-    support::run_values("segment_triangle exact t", support::cases(40000), 12, near_case, random_case,
-                        [](const segment3& s, const triangle3& t) -> std::optional<bool> {
-                            if (skip(s, t)) return std::nullopt;
-                            const auto h = intersection(s, t);
-                            if (!h) return std::nullopt;
-                            double p[3], q[3], a[3], b[3], c[3];
-                            arr(s.a, p); arr(s.b, q); arr(t.a, a); arr(t.b, b); arr(t.c, c);
-                            return oracle::is_rounded_segment_triangle_t(p, q, a, b, c, h->t) && h->t >= 0.0 && h->t <= 1.0;
-                        },
-                        describe);
+    support::run_values(
+        "segment_triangle exact t", support::cases(40000), 12, near_case, random_case,
+        [](const segment3& s, const triangle3& t) -> std::optional<bool> {
+            if (skip(s, t)) return std::nullopt;
+            const auto h = intersection(s, t);
+            if (!h) return std::nullopt;
+            double p[3], q[3], a[3], b[3], c[3];
+            arr(s.a, p);
+            arr(s.b, q);
+            arr(t.a, a);
+            arr(t.b, b);
+            arr(t.c, c);
+            return oracle::is_rounded_segment_triangle_t(p, q, a, b, c, h->t) && h->t >= 0.0 && h->t <= 1.0;
+        },
+        describe);
 }
 
 } // namespace test_query_segment_triangle

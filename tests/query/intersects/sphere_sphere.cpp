@@ -17,11 +17,13 @@ using support::arr;
 namespace {
 const double approx_bound = catalog::approximate_bound("sphere_sphere"); // stated in the catalog (modules/query/catalog.cppm)
 std::string describe(const sphere3& a, const sphere3& b) {
-    return "ball " + support::str(a.center) + " r " + support::hex(a.radius) + " ball " + support::str(b.center) + " r " + support::hex(b.radius);
+    return "ball " + support::str(a.center) + " r " + support::hex(a.radius) + " ball " + support::str(b.center) + " r " +
+           support::hex(b.radius);
 }
 bool truth(const sphere3& a, const sphere3& b) {
     double c1[3], c2[3];
-    arr(a.center, c1); arr(b.center, c2);
+    arr(a.center, c1);
+    arr(b.center, c2);
     return oracle::ball_ball(c1, a.radius, c2, b.radius);
 }
 bool skip(const sphere3&, const sphere3&) { return false; }
@@ -47,12 +49,12 @@ std::pair<sphere3, sphere3> random_case(support::rng& r) {
 } // namespace
 
 TEST_CASE("sphere_sphere: fixtures", "[sphere_sphere]") {
-    CHECK(intersects(sphere3{{0, 0, 0}, 1}, sphere3{{2, 0, 0}, 1}));   // tangent
+    CHECK(intersects(sphere3{{0, 0, 0}, 1}, sphere3{{2, 0, 0}, 1})); // tangent
     CHECK_FALSE(intersects(sphere3{{0, 0, 0}, 1}, sphere3{{2.000000000000001, 0, 0}, 1}));
-    CHECK(contains(sphere3{{0, 0, 0}, 3}, sphere3{{1, 2, 2}, 0}));     // internally tangent point
-    CHECK(contains(sphere3{{0, 0, 0}, 4}, sphere3{{1, 2, 2}, 1}));     // internally tangent
+    CHECK(contains(sphere3{{0, 0, 0}, 3}, sphere3{{1, 2, 2}, 0})); // internally tangent point
+    CHECK(contains(sphere3{{0, 0, 0}, 4}, sphere3{{1, 2, 2}, 1})); // internally tangent
     CHECK_FALSE(contains(sphere3{{0, 0, 0}, 4}, sphere3{{1, 2, 2}, 1.0000000000000002}));
-    CHECK(contains(sphere3{{0, 0, 0}, 1}, sphere3{{0, 0, 0}, 1}));     // equal balls
+    CHECK(contains(sphere3{{0, 0, 0}, 1}, sphere3{{0, 0, 0}, 1})); // equal balls
 }
 TEST_CASE("sphere_sphere: oracle, random", "[sphere_sphere][oracle]") {
     support::run_oracle("sphere_sphere random", support::cases(100000), approx_bound, random_case, truth, skip, describe);
@@ -67,7 +69,8 @@ TEST_CASE("sphere_sphere: contains, every tier against the oracle", "[sphere_sph
         auto [a, b] = (i % 2) ? near_case(r) : random_case(r);
         if (r.coin()) std::swap(a, b);
         double c1[3], c2[3];
-        arr(a.center, c1); arr(b.center, c2);
+        arr(a.center, c1);
+        arr(b.center, c2);
         const bool truth_ = oracle::ball_contains_ball(c1, a.radius, c2, b.radius);
         ++t.n;
         if (contains<exact>(a, b) != truth_ && ++t.exact_wrong <= 5) std::printf("  %s\n", describe(a, b).c_str());

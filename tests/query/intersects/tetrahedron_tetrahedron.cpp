@@ -23,10 +23,10 @@ tetrahedron3 shifted(const tetrahedron3& t, vec3 v) { return {t.a + v, t.b + v, 
 } // namespace
 
 TEST_CASE("tetrahedron_tetrahedron: fixtures", "[tetrahedron_tetrahedron]") {
-    CHECK(intersects(T, shifted(T, {1, 0, 0})));                                // a shared vertex
+    CHECK(intersects(T, shifted(T, {1, 0, 0}))); // a shared vertex
     CHECK_FALSE(intersects(T, shifted(T, {0x1.0000000000001p0, 0, 0})));
-    CHECK(intersects(T, tetrahedron3{{0, 0, 0}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}})); // the opposite corner
-    CHECK(intersects(T, tetrahedron3{T.b, T.c, T.d, {1, 1, 1}}));                // a shared face
+    CHECK(intersects(T, tetrahedron3{{0, 0, 0}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}}));                      // the opposite corner
+    CHECK(intersects(T, tetrahedron3{T.b, T.c, T.d, {1, 1, 1}}));                                           // a shared face
     CHECK(intersects(T, tetrahedron3{{0.1, 0.1, 0.1}, {0.2, 0.1, 0.1}, {0.1, 0.2, 0.1}, {0.1, 0.1, 0.2}})); // inside
     // crossing edges, no vertex inside the other: a wedge through the middle of the edge (1,0,0)-(0,1,0)
     CHECK(intersects(T, tetrahedron3{{0.5, 0.5, -1}, {0.5, 0.5, 1}, {2, 2, -1}, {2, 2.5, 1}}));

@@ -24,13 +24,13 @@ const tetrahedron3 T{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
 } // namespace
 
 TEST_CASE("tetrahedron_triangle: fixtures", "[tetrahedron_triangle]") {
-    CHECK(intersects(T, triangle3{{-5, -5, 0.5}, {5, -5, 0.5}, {0, 5, 0.5}}));   // cuts it, no vertex inside
-    CHECK(intersects(triangle3{{-1, -1, 0}, {3, -1, 0}, {-1, 3, 0}}, T));        // in the face z = 0
+    CHECK(intersects(T, triangle3{{-5, -5, 0.5}, {5, -5, 0.5}, {0, 5, 0.5}})); // cuts it, no vertex inside
+    CHECK(intersects(triangle3{{-1, -1, 0}, {3, -1, 0}, {-1, 3, 0}}, T));      // in the face z = 0
     CHECK_FALSE(intersects(T, triangle3{{-1, -1, -0x1p-1074}, {3, -1, -0x1p-1074}, {-1, 3, -0x1p-1074}}));
     CHECK(intersects(T, triangle3{{0.1, 0.1, 0.1}, {0.2, 0.1, 0.1}, {0.1, 0.2, 0.1}})); // inside
-    CHECK(intersects(T, triangle3{{1, 0, 0}, {2, 0, 0}, {2, 1, 0}}));            // a shared vertex
+    CHECK(intersects(T, triangle3{{1, 0, 0}, {2, 0, 0}, {2, 1, 0}}));                   // a shared vertex
     CHECK_FALSE(intersects(T, triangle3{{0x1.0000000000001p0, 0, 0}, {2, 0, 0}, {2, 1, 0}}));
-    CHECK(intersects(T, triangle3{{0.5, 0.5, -1}, {0.5, 0.5, 1}, {3, 3, 0}}));   // its edge through an edge point
+    CHECK(intersects(T, triangle3{{0.5, 0.5, -1}, {0.5, 0.5, 1}, {3, 3, 0}}));     // its edge through an edge point
     CHECK(intersects(T, triangle3{{0.2, 0.2, -1}, {0.2, 0.2, 1}, {0.2, 0.2, 3}})); // collinear, through the solid
     const tetrahedron3 flat{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {1, 1, 0}};
     CHECK(intersects(flat, triangle3{{0.5, 0.5, -1}, {0.5, 0.5, 1}, {3, 3, 1}}));
@@ -89,10 +89,11 @@ TEST_CASE("tetrahedron_triangle: the rounded triangle-side stage never claims wh
         ++claimed;
         met += got == certainty::yes;
         if ((got == certainty::yes) != support::flat_truth(t, f) && ++wrong <= 5)
-            std::printf("  rounded triangle side wrong beside an edge: %s %s\n", support::shape_str(t).c_str(), support::shape_str(f).c_str());
+            std::printf("  rounded triangle side wrong beside an edge: %s %s\n", support::shape_str(t).c_str(),
+                        support::shape_str(f).c_str());
     }
-    std::printf("[cases] tetrahedron rounded triangle side: %ld cases (%ld beside an edge), %ld claimed (%ld meets), wrong %ld\n", n, beside,
-                claimed, met, wrong);
+    std::printf("[cases] tetrahedron rounded triangle side: %ld cases (%ld beside an edge), %ld claimed (%ld meets), wrong %ld\n", n,
+                beside, claimed, met, wrong);
     CHECK(wrong == 0);
     CHECK(claimed > n / 4);
     CHECK(met > n / 20);

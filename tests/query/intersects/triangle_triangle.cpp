@@ -18,17 +18,27 @@ namespace {
 const double approx_bound = catalog::approximate_bound("triangle_triangle"); // stated in the catalog (modules/query/catalog.cppm)
 
 std::string describe(const triangle3& p, const triangle3& q) {
-    return "tri " + support::str(p.a) + support::str(p.b) + support::str(p.c) + " tri " + support::str(q.a) +
-           support::str(q.b) + support::str(q.c);
+    return "tri " + support::str(p.a) + support::str(p.b) + support::str(p.c) + " tri " + support::str(q.a) + support::str(q.b) +
+           support::str(q.c);
 }
 bool truth(const triangle3& p, const triangle3& q) {
     double a[3], b[3], c[3], d[3], e[3], f[3];
-    arr(p.a, a); arr(p.b, b); arr(p.c, c); arr(q.a, d); arr(q.b, e); arr(q.c, f);
+    arr(p.a, a);
+    arr(p.b, b);
+    arr(p.c, c);
+    arr(q.a, d);
+    arr(q.b, e);
+    arr(q.c, f);
     return oracle::triangle_triangle(a, b, c, d, e, f);
 }
 bool skip(const triangle3& p, const triangle3& q) {
     double a[3], b[3], c[3], d[3], e[3], f[3];
-    arr(p.a, a); arr(p.b, b); arr(p.c, c); arr(q.a, d); arr(q.b, e); arr(q.c, f);
+    arr(p.a, a);
+    arr(p.b, b);
+    arr(p.c, c);
+    arr(q.a, d);
+    arr(q.b, e);
+    arr(q.c, f);
     return oracle::triangle_is_degenerate(a, b, c) || oracle::triangle_is_degenerate(d, e, f);
 }
 point3 P(support::transform& tr, const double* v) { return {tr.apply(v[0], 0), tr.apply(v[1], 1), tr.apply(v[2], 2)}; }
@@ -42,8 +52,8 @@ std::pair<triangle3, triangle3> near_case(support::rng& r) {
     const double s = r.integer(0, 4) * 0.25, u = r.integer(0, 4) * 0.25;
     double target[3];
     for (int i = 0; i < 3; ++i) {
-        if (kind == 0) target[i] = T[0][i];                                                  // a vertex
-        else if (kind == 1) target[i] = T[0][i] + s * (T[1][i] - T[0][i]);                   // an edge point
+        if (kind == 0) target[i] = T[0][i];                                // a vertex
+        else if (kind == 1) target[i] = T[0][i] + s * (T[1][i] - T[0][i]); // an edge point
         else if (kind == 2) target[i] = T[0][i] + 0.5 * s * (T[1][i] - T[0][i]) + 0.5 * u * (T[2][i] - T[0][i]);
         else target[i] = T[0][i] + (1 + s) * (T[1][i] - T[0][i]) - u * (T[2][i] - T[0][i]); // beside it
     }
@@ -70,17 +80,17 @@ std::pair<triangle3, triangle3> random_case(support::rng& r) {
 
 TEST_CASE("triangle_triangle: fixtures", "[triangle_triangle]") {
     const triangle3 T{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-    CHECK(intersects(T, triangle3{{0.25, 0.25, -1}, {0.25, 0.25, 1}, {2, 2, 0}}));  // piercing
+    CHECK(intersects(T, triangle3{{0.25, 0.25, -1}, {0.25, 0.25, 1}, {2, 2, 0}})); // piercing
     CHECK(intersects(T, triangle3{{0, 0, 0}, {-1, 0, 1}, {0, -1, 1}}));            // shared vertex only
     CHECK(intersects(T, triangle3{{1, 0, 0}, {0, 1, 0}, {1, 1, 1}}));              // shared edge
     CHECK(intersects(T, triangle3{{0.5, 0.5, 0}, {1, 1, 1}, {1, 1, -1}}));         // vertex on the hypotenuse
     CHECK_FALSE(intersects(T, triangle3{{0.5, std::nextafter(0.5, 1.0), 0}, {1, 1, 1}, {1, 1, -1}}));
-    CHECK(intersects(T, triangle3{{0.1, 0.1, 0}, {0.2, 0.1, 0}, {0.1, 0.2, 0}}));  // coplanar, inside
-    CHECK(intersects(T, triangle3{{-1, -1, 0}, {3, -1, 0}, {-1, 3, 0}}));          // coplanar, around it
-    CHECK_FALSE(intersects(T, triangle3{{1, 1, 0}, {2, 1, 0}, {1, 2, 0}}));        // coplanar, apart
-    CHECK_FALSE(intersects(T, triangle3{{0, 0, 1}, {1, 0, 1}, {0, 1, 1}}));        // parallel planes
-    CHECK(intersects(T, triangle3{{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}));              // a point triangle on a vertex
-    CHECK(intersects(triangle3{{2, 0.5, 0}, {-2, 0.5, 0}, {0, 0.5, 0}}, T));       // a collinear triangle across it
+    CHECK(intersects(T, triangle3{{0.1, 0.1, 0}, {0.2, 0.1, 0}, {0.1, 0.2, 0}})); // coplanar, inside
+    CHECK(intersects(T, triangle3{{-1, -1, 0}, {3, -1, 0}, {-1, 3, 0}}));         // coplanar, around it
+    CHECK_FALSE(intersects(T, triangle3{{1, 1, 0}, {2, 1, 0}, {1, 2, 0}}));       // coplanar, apart
+    CHECK_FALSE(intersects(T, triangle3{{0, 0, 1}, {1, 0, 1}, {0, 1, 1}}));       // parallel planes
+    CHECK(intersects(T, triangle3{{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}));             // a point triangle on a vertex
+    CHECK(intersects(triangle3{{2, 0.5, 0}, {-2, 0.5, 0}, {0, 0.5, 0}}, T));      // a collinear triangle across it
     // Each strictly across the other's plane, touching at one point of T's hypotenuse (the last
     // Guigue-Devillers sign is zero), then moved 2^-40 along x, off it.
     CHECK(intersects(T, triangle3{{0, 0, -1}, {1, 1, 1}, {3, 0, 1}}));
@@ -94,8 +104,7 @@ TEST_CASE("triangle_triangle: oracle, random", "[triangle_triangle][oracle]") {
     support::run_oracle("triangle_triangle random", support::cases(100000), approx_bound, random_case, truth, skip, describe);
 }
 TEST_CASE("triangle_triangle: oracle, near-degenerate", "[triangle_triangle][oracle]") {
-    support::run_oracle("triangle_triangle near-degenerate", support::cases(100000), approx_bound, near_case, truth, skip,
-                        describe);
+    support::run_oracle("triangle_triangle near-degenerate", support::cases(100000), approx_bound, near_case, truth, skip, describe);
 }
 // Coordinates in {-2, ..., 2}: many pairs straddle each other's planes strictly (the
 // Guigue-Devillers path) and touch there exactly, at a vertex, an edge point or along a segment.

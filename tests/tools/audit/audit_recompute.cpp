@@ -117,16 +117,16 @@ int truth(const triangle3& t, const triangle3& u) {
 }
 // The OBB, k-DOP, convex polyhedron and frustum pairs: exact LP feasibility.
 template <class A, class B>
-    requires(std::is_same_v<A, obb3> || std::is_same_v<B, obb3> || std::is_same_v<A, kdop<14>> || std::is_same_v<B, kdop<14>> ||
-             std::is_same_v<A, convex_polyhedron3> || std::is_same_v<A, frustum3> || std::is_same_v<B, convex_polyhedron3> ||
-             std::is_same_v<B, frustum3>)
+requires(std::is_same_v<A, obb3> || std::is_same_v<B, obb3> || std::is_same_v<A, kdop<14>> || std::is_same_v<B, kdop<14>> ||
+         std::is_same_v<A, convex_polyhedron3> || std::is_same_v<A, frustum3> || std::is_same_v<B, convex_polyhedron3> ||
+         std::is_same_v<B, frustum3>)
 int truth(const A& a, const B& b) {
     return oracle::lp_intersect(support::lp(a), support::lp(b));
 }
 
 // The other flat pairs: CGAL Epeck (tests/oracle/cgal_flat.cpp).
 template <class A, class B>
-    requires((support::flat_shape<A> && support::flat_shape<B>) || (support::flat2_shape<A> && support::flat2_shape<B>))
+requires((support::flat_shape<A> && support::flat_shape<B>) || (support::flat2_shape<A> && support::flat2_shape<B>))
 int truth(const A& a, const B& b) {
     return support::flat_truth(a, b);
 }
@@ -144,7 +144,10 @@ template <class Family>
         for (long i = 0; i < cases; ++i) {
             const auto [a, b] = audit::make_case<A, B>(r, level, audit::settings[s]);
             const int t = truth(a, b);
-            if (t < 0) { ++skipped; continue; }
+            if (t < 0) {
+                ++skipped;
+                continue;
+            }
             for (std::size_t m = 0; m < ms.size(); ++m) {
                 if (ms[m].kind == "peer" && !audit::peer_accepts(a, b)) continue;
                 const bool ans = ms[m].test(a, b);
