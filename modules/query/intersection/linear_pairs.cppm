@@ -259,14 +259,7 @@ template <class K, linear_shape S>
             return e.a + e.b;
         })
                               : k.sgn([=](auto L) { return q(L).b; });
-        if (w == arith::root::smaller) {
-            if (f == sign::negative) return sign::negative;
-            if (f == sign::positive) return v == sign::negative ? sign::positive : sign::negative;
-            return v != sign::positive ? sign::zero : sign::negative;
-        }
-        if (f == sign::negative) return sign::positive;
-        if (f == sign::positive) return v == sign::negative ? sign::positive : sign::negative;
-        return v != sign::negative ? sign::zero : sign::positive;
+        return *arith::root_side(w, f, v);
     };
     bool enter_at_root = true, exit_at_root = true;
     if (s.bounded_below()) {
