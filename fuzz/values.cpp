@@ -15,6 +15,7 @@
 #include <cstring>
 #include <string_view>
 import incidence;
+#include "testkit/linear_objects.hpp"
 
 using namespace incidence;
 
@@ -82,15 +83,7 @@ interval ti_of(const H& h) {
     else return h.t;
 }
 
-oracle::linear_object object_of(const ray3& r) {
-    return {oracle::linear_object::ray, {r.origin.x, r.origin.y, r.origin.z}, {r.direction.x, r.direction.y, r.direction.z}};
-}
-oracle::linear_object object_of(const line3& l) {
-    return {oracle::linear_object::line, {l.origin.x, l.origin.y, l.origin.z}, {l.direction.x, l.direction.y, l.direction.z}};
-}
-oracle::linear_object object_of(const segment3& s) {
-    return {oracle::linear_object::segment, {s.a.x, s.a.y, s.a.z}, {s.b.x, s.b.y, s.b.z}};
-}
+using support::object_of;
 void arr(point3 p, double* o) { o[0] = p.x, o[1] = p.y, o[2] = p.z; }
 
 // The oracle where the shape is well formed; nullopt elsewhere.

@@ -27,6 +27,7 @@ import incidence.detail;
 #include "testkit/check.hpp"
 #include "testkit/flat_checks.hpp"
 #include "testkit/lp_shapes.hpp"
+#include "testkit/linear_objects.hpp"
 #include "testkit/mesh_checks.hpp"
 #include "testkit/polygon3_cases.hpp"
 #include "testkit/polygon3_checks.hpp"
@@ -81,15 +82,7 @@ struct value_tally {
     }
 };
 
-oracle::linear_object object_of(const ray3& r) {
-    return {oracle::linear_object::ray, {r.origin.x, r.origin.y, r.origin.z}, {r.direction.x, r.direction.y, r.direction.z}};
-}
-oracle::linear_object object_of(const line3& l) {
-    return {oracle::linear_object::line, {l.origin.x, l.origin.y, l.origin.z}, {l.direction.x, l.direction.y, l.direction.z}};
-}
-oracle::linear_object object_of(const segment3& s) {
-    return {oracle::linear_object::segment, {s.a.x, s.a.y, s.a.z}, {s.b.x, s.b.y, s.b.z}};
-}
+using support::object_of;
 std::string str(const ray3& r) { return "ray " + support::str(r.origin) + " " + support::str(r.direction); }
 std::string str(const line3& l) { return "line " + support::str(l.origin) + " " + support::str(l.direction); }
 std::string str(const segment3& s) { return "segment " + support::str(s.a) + " " + support::str(s.b); }
