@@ -3,6 +3,8 @@
 // namespace incidence::detail. Not part of the API: `import incidence;` does not bring it, and its
 // names may change at any time. Tests, fuzzers, benchmarks and tools import it to reach the bodies.
 export module incidence.detail;
+import incidence.arith;
+export import :exactly;
 export import :engines.box;
 export import :engines.box_triangle;
 export import :engines.clip;
@@ -46,3 +48,47 @@ export import :contains.sphere_pairs;
 export import :contains.tetrahedron_pairs;
 export import :intersection.linear_pairs;
 export import :distance.box_point;
+
+export namespace incidence::detail {
+
+struct intersects_body {
+    template <class K, class A, class B>
+    [[nodiscard]] constexpr bool operator()(K& k, const A& a, const B& b) const {
+        return detail::intersects(k, a, b);
+    }
+};
+struct contains_body {
+    template <class K, class A, class B>
+    [[nodiscard]] constexpr bool operator()(K& k, const A& a, const B& b) const {
+        return detail::contains(k, a, b);
+    }
+};
+struct intersection_body {
+    template <class K, class A, class B>
+    [[nodiscard]] constexpr auto operator()(K& k, const A& a, const B& b) const {
+        return detail::intersection(k, a, b);
+    }
+};
+struct nearest_body {
+    template <class K, class A, class B>
+    [[nodiscard]] constexpr auto operator()(K& k, const A& a, const B& b) const {
+        return detail::squared_distance(k, a, b, distance_kind::nearest);
+    }
+};
+struct farthest_body {
+    template <class K, class A, class B>
+    [[nodiscard]] constexpr auto operator()(K& k, const A& a, const B& b) const {
+        return detail::squared_distance(k, a, b, distance_kind::farthest);
+    }
+};
+
+// Declared in query/exactly.cppm, where the pair tables name their instances.
+template <class Body, class R, class A, class B>
+constexpr R exactly(const A& a, const B& b) {
+    arith::exact_kernel e;
+    const R r = Body{}(e, a, b);
+    if (!e.valid) return R{};
+    return r;
+}
+
+} // namespace incidence::detail

@@ -733,12 +733,4 @@ template <class K>
     return a > b ? sign::positive : (a < b ? sign::negative : sign::zero);
 }
 
-// The exact re-run of a query body, out of line: its exact signs may carry large temporaries.
-template <class Body>
-[[nodiscard, gnu::noinline]] constexpr bool decide_exactly(const Body& body) {
-    exact_kernel e;
-    const bool x = body(e);
-    return e.valid && x;
-}
-
 } // namespace incidence::arith

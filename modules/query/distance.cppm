@@ -11,21 +11,6 @@ import incidence.shapes;
 import incidence.detail;
 import :tiers;
 
-namespace incidence::detail {
-struct nearest_body {
-    template <class K, class A, class B>
-    [[nodiscard]] constexpr auto operator()(K& k, const A& a, const B& b) const {
-        return detail::squared_distance(k, a, b, distance_kind::nearest);
-    }
-};
-struct farthest_body {
-    template <class K, class A, class B>
-    [[nodiscard]] constexpr auto operator()(K& k, const A& a, const B& b) const {
-        return detail::squared_distance(k, a, b, distance_kind::farthest);
-    }
-};
-} // namespace incidence::detail
-
 export namespace incidence {
 
 template <tier Tier = exact>

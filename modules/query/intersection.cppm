@@ -19,12 +19,6 @@ import :tiers;
 namespace incidence::detail {
 template <class A, class B>
 concept finds = requires(arith::filter_kernel& k, const A& a, const B& b) { detail::intersection(k, a, b); };
-struct intersection_body {
-    template <class K, class A, class B>
-    [[nodiscard]] constexpr auto operator()(K& k, const A& a, const B& b) const {
-        return detail::intersection(k, a, b);
-    }
-};
 } // namespace incidence::detail
 
 export namespace incidence {

@@ -98,7 +98,7 @@ template <class Tier, class A, class B, class Body>
         if (c != certainty::uncertain) return c == certainty::yes;
         if constexpr (std::is_same_v<Tier, conservative>) return true;
         else if constexpr (std::is_same_v<Tier, aggressive>) return false;
-        else return arith::decide_exactly([&](auto& k) { return body(k, *pa, *pb); });
+        else return detail::exactly<Body, bool>(*pa, *pb);
     }
 }
 template <class A, class B, class Body>
@@ -108,30 +108,9 @@ template <class A, class B, class Body>
     std::optional<detail::scene::scaled_pair<A, B>> scaled;
     return filter_passes(pa, pb, body, scaled);
 }
-struct intersects_body {
-    template <class K, class A, class B>
-    [[nodiscard]] constexpr bool operator()(K& k, const A& a, const B& b) const {
-        return detail::intersects(k, a, b);
-    }
-};
-struct contains_body {
-    template <class K, class A, class B>
-    [[nodiscard]] constexpr bool operator()(K& k, const A& a, const B& b) const {
-        return detail::contains(k, a, b);
-    }
-};
 } // namespace incidence::detail
 
 namespace incidence::detail {
-
-// The exact re-run of a value body, out of line (its exact values carry large temporaries).
-template <class Body, class A, class B>
-[[nodiscard, gnu::noinline]] constexpr auto find_exactly(const Body& body, const A& a, const B& b) {
-    arith::exact_kernel e;
-    auto h = body(e, a, b);
-    if (!e.valid) return decltype(h){};
-    return h;
-}
 
 // A hit or none, in each tier's contract:
 //   approximate   the body in plain double; exists is uncertain (plain double proves nothing);
@@ -151,7 +130,7 @@ template <class Tier, class A, class B, class Body>
         arith::rounding_kernel<filter_kernel_of<A, B>> f;
         auto h = body(f, a, b);
         if (!f.failed()) return h;
-        return find_exactly(body, a, b);
+        return detail::exactly<Body, decltype(h)>(a, b);
     } else {
         filter_kernel_of<A, B> f;
         auto h = body(f, a, b);
@@ -172,12 +151,12 @@ template <class Tier, class A, class B, class Body>
         arith::rounding_kernel<arith::filter_kernel> f;
         const double v = body(f, a, b);
         if (!f.failed()) return v;
-        return find_exactly(body, a, b);
+        return detail::exactly<Body, double>(a, b);
     } else {
         arith::filter_kernel f;
         const interval v = body(f, a, b);
         if (!f.failed()) return v;
-        const double x = find_exactly(body, a, b);
+        const double x = detail::exactly<Body, double>(a, b);
         return interval{arith::next_down(x), arith::next_up(x)};
     }
 }

@@ -13,6 +13,7 @@ import :intersects.box_pairs;
 import :intersects.linear_pairs;
 import :intersects.tetrahedron_pairs;
 import :contains.tetrahedron_pairs;
+import :exactly;
 
 export namespace incidence::detail {
 
@@ -70,10 +71,10 @@ template <class K>
 
 // The exact tier's fallback, compiled once in the library (CMakeLists.txt generates the definitions).
 namespace incidence::detail {
-extern template bool contains(arith::exact_kernel&, const aabb3&, const aabb3&);
-extern template bool contains(arith::exact_kernel&, const aabb3&, const point3&);
-extern template bool contains(arith::exact_kernel&, const aabb3&, const triangle3&);
-extern template bool contains(arith::exact_kernel&, const aabb3&, const tetrahedron3&);
-extern template bool contains(arith::exact_kernel&, const tetrahedron3&, const aabb3&);
-extern template bool contains(arith::exact_kernel&, const aabb3&, const segment3&);
+extern template bool exactly<contains_body>(const aabb3&, const aabb3&);
+extern template bool exactly<contains_body>(const aabb3&, const point3&);
+extern template bool exactly<contains_body>(const aabb3&, const triangle3&);
+extern template bool exactly<contains_body>(const aabb3&, const tetrahedron3&);
+extern template bool exactly<contains_body>(const tetrahedron3&, const aabb3&);
+extern template bool exactly<contains_body>(const aabb3&, const segment3&);
 } // namespace incidence::detail

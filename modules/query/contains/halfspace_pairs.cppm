@@ -18,6 +18,7 @@ import :engines.halfspace_lp;
 import :engines.halfspace_meets;
 import :intersects.obb_pairs;
 import :intersects.halfspace_pairs;
+import :exactly;
 
 export namespace incidence::detail {
 
@@ -179,16 +180,16 @@ template <class K>
 
 // The exact tier's fallback, compiled once in the library (CMakeLists.txt generates the definitions).
 namespace incidence::detail {
-extern template bool contains(arith::exact_kernel&, const convex_polyhedron3&, const point3&);
-extern template bool contains(arith::exact_kernel&, const convex_polyhedron3&, const aabb3&);
-extern template bool contains(arith::exact_kernel&, const frustum3&, const point3&);
-extern template bool contains(arith::exact_kernel&, const frustum3&, const aabb3&);
-extern template bool contains(arith::exact_kernel&, const convex_polyhedron3&, const triangle3&);
-extern template bool contains(arith::exact_kernel&, const convex_polyhedron3&, const obb3&);
-extern template bool contains(arith::exact_kernel&, const convex_polyhedron3&, const segment3&);
-extern template bool contains(arith::exact_kernel&, const convex_polyhedron3&, const tetrahedron3&);
-extern template bool contains(arith::exact_kernel&, const frustum3&, const obb3&);
-extern template bool contains(arith::exact_kernel&, const frustum3&, const segment3&);
-extern template bool contains(arith::exact_kernel&, const frustum3&, const tetrahedron3&);
-extern template bool contains(arith::exact_kernel&, const frustum3&, const triangle3&);
+extern template bool exactly<contains_body>(const convex_polyhedron3&, const point3&);
+extern template bool exactly<contains_body>(const convex_polyhedron3&, const aabb3&);
+extern template bool exactly<contains_body>(const frustum3&, const point3&);
+extern template bool exactly<contains_body>(const frustum3&, const aabb3&);
+extern template bool exactly<contains_body>(const convex_polyhedron3&, const triangle3&);
+extern template bool exactly<contains_body>(const convex_polyhedron3&, const obb3&);
+extern template bool exactly<contains_body>(const convex_polyhedron3&, const segment3&);
+extern template bool exactly<contains_body>(const convex_polyhedron3&, const tetrahedron3&);
+extern template bool exactly<contains_body>(const frustum3&, const obb3&);
+extern template bool exactly<contains_body>(const frustum3&, const segment3&);
+extern template bool exactly<contains_body>(const frustum3&, const tetrahedron3&);
+extern template bool exactly<contains_body>(const frustum3&, const triangle3&);
 } // namespace incidence::detail

@@ -12,6 +12,7 @@ import :engines.kdop;
 import :intersects.kdop_pairs;
 import :intersects.halfspace_pairs;
 import :contains.halfspace_pairs;
+import :exactly;
 
 export namespace incidence::detail {
 
@@ -92,28 +93,28 @@ template <class K, int N>
 
 // The exact tier's fallback, compiled once in the library (CMakeLists.txt generates the definitions).
 namespace incidence::detail {
-extern template bool contains(arith::exact_kernel&, const kdop<6>&, const point3&);
-extern template bool contains(arith::exact_kernel&, const kdop<14>&, const point3&);
-extern template bool contains(arith::exact_kernel&, const kdop<18>&, const point3&);
-extern template bool contains(arith::exact_kernel&, const kdop<26>&, const point3&);
-extern template bool contains(arith::exact_kernel&, const kdop<6>&, const aabb3&);
-extern template bool contains(arith::exact_kernel&, const kdop<14>&, const aabb3&);
-extern template bool contains(arith::exact_kernel&, const kdop<18>&, const aabb3&);
-extern template bool contains(arith::exact_kernel&, const kdop<26>&, const aabb3&);
-extern template bool contains(arith::exact_kernel&, const kdop<6>&, const segment3&);
-extern template bool contains(arith::exact_kernel&, const kdop<14>&, const segment3&);
-extern template bool contains(arith::exact_kernel&, const kdop<18>&, const segment3&);
-extern template bool contains(arith::exact_kernel&, const kdop<26>&, const segment3&);
-extern template bool contains(arith::exact_kernel&, const kdop<6>&, const obb3&);
-extern template bool contains(arith::exact_kernel&, const kdop<14>&, const obb3&);
-extern template bool contains(arith::exact_kernel&, const kdop<18>&, const obb3&);
-extern template bool contains(arith::exact_kernel&, const kdop<26>&, const obb3&);
-extern template bool contains(arith::exact_kernel&, const kdop<6>&, const tetrahedron3&);
-extern template bool contains(arith::exact_kernel&, const kdop<14>&, const tetrahedron3&);
-extern template bool contains(arith::exact_kernel&, const kdop<18>&, const tetrahedron3&);
-extern template bool contains(arith::exact_kernel&, const kdop<26>&, const tetrahedron3&);
-extern template bool contains(arith::exact_kernel&, const kdop<6>&, const triangle3&);
-extern template bool contains(arith::exact_kernel&, const kdop<14>&, const triangle3&);
-extern template bool contains(arith::exact_kernel&, const kdop<18>&, const triangle3&);
-extern template bool contains(arith::exact_kernel&, const kdop<26>&, const triangle3&);
+extern template bool exactly<contains_body>(const kdop<6>&, const point3&);
+extern template bool exactly<contains_body>(const kdop<14>&, const point3&);
+extern template bool exactly<contains_body>(const kdop<18>&, const point3&);
+extern template bool exactly<contains_body>(const kdop<26>&, const point3&);
+extern template bool exactly<contains_body>(const kdop<6>&, const aabb3&);
+extern template bool exactly<contains_body>(const kdop<14>&, const aabb3&);
+extern template bool exactly<contains_body>(const kdop<18>&, const aabb3&);
+extern template bool exactly<contains_body>(const kdop<26>&, const aabb3&);
+extern template bool exactly<contains_body>(const kdop<6>&, const segment3&);
+extern template bool exactly<contains_body>(const kdop<14>&, const segment3&);
+extern template bool exactly<contains_body>(const kdop<18>&, const segment3&);
+extern template bool exactly<contains_body>(const kdop<26>&, const segment3&);
+extern template bool exactly<contains_body>(const kdop<6>&, const obb3&);
+extern template bool exactly<contains_body>(const kdop<14>&, const obb3&);
+extern template bool exactly<contains_body>(const kdop<18>&, const obb3&);
+extern template bool exactly<contains_body>(const kdop<26>&, const obb3&);
+extern template bool exactly<contains_body>(const kdop<6>&, const tetrahedron3&);
+extern template bool exactly<contains_body>(const kdop<14>&, const tetrahedron3&);
+extern template bool exactly<contains_body>(const kdop<18>&, const tetrahedron3&);
+extern template bool exactly<contains_body>(const kdop<26>&, const tetrahedron3&);
+extern template bool exactly<contains_body>(const kdop<6>&, const triangle3&);
+extern template bool exactly<contains_body>(const kdop<14>&, const triangle3&);
+extern template bool exactly<contains_body>(const kdop<18>&, const triangle3&);
+extern template bool exactly<contains_body>(const kdop<26>&, const triangle3&);
 } // namespace incidence::detail

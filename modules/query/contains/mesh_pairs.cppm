@@ -25,6 +25,7 @@ import :contains.box_pairs;
 import :engines.segment_pieces;
 import :engines.mesh;
 import :intersects.mesh_pairs;
+import :exactly;
 
 export namespace incidence::detail {
 
@@ -190,8 +191,8 @@ template <class K>
 
 // The exact tier's fallback, compiled once in the library (CMakeLists.txt generates the definitions).
 namespace incidence::detail {
-extern template bool contains(arith::exact_kernel&, const mesh3&, const point3&);
-extern template bool contains(arith::exact_kernel&, const mesh3&, const segment3&);
-extern template bool contains(arith::exact_kernel&, const mesh3&, const triangle3&);
-extern template bool contains(arith::exact_kernel&, const mesh3&, const aabb3&);
+extern template bool exactly<contains_body>(const mesh3&, const point3&);
+extern template bool exactly<contains_body>(const mesh3&, const segment3&);
+extern template bool exactly<contains_body>(const mesh3&, const triangle3&);
+extern template bool exactly<contains_body>(const mesh3&, const aabb3&);
 } // namespace incidence::detail

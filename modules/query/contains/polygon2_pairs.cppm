@@ -12,6 +12,7 @@ import :engines.linear;
 import :intersects.linear_pairs;
 import :engines.polygon2;
 import :intersects.polygon2_pairs;
+import :exactly;
 
 export namespace incidence::detail {
 
@@ -42,6 +43,6 @@ template <class K>
 
 // The exact tier's fallback, compiled once in the library (CMakeLists.txt generates the definitions).
 namespace incidence::detail {
-extern template bool contains(arith::exact_kernel&, const polygon2&, const point2&);
-extern template bool contains(arith::exact_kernel&, const polygon2&, const segment2&);
+extern template bool exactly<contains_body>(const polygon2&, const point2&);
+extern template bool exactly<contains_body>(const polygon2&, const segment2&);
 } // namespace incidence::detail

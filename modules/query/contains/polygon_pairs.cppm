@@ -16,6 +16,7 @@ import :engines.polygon3;
 import :intersects.polygon2_pairs;
 import :intersects.polygon_pairs;
 import :contains.polygon2_pairs;
+import :exactly;
 
 export namespace incidence::detail {
 
@@ -70,7 +71,7 @@ template <class K>
 
 // The exact tier's fallback, compiled once in the library (CMakeLists.txt generates the definitions).
 namespace incidence::detail {
-extern template bool contains(arith::exact_kernel&, const polygon3&, const point3&);
-extern template bool contains(arith::exact_kernel&, const polygon3&, const segment3&);
-extern template bool contains(arith::exact_kernel&, const polygon3&, const triangle3&);
+extern template bool exactly<contains_body>(const polygon3&, const point3&);
+extern template bool exactly<contains_body>(const polygon3&, const segment3&);
+extern template bool exactly<contains_body>(const polygon3&, const triangle3&);
 } // namespace incidence::detail

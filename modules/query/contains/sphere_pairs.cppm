@@ -11,6 +11,7 @@ import :intersects.obb_pairs;
 import :contains.obb_pairs;
 import :engines.sphere;
 import :intersects.sphere_pairs;
+import :exactly;
 
 export namespace incidence::detail {
 
@@ -140,10 +141,10 @@ template <class K>
 
 // The exact tier's fallback, compiled once in the library (CMakeLists.txt generates the definitions).
 namespace incidence::detail {
-extern template bool contains(arith::exact_kernel&, const aabb3&, const sphere3&);
-extern template bool contains(arith::exact_kernel&, const sphere3&, const aabb3&);
-extern template bool contains(arith::exact_kernel&, const obb3&, const sphere3&);
-extern template bool contains(arith::exact_kernel&, const sphere3&, const obb3&);
-extern template bool contains(arith::exact_kernel&, const sphere3&, const point3&);
-extern template bool contains(arith::exact_kernel&, const sphere3&, const sphere3&);
+extern template bool exactly<contains_body>(const aabb3&, const sphere3&);
+extern template bool exactly<contains_body>(const sphere3&, const aabb3&);
+extern template bool exactly<contains_body>(const obb3&, const sphere3&);
+extern template bool exactly<contains_body>(const sphere3&, const obb3&);
+extern template bool exactly<contains_body>(const sphere3&, const point3&);
+extern template bool exactly<contains_body>(const sphere3&, const sphere3&);
 } // namespace incidence::detail

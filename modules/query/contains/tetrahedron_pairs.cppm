@@ -6,6 +6,7 @@ import incidence.predicates;
 import incidence.shapes;
 import :engines.tetrahedron;
 import :intersects.tetrahedron_pairs;
+import :exactly;
 
 export namespace incidence::detail {
 
@@ -41,8 +42,8 @@ template <class K>
 
 // The exact tier's fallback, compiled once in the library (CMakeLists.txt generates the definitions).
 namespace incidence::detail {
-extern template bool contains(arith::exact_kernel&, const tetrahedron3&, const point3&);
-extern template bool contains(arith::exact_kernel&, const tetrahedron3&, const segment3&);
-extern template bool contains(arith::exact_kernel&, const tetrahedron3&, const triangle3&);
-extern template bool contains(arith::exact_kernel&, const tetrahedron3&, const tetrahedron3&);
+extern template bool exactly<contains_body>(const tetrahedron3&, const point3&);
+extern template bool exactly<contains_body>(const tetrahedron3&, const segment3&);
+extern template bool exactly<contains_body>(const tetrahedron3&, const triangle3&);
+extern template bool exactly<contains_body>(const tetrahedron3&, const tetrahedron3&);
 } // namespace incidence::detail

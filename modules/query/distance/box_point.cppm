@@ -12,6 +12,7 @@ export module incidence.detail:distance.box_point;
 import incidence.core;
 import incidence.arith;
 import incidence.shapes;
+import :exactly;
 
 export namespace incidence::detail {
 
@@ -43,4 +44,10 @@ template <class K>
     });
 }
 
+} // namespace incidence::detail
+
+// The exact tier's fallback, compiled once in the library (CMakeLists.txt generates the definitions).
+namespace incidence::detail {
+extern template double exactly<nearest_body>(const aabb3&, const point3&);
+extern template double exactly<farthest_body>(const aabb3&, const point3&);
 } // namespace incidence::detail

@@ -41,6 +41,7 @@ import :engines.polygon3;
 import :engines.mesh;
 import :intersects.mesh_pairs;
 import :intersects.polygon_pairs;
+import :exactly;
 
 export namespace incidence::detail {
 
@@ -497,4 +498,50 @@ template <class Set, linear_shape S>
     }
 }
 
+} // namespace incidence::detail
+
+// The exact tier's fallback, compiled once in the library (CMakeLists.txt generates the definitions).
+namespace incidence::detail {
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const plane3&, const ray3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const plane3&, const segment3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const plane3&, const line3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const aabb3&, const ray3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const aabb3&, const segment3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const aabb3&, const line3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const obb3&, const ray3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const obb3&, const segment3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const obb3&, const line3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const kdop<6>&, const ray3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const kdop<6>&, const segment3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const kdop<6>&, const line3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const kdop<14>&, const ray3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const kdop<14>&, const segment3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const kdop<14>&, const line3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const kdop<18>&, const ray3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const kdop<18>&, const segment3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const kdop<18>&, const line3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const kdop<26>&, const ray3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const kdop<26>&, const segment3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const kdop<26>&, const line3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const frustum3&, const ray3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const frustum3&, const segment3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const frustum3&, const line3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const convex_polyhedron3&, const ray3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const convex_polyhedron3&, const segment3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const convex_polyhedron3&, const line3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const tetrahedron3&, const ray3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const tetrahedron3&, const segment3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const tetrahedron3&, const line3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const sphere3&, const ray3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const sphere3&, const segment3&);
+extern template std::optional<span_hit<double>> exactly<intersection_body>(const sphere3&, const line3&);
+extern template std::optional<triangle_hit<double>> exactly<intersection_body>(const triangle3&, const ray3&);
+extern template std::optional<triangle_hit<double>> exactly<intersection_body>(const triangle3&, const segment3&);
+extern template std::optional<triangle_hit<double>> exactly<intersection_body>(const triangle3&, const line3&);
+extern template std::optional<polygon_hit<double>> exactly<intersection_body>(const polygon3&, const ray3&);
+extern template std::optional<polygon_hit<double>> exactly<intersection_body>(const polygon3&, const segment3&);
+extern template std::optional<polygon_hit<double>> exactly<intersection_body>(const polygon3&, const line3&);
+extern template std::optional<mesh_hit<double>> exactly<intersection_body>(const mesh3&, const ray3&);
+extern template std::optional<mesh_hit<double>> exactly<intersection_body>(const mesh3&, const segment3&);
+extern template std::optional<mesh_hit<double>> exactly<intersection_body>(const mesh3&, const line3&);
 } // namespace incidence::detail

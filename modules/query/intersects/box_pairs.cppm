@@ -9,6 +9,7 @@ import :engines.linear;
 import :engines.tetrahedron;
 import :engines.box;
 import :engines.box_triangle;
+import :exactly;
 
 export namespace incidence::detail {
 
@@ -110,11 +111,11 @@ template <class K>
 
 // The exact tier's fallback, compiled once in the library (CMakeLists.txt generates the definitions).
 namespace incidence::detail {
-extern template bool intersects(arith::exact_kernel&, const aabb3&, const aabb3&);
-extern template bool intersects(arith::exact_kernel&, const aabb3&, const point3&);
-extern template bool intersects(arith::exact_kernel&, const aabb3&, const triangle3&);
-extern template bool intersects(arith::exact_kernel&, const aabb3&, const tetrahedron3&);
-extern template bool intersects(arith::exact_kernel&, const aabb3&, const ray3&);
-extern template bool intersects(arith::exact_kernel&, const aabb3&, const line3&);
-extern template bool intersects(arith::exact_kernel&, const aabb3&, const segment3&);
+extern template bool exactly<intersects_body>(const aabb3&, const aabb3&);
+extern template bool exactly<intersects_body>(const aabb3&, const point3&);
+extern template bool exactly<intersects_body>(const aabb3&, const triangle3&);
+extern template bool exactly<intersects_body>(const aabb3&, const tetrahedron3&);
+extern template bool exactly<intersects_body>(const aabb3&, const ray3&);
+extern template bool exactly<intersects_body>(const aabb3&, const line3&);
+extern template bool exactly<intersects_body>(const aabb3&, const segment3&);
 } // namespace incidence::detail

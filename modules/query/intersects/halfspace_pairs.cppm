@@ -25,6 +25,7 @@ import :intersects.kdop_pairs;
 import :intersects.obb_pairs;
 import :intersects.polygon_pairs;
 import :intersects.mesh_pairs;
+import :exactly;
 
 export namespace incidence::detail {
 
@@ -342,37 +343,37 @@ template <class K>
 
 // The exact tier's fallback, compiled once in the library (CMakeLists.txt generates the definitions).
 namespace incidence::detail {
-extern template bool intersects(arith::exact_kernel&, const convex_polyhedron3&, const point3&);
-extern template bool intersects(arith::exact_kernel&, const aabb3&, const convex_polyhedron3&);
-extern template bool intersects(arith::exact_kernel&, const frustum3&, const point3&);
-extern template bool intersects(arith::exact_kernel&, const aabb3&, const frustum3&);
-extern template bool intersects(arith::exact_kernel&, const convex_polyhedron3&, const plane3&);
-extern template bool intersects(arith::exact_kernel&, const convex_polyhedron3&, const convex_polyhedron3&);
-extern template bool intersects(arith::exact_kernel&, const convex_polyhedron3&, const frustum3&);
-extern template bool intersects(arith::exact_kernel&, const convex_polyhedron3&, const kdop<6>&);
-extern template bool intersects(arith::exact_kernel&, const convex_polyhedron3&, const kdop<14>&);
-extern template bool intersects(arith::exact_kernel&, const convex_polyhedron3&, const kdop<18>&);
-extern template bool intersects(arith::exact_kernel&, const convex_polyhedron3&, const kdop<26>&);
-extern template bool intersects(arith::exact_kernel&, const convex_polyhedron3&, const line3&);
-extern template bool intersects(arith::exact_kernel&, const convex_polyhedron3&, const triangle3&);
-extern template bool intersects(arith::exact_kernel&, const convex_polyhedron3&, const mesh3&);
-extern template bool intersects(arith::exact_kernel&, const convex_polyhedron3&, const obb3&);
-extern template bool intersects(arith::exact_kernel&, const convex_polyhedron3&, const polygon3&);
-extern template bool intersects(arith::exact_kernel&, const convex_polyhedron3&, const ray3&);
-extern template bool intersects(arith::exact_kernel&, const convex_polyhedron3&, const segment3&);
-extern template bool intersects(arith::exact_kernel&, const convex_polyhedron3&, const tetrahedron3&);
-extern template bool intersects(arith::exact_kernel&, const frustum3&, const frustum3&);
-extern template bool intersects(arith::exact_kernel&, const frustum3&, const kdop<6>&);
-extern template bool intersects(arith::exact_kernel&, const frustum3&, const kdop<14>&);
-extern template bool intersects(arith::exact_kernel&, const frustum3&, const kdop<18>&);
-extern template bool intersects(arith::exact_kernel&, const frustum3&, const kdop<26>&);
-extern template bool intersects(arith::exact_kernel&, const frustum3&, const line3&);
-extern template bool intersects(arith::exact_kernel&, const frustum3&, const mesh3&);
-extern template bool intersects(arith::exact_kernel&, const frustum3&, const obb3&);
-extern template bool intersects(arith::exact_kernel&, const frustum3&, const plane3&);
-extern template bool intersects(arith::exact_kernel&, const frustum3&, const polygon3&);
-extern template bool intersects(arith::exact_kernel&, const frustum3&, const ray3&);
-extern template bool intersects(arith::exact_kernel&, const frustum3&, const segment3&);
-extern template bool intersects(arith::exact_kernel&, const frustum3&, const tetrahedron3&);
-extern template bool intersects(arith::exact_kernel&, const frustum3&, const triangle3&);
+extern template bool exactly<intersects_body>(const convex_polyhedron3&, const point3&);
+extern template bool exactly<intersects_body>(const aabb3&, const convex_polyhedron3&);
+extern template bool exactly<intersects_body>(const frustum3&, const point3&);
+extern template bool exactly<intersects_body>(const aabb3&, const frustum3&);
+extern template bool exactly<intersects_body>(const convex_polyhedron3&, const plane3&);
+extern template bool exactly<intersects_body>(const convex_polyhedron3&, const convex_polyhedron3&);
+extern template bool exactly<intersects_body>(const convex_polyhedron3&, const frustum3&);
+extern template bool exactly<intersects_body>(const convex_polyhedron3&, const kdop<6>&);
+extern template bool exactly<intersects_body>(const convex_polyhedron3&, const kdop<14>&);
+extern template bool exactly<intersects_body>(const convex_polyhedron3&, const kdop<18>&);
+extern template bool exactly<intersects_body>(const convex_polyhedron3&, const kdop<26>&);
+extern template bool exactly<intersects_body>(const convex_polyhedron3&, const line3&);
+extern template bool exactly<intersects_body>(const convex_polyhedron3&, const triangle3&);
+extern template bool exactly<intersects_body>(const convex_polyhedron3&, const mesh3&);
+extern template bool exactly<intersects_body>(const convex_polyhedron3&, const obb3&);
+extern template bool exactly<intersects_body>(const convex_polyhedron3&, const polygon3&);
+extern template bool exactly<intersects_body>(const convex_polyhedron3&, const ray3&);
+extern template bool exactly<intersects_body>(const convex_polyhedron3&, const segment3&);
+extern template bool exactly<intersects_body>(const convex_polyhedron3&, const tetrahedron3&);
+extern template bool exactly<intersects_body>(const frustum3&, const frustum3&);
+extern template bool exactly<intersects_body>(const frustum3&, const kdop<6>&);
+extern template bool exactly<intersects_body>(const frustum3&, const kdop<14>&);
+extern template bool exactly<intersects_body>(const frustum3&, const kdop<18>&);
+extern template bool exactly<intersects_body>(const frustum3&, const kdop<26>&);
+extern template bool exactly<intersects_body>(const frustum3&, const line3&);
+extern template bool exactly<intersects_body>(const frustum3&, const mesh3&);
+extern template bool exactly<intersects_body>(const frustum3&, const obb3&);
+extern template bool exactly<intersects_body>(const frustum3&, const plane3&);
+extern template bool exactly<intersects_body>(const frustum3&, const polygon3&);
+extern template bool exactly<intersects_body>(const frustum3&, const ray3&);
+extern template bool exactly<intersects_body>(const frustum3&, const segment3&);
+extern template bool exactly<intersects_body>(const frustum3&, const tetrahedron3&);
+extern template bool exactly<intersects_body>(const frustum3&, const triangle3&);
 } // namespace incidence::detail

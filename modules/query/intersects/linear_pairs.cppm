@@ -7,6 +7,7 @@ import incidence.arith;
 import incidence.predicates;
 import incidence.shapes;
 import :engines.linear;
+import :exactly;
 
 export namespace incidence::detail {
 
@@ -224,24 +225,24 @@ template <class K>
 
 // The exact tier's fallback, compiled once in the library (CMakeLists.txt generates the definitions).
 namespace incidence::detail {
-extern template bool intersects(arith::exact_kernel&, const segment3&, const segment3&);
-extern template bool intersects(arith::exact_kernel&, const line2&, const line2&);
-extern template bool intersects(arith::exact_kernel&, const line2&, const point2&);
-extern template bool intersects(arith::exact_kernel&, const line2&, const segment2&);
-extern template bool intersects(arith::exact_kernel&, const line2&, const ray2&);
-extern template bool intersects(arith::exact_kernel&, const line3&, const line3&);
-extern template bool intersects(arith::exact_kernel&, const line3&, const point3&);
-extern template bool intersects(arith::exact_kernel&, const line3&, const ray3&);
-extern template bool intersects(arith::exact_kernel&, const line3&, const segment3&);
-extern template bool intersects(arith::exact_kernel&, const segment2&, const segment2&);
-extern template bool intersects(arith::exact_kernel&, const point2&, const point2&);
-extern template bool intersects(arith::exact_kernel&, const point2&, const ray2&);
-extern template bool intersects(arith::exact_kernel&, const point2&, const segment2&);
-extern template bool intersects(arith::exact_kernel&, const point3&, const point3&);
-extern template bool intersects(arith::exact_kernel&, const point3&, const ray3&);
-extern template bool intersects(arith::exact_kernel&, const point3&, const segment3&);
-extern template bool intersects(arith::exact_kernel&, const ray2&, const segment2&);
-extern template bool intersects(arith::exact_kernel&, const ray2&, const ray2&);
-extern template bool intersects(arith::exact_kernel&, const ray3&, const ray3&);
-extern template bool intersects(arith::exact_kernel&, const ray3&, const segment3&);
+extern template bool exactly<intersects_body>(const segment3&, const segment3&);
+extern template bool exactly<intersects_body>(const line2&, const line2&);
+extern template bool exactly<intersects_body>(const line2&, const point2&);
+extern template bool exactly<intersects_body>(const line2&, const segment2&);
+extern template bool exactly<intersects_body>(const line2&, const ray2&);
+extern template bool exactly<intersects_body>(const line3&, const line3&);
+extern template bool exactly<intersects_body>(const line3&, const point3&);
+extern template bool exactly<intersects_body>(const line3&, const ray3&);
+extern template bool exactly<intersects_body>(const line3&, const segment3&);
+extern template bool exactly<intersects_body>(const segment2&, const segment2&);
+extern template bool exactly<intersects_body>(const point2&, const point2&);
+extern template bool exactly<intersects_body>(const point2&, const ray2&);
+extern template bool exactly<intersects_body>(const point2&, const segment2&);
+extern template bool exactly<intersects_body>(const point3&, const point3&);
+extern template bool exactly<intersects_body>(const point3&, const ray3&);
+extern template bool exactly<intersects_body>(const point3&, const segment3&);
+extern template bool exactly<intersects_body>(const ray2&, const segment2&);
+extern template bool exactly<intersects_body>(const ray2&, const ray2&);
+extern template bool exactly<intersects_body>(const ray3&, const ray3&);
+extern template bool exactly<intersects_body>(const ray3&, const segment3&);
 } // namespace incidence::detail

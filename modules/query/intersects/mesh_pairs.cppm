@@ -27,6 +27,7 @@ import :engines.plane;
 import :intersects.obb_pairs;
 import :intersects.plane_pairs;
 import :intersects.polygon_pairs;
+import :exactly;
 
 export namespace incidence::detail {
 
@@ -183,15 +184,15 @@ template <class K>
 
 // The exact tier's fallback, compiled once in the library (CMakeLists.txt generates the definitions).
 namespace incidence::detail {
-extern template bool intersects(arith::exact_kernel&, const mesh3&, const point3&);
-extern template bool intersects(arith::exact_kernel&, const mesh3&, const segment3&);
-extern template bool intersects(arith::exact_kernel&, const mesh3&, const triangle3&);
-extern template bool intersects(arith::exact_kernel&, const aabb3&, const mesh3&);
-extern template bool intersects(arith::exact_kernel&, const line3&, const mesh3&);
-extern template bool intersects(arith::exact_kernel&, const mesh3&, const mesh3&);
-extern template bool intersects(arith::exact_kernel&, const mesh3&, const obb3&);
-extern template bool intersects(arith::exact_kernel&, const mesh3&, const plane3&);
-extern template bool intersects(arith::exact_kernel&, const mesh3&, const polygon3&);
-extern template bool intersects(arith::exact_kernel&, const mesh3&, const ray3&);
-extern template bool intersects(arith::exact_kernel&, const mesh3&, const tetrahedron3&);
+extern template bool exactly<intersects_body>(const mesh3&, const point3&);
+extern template bool exactly<intersects_body>(const mesh3&, const segment3&);
+extern template bool exactly<intersects_body>(const mesh3&, const triangle3&);
+extern template bool exactly<intersects_body>(const aabb3&, const mesh3&);
+extern template bool exactly<intersects_body>(const line3&, const mesh3&);
+extern template bool exactly<intersects_body>(const mesh3&, const mesh3&);
+extern template bool exactly<intersects_body>(const mesh3&, const obb3&);
+extern template bool exactly<intersects_body>(const mesh3&, const plane3&);
+extern template bool exactly<intersects_body>(const mesh3&, const polygon3&);
+extern template bool exactly<intersects_body>(const mesh3&, const ray3&);
+extern template bool exactly<intersects_body>(const mesh3&, const tetrahedron3&);
 } // namespace incidence::detail

@@ -8,6 +8,7 @@ import :engines.separating_axes;
 import :engines.tetrahedron;
 import :intersects.linear_pairs;
 import :intersects.tetrahedron_pairs;
+import :exactly;
 
 export namespace incidence::detail {
 
@@ -108,13 +109,13 @@ template <class K>
 
 // The exact tier's fallback, compiled once in the library (CMakeLists.txt generates the definitions).
 namespace incidence::detail {
-extern template bool intersects(arith::exact_kernel&, const aabb3&, const obb3&);
-extern template bool intersects(arith::exact_kernel&, const obb3&, const point3&);
-extern template bool intersects(arith::exact_kernel&, const obb3&, const triangle3&);
-extern template bool intersects(arith::exact_kernel&, const obb3&, const tetrahedron3&);
-extern template bool intersects(arith::exact_kernel&, const line3&, const obb3&);
-extern template bool intersects(arith::exact_kernel&, const obb3&, const obb3&);
-extern template bool intersects(arith::exact_kernel&, const obb3&, const plane3&);
-extern template bool intersects(arith::exact_kernel&, const obb3&, const segment3&);
-extern template bool intersects(arith::exact_kernel&, const obb3&, const ray3&);
+extern template bool exactly<intersects_body>(const aabb3&, const obb3&);
+extern template bool exactly<intersects_body>(const obb3&, const point3&);
+extern template bool exactly<intersects_body>(const obb3&, const triangle3&);
+extern template bool exactly<intersects_body>(const obb3&, const tetrahedron3&);
+extern template bool exactly<intersects_body>(const line3&, const obb3&);
+extern template bool exactly<intersects_body>(const obb3&, const obb3&);
+extern template bool exactly<intersects_body>(const obb3&, const plane3&);
+extern template bool exactly<intersects_body>(const obb3&, const segment3&);
+extern template bool exactly<intersects_body>(const obb3&, const ray3&);
 } // namespace incidence::detail

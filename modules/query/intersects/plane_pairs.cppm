@@ -5,6 +5,7 @@ import incidence.arith;
 import incidence.shapes;
 import :engines.linear;
 import :engines.plane;
+import :exactly;
 
 export namespace incidence::detail {
 
@@ -129,12 +130,12 @@ template <class K>
 
 // The exact tier's fallback, compiled once in the library (CMakeLists.txt generates the definitions).
 namespace incidence::detail {
-extern template bool intersects(arith::exact_kernel&, const aabb3&, const plane3&);
-extern template bool intersects(arith::exact_kernel&, const line3&, const plane3&);
-extern template bool intersects(arith::exact_kernel&, const plane3&, const plane3&);
-extern template bool intersects(arith::exact_kernel&, const plane3&, const point3&);
-extern template bool intersects(arith::exact_kernel&, const plane3&, const ray3&);
-extern template bool intersects(arith::exact_kernel&, const plane3&, const segment3&);
-extern template bool intersects(arith::exact_kernel&, const plane3&, const tetrahedron3&);
-extern template bool intersects(arith::exact_kernel&, const plane3&, const triangle3&);
+extern template bool exactly<intersects_body>(const aabb3&, const plane3&);
+extern template bool exactly<intersects_body>(const line3&, const plane3&);
+extern template bool exactly<intersects_body>(const plane3&, const plane3&);
+extern template bool exactly<intersects_body>(const plane3&, const point3&);
+extern template bool exactly<intersects_body>(const plane3&, const ray3&);
+extern template bool exactly<intersects_body>(const plane3&, const segment3&);
+extern template bool exactly<intersects_body>(const plane3&, const tetrahedron3&);
+extern template bool exactly<intersects_body>(const plane3&, const triangle3&);
 } // namespace incidence::detail

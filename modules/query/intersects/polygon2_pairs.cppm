@@ -11,6 +11,7 @@ import incidence.shapes;
 import :engines.linear;
 import :intersects.linear_pairs;
 import :engines.polygon2;
+import :exactly;
 
 export namespace incidence::detail {
 
@@ -86,9 +87,9 @@ template <class K>
 
 // The exact tier's fallback, compiled once in the library (CMakeLists.txt generates the definitions).
 namespace incidence::detail {
-extern template bool intersects(arith::exact_kernel&, const point2&, const polygon2&);
-extern template bool intersects(arith::exact_kernel&, const line2&, const polygon2&);
-extern template bool intersects(arith::exact_kernel&, const polygon2&, const segment2&);
-extern template bool intersects(arith::exact_kernel&, const polygon2&, const polygon2&);
-extern template bool intersects(arith::exact_kernel&, const polygon2&, const ray2&);
+extern template bool exactly<intersects_body>(const point2&, const polygon2&);
+extern template bool exactly<intersects_body>(const line2&, const polygon2&);
+extern template bool exactly<intersects_body>(const polygon2&, const segment2&);
+extern template bool exactly<intersects_body>(const polygon2&, const polygon2&);
+extern template bool exactly<intersects_body>(const polygon2&, const ray2&);
 } // namespace incidence::detail

@@ -19,6 +19,7 @@ import :intersects.tetrahedron_pairs;
 import :engines.polygon3;
 import :intersects.obb_pairs;
 import :intersects.polygon2_pairs;
+import :exactly;
 
 export namespace incidence::detail {
 
@@ -218,14 +219,14 @@ template <class K>
 
 // The exact tier's fallback, compiled once in the library (CMakeLists.txt generates the definitions).
 namespace incidence::detail {
-extern template bool intersects(arith::exact_kernel&, const point3&, const polygon3&);
-extern template bool intersects(arith::exact_kernel&, const aabb3&, const polygon3&);
-extern template bool intersects(arith::exact_kernel&, const line3&, const polygon3&);
-extern template bool intersects(arith::exact_kernel&, const polygon3&, const segment3&);
-extern template bool intersects(arith::exact_kernel&, const polygon3&, const triangle3&);
-extern template bool intersects(arith::exact_kernel&, const obb3&, const polygon3&);
-extern template bool intersects(arith::exact_kernel&, const plane3&, const polygon3&);
-extern template bool intersects(arith::exact_kernel&, const polygon3&, const polygon3&);
-extern template bool intersects(arith::exact_kernel&, const polygon3&, const ray3&);
-extern template bool intersects(arith::exact_kernel&, const polygon3&, const tetrahedron3&);
+extern template bool exactly<intersects_body>(const point3&, const polygon3&);
+extern template bool exactly<intersects_body>(const aabb3&, const polygon3&);
+extern template bool exactly<intersects_body>(const line3&, const polygon3&);
+extern template bool exactly<intersects_body>(const polygon3&, const segment3&);
+extern template bool exactly<intersects_body>(const polygon3&, const triangle3&);
+extern template bool exactly<intersects_body>(const obb3&, const polygon3&);
+extern template bool exactly<intersects_body>(const plane3&, const polygon3&);
+extern template bool exactly<intersects_body>(const polygon3&, const polygon3&);
+extern template bool exactly<intersects_body>(const polygon3&, const ray3&);
+extern template bool exactly<intersects_body>(const polygon3&, const tetrahedron3&);
 } // namespace incidence::detail

@@ -6,6 +6,7 @@ import incidence.core;
 import incidence.arith;
 import incidence.shapes;
 import :engines.sphere;
+import :exactly;
 
 export namespace incidence::detail {
 
@@ -92,8 +93,8 @@ template <class K>
 
 // The exact tier's fallback, compiled once in the library (CMakeLists.txt generates the definitions).
 namespace incidence::detail {
-extern template bool intersects(arith::exact_kernel&, const aabb3&, const sphere3&);
-extern template bool intersects(arith::exact_kernel&, const point3&, const sphere3&);
-extern template bool intersects(arith::exact_kernel&, const ray3&, const sphere3&);
-extern template bool intersects(arith::exact_kernel&, const sphere3&, const sphere3&);
+extern template bool exactly<intersects_body>(const aabb3&, const sphere3&);
+extern template bool exactly<intersects_body>(const point3&, const sphere3&);
+extern template bool exactly<intersects_body>(const ray3&, const sphere3&);
+extern template bool exactly<intersects_body>(const sphere3&, const sphere3&);
 } // namespace incidence::detail

@@ -9,6 +9,7 @@ import :engines.triangle;
 import :engines.tetrahedron;
 import :intersects.triangle_pairs;
 import :intersects.linear_pairs;
+import :exactly;
 
 export namespace incidence::detail {
 
@@ -117,10 +118,10 @@ template <class K>
 
 // The exact tier's fallback, compiled once in the library (CMakeLists.txt generates the definitions).
 namespace incidence::detail {
-extern template bool intersects(arith::exact_kernel&, const point3&, const tetrahedron3&);
-extern template bool intersects(arith::exact_kernel&, const line3&, const tetrahedron3&);
-extern template bool intersects(arith::exact_kernel&, const tetrahedron3&, const triangle3&);
-extern template bool intersects(arith::exact_kernel&, const segment3&, const tetrahedron3&);
-extern template bool intersects(arith::exact_kernel&, const ray3&, const tetrahedron3&);
-extern template bool intersects(arith::exact_kernel&, const tetrahedron3&, const tetrahedron3&);
+extern template bool exactly<intersects_body>(const point3&, const tetrahedron3&);
+extern template bool exactly<intersects_body>(const line3&, const tetrahedron3&);
+extern template bool exactly<intersects_body>(const tetrahedron3&, const triangle3&);
+extern template bool exactly<intersects_body>(const segment3&, const tetrahedron3&);
+extern template bool exactly<intersects_body>(const ray3&, const tetrahedron3&);
+extern template bool exactly<intersects_body>(const tetrahedron3&, const tetrahedron3&);
 } // namespace incidence::detail

@@ -8,6 +8,7 @@ import incidence.predicates;
 import incidence.shapes;
 import :engines.linear;
 import :engines.triangle;
+import :exactly;
 
 export namespace incidence::detail {
 
@@ -68,9 +69,9 @@ template <class K>
 
 // The exact tier's fallback, compiled once in the library (CMakeLists.txt generates the definitions).
 namespace incidence::detail {
-extern template bool intersects(arith::exact_kernel&, const ray3&, const triangle3&);
-extern template bool intersects(arith::exact_kernel&, const triangle3&, const triangle3&);
-extern template bool intersects(arith::exact_kernel&, const segment3&, const triangle3&);
-extern template bool intersects(arith::exact_kernel&, const point3&, const triangle3&);
-extern template bool intersects(arith::exact_kernel&, const line3&, const triangle3&);
+extern template bool exactly<intersects_body>(const ray3&, const triangle3&);
+extern template bool exactly<intersects_body>(const triangle3&, const triangle3&);
+extern template bool exactly<intersects_body>(const segment3&, const triangle3&);
+extern template bool exactly<intersects_body>(const point3&, const triangle3&);
+extern template bool exactly<intersects_body>(const line3&, const triangle3&);
 } // namespace incidence::detail
