@@ -9,16 +9,21 @@
 //     segment), a flat tetrahedron by its faces, a degenerate triangle by its edges;
 //   polygon: CGAL's constrained triangulation of it (polygon3_triangles), each triangle as above;
 //   mesh: every triangle as above, and the object's start inside (mesh_inside);
+//   a triangle that a plane surely separates from the object (interval arithmetic,
+//     surely_misses) skips the exact test;
 //   ball: the roots of a t^2 + 2 b t + c, compared with a rational y by the signs of a y^2 + 2 b y
 //     + c and a y + b (irrational values are never formed).
 // The parameter of a point P on the object: (P - o) . D / D . D.
 #include "cgal_oracle.hpp"
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/intersections.h>
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <optional>
+#include <type_traits>
 #include <variant>
 
 namespace oracle {
@@ -43,9 +48,15 @@ value rational_value(const FT& q) {
     return v;
 }
 int sgn(const FT& x) { return CGAL::sign(x); }
+// The exact number behind FT: values are compared on it, without building lazy nodes.
+using Q = std::decay_t<decltype(CGAL::exact(FT()))>;
+int sgn_q(const Q& x) { return CGAL::sign(x); }
 // sign(t - z) for the root t
-int root_minus(const value& v, const FT& z) {
-    const int f = sgn(v.a * z * z + 2 * v.b * z + v.c), w = sgn(v.a * z + v.b);
+int root_minus(const value& v, const Q& z) {
+    const Q& a = CGAL::exact(v.a);
+    const Q& b = CGAL::exact(v.b);
+    const Q& c = CGAL::exact(v.c);
+    const int f = sgn_q(Q(a * z * z + 2 * b * z + c)), w = sgn_q(Q(a * z + b));
     if (!v.larger) {
         if (f < 0) return -1;
         if (f > 0) return w < 0 ? 1 : -1;
@@ -56,29 +67,32 @@ int root_minus(const value& v, const FT& z) {
     return w >= 0 ? 0 : 1;
 }
 // sign(value - y)
-int compare(const value& v, const FT& y) {
+int compare(const value& v, const Q& y) {
     switch (v.kind) {
     case value::minus_infinity: return -1;
     case value::plus_infinity: return 1;
-    case value::rational: return sgn(v.q - y);
-    default:
-        if (sgn(v.d) == 0) return sgn(v.o - y);
-        return sgn(v.d) * root_minus(v, (y - v.o) / v.d);
+    case value::rational: return sgn_q(CGAL::exact(v.q) - y);
+    default: {
+        const Q& o = CGAL::exact(v.o);
+        const Q& d = CGAL::exact(v.d);
+        if (sgn_q(d) == 0) return sgn_q(o - y);
+        return sgn_q(d) * root_minus(v, Q((y - o) / d));
+    }
     }
 }
 bool rounds_to(const value& v, double x) {
     if (std::isnan(x)) return false;
     // beyond the largest double's upper midpoint 2^1024 - 2^970 (a tie there goes to the even 2^1024)
-    const FT overflow = FT(0x1.fffffffffffffp1023) + FT(0x1p970);
+    const Q overflow = Q(0x1.fffffffffffffp1023) + Q(0x1p970);
     if (std::isinf(x)) {
         if (v.kind == value::plus_infinity || v.kind == value::minus_infinity) return (x > 0) == (v.kind == value::plus_infinity);
-        return x > 0 ? compare(v, overflow) >= 0 : compare(v, -overflow) <= 0;
+        return x > 0 ? compare(v, overflow) >= 0 : compare(v, Q(-overflow)) <= 0;
     }
     if (v.kind == value::minus_infinity || v.kind == value::plus_infinity) return false;
     const double down = std::nextafter(x, -INFINITY), up = std::nextafter(x, INFINITY);
-    const FT X(x);
-    const int lo = std::isinf(down) ? 1 : compare(v, (FT(down) + X) / 2);
-    const int hi = std::isinf(up) ? -1 : compare(v, (X + FT(up)) / 2);
+    const Q X(x);
+    const int lo = std::isinf(down) ? 1 : compare(v, Q((Q(down) + X) / 2));
+    const int hi = std::isinf(up) ? -1 : compare(v, Q((X + Q(up)) / 2));
     if (lo < 0 || hi > 0) return false;
     if (lo == 0 || hi == 0) { // a tie: the even one
         std::uint64_t bits;
@@ -89,8 +103,8 @@ bool rounds_to(const value& v, double x) {
 }
 bool within(const value& v, double lo, double hi) {
     if (std::isnan(lo) || std::isnan(hi)) return false;
-    const bool above = lo == -INFINITY || (std::isinf(lo) ? false : compare(v, FT(lo)) >= 0);
-    const bool below = hi == INFINITY || (std::isinf(hi) ? false : compare(v, FT(hi)) <= 0);
+    const bool above = lo == -INFINITY || (std::isinf(lo) ? false : compare(v, Q(lo)) >= 0);
+    const bool below = hi == INFINITY || (std::isinf(hi) ? false : compare(v, Q(hi)) <= 0);
     if (v.kind == value::minus_infinity) return lo == -INFINITY;
     if (v.kind == value::plus_infinity) return hi == INFINITY;
     return above && below;
@@ -109,17 +123,24 @@ double approx(const value& v) {
     }
 }
 
+// o + t d; q = o + d and the line through them are built once (a mesh's triangles share them).
 struct object {
     P3 o;
     V3 d;
     linear_object::kind_t kind;
+    P3 q;
+    K::Line_3 line;
     bool bounded_below() const { return kind != linear_object::line; }
     bool bounded_above() const { return kind == linear_object::segment; }
 };
 object object_of(const linear_object& x) {
     const P3 o(x.o[0], x.o[1], x.o[2]);
-    if (x.kind == linear_object::segment) return {o, P3(x.d[0], x.d[1], x.d[2]) - o, x.kind};
-    return {o, V3(x.d[0], x.d[1], x.d[2]), x.kind};
+    if (x.kind == linear_object::segment) {
+        const P3 e(x.d[0], x.d[1], x.d[2]);
+        return {o, e - o, x.kind, e, o == e ? K::Line_3() : K::Line_3(o, e)};
+    }
+    const V3 d(x.d[0], x.d[1], x.d[2]);
+    return {o, d, x.kind, o + d, d == CGAL::NULL_VECTOR ? K::Line_3() : K::Line_3(o, d)};
 }
 FT parameter(const object& s, const P3& p) { return (p - s.o) * s.d / (s.d * s.d); }
 P3 point_at(const object& s, const FT& t) { return s.o + t * s.d; }
@@ -189,9 +210,105 @@ std::optional<span> clipped_to_range(const object& s, std::optional<span> r) {
 }
 template <class X>
 std::optional<span> meet(const object& s, const X& x) {
-    return clipped_to_range(s, span_of_result(s, CGAL::intersection(K::Line_3(s.o, s.d), x)));
+    return clipped_to_range(s, span_of_result(s, CGAL::intersection(s.line, x)));
 }
 bool is_point(const object& s) { return s.d == CGAL::NULL_VECTOR; }
+// A certified miss of the triangle a b c by the object (not a point), in interval arithmetic over
+// the exact objects' approximations with the rounding upwards: a plane separates them. Tried: the
+// triangle's plane (the object's range strictly on one side); the planes through the line with
+// normal D x n (n the triangle's normal: within the triangle's plane, the line's side); the planes
+// of the line's Pluecker products with the edges, det(D, p - o, q - o), strictly opposite in sign;
+// and the planes normal to D at the object's ends. Most of a mesh's or a polygon's triangles end
+// here; an interval that contains zero decides nothing and the exact test follows.
+bool surely_misses(const object& s, const P3& a, const P3& b, const P3& c) {
+    CGAL::Protect_FPU_rounding<true> upwards;
+    using I = CGAL::Interval_nt<false>;
+    using IV = CGAL::Simple_cartesian<I>::Vector_3;
+    const auto& O = CGAL::approx(s.o);
+    const IV D = CGAL::approx(s.d), A = CGAL::approx(a) - O, B = CGAL::approx(b) - O, C = CGAL::approx(c) - O;
+    // all three of x, y, z strictly positive or all strictly negative
+    auto one_side = [](const I& x, const I& y, const I& z) {
+        return (x.inf() > 0 && y.inf() > 0 && z.inf() > 0) || (x.sup() < 0 && y.sup() < 0 && z.sup() < 0);
+    };
+    const IV n = CGAL::cross_product(B - A, C - A);
+    const I h0 = -(n * A), hd = n * D; // the object's height over the triangle's plane at t = 0, and its rate
+    if (s.bounded_above()) {           // a segment: both ends strictly on one side
+        const I h1 = h0 + hd;
+        if ((h0.inf() > 0 && h1.inf() > 0) || (h0.sup() < 0 && h1.sup() < 0)) return true;
+    } else if (s.bounded_below() && ((h0.inf() > 0 && hd.inf() >= 0) || (h0.sup() < 0 && hd.sup() <= 0))) {
+        return true; // a ray moving away
+    }
+    const IV m = CGAL::cross_product(D, n);
+    if (one_side(A * m, B * m, C * m)) return true;
+    const I p[3] = {D * CGAL::cross_product(A, B), D * CGAL::cross_product(B, C), D * CGAL::cross_product(C, A)};
+    bool pos = false, neg = false;
+    for (const I& v : p) pos = pos || v.inf() > 0, neg = neg || v.sup() < 0;
+    if (pos && neg) return true;
+    if (!s.bounded_below()) return false;
+    const I ta = A * D, tb = B * D, tc = C * D;                    // t D.D at the vertices' projections
+    if (ta.sup() < 0 && tb.sup() < 0 && tc.sup() < 0) return true; // behind the start
+    const I dd = D * D;
+    return s.bounded_above() && (ta - dd).inf() > 0 && (tb - dd).inf() > 0 && (tc - dd).inf() > 0; // beyond the end
+}
+// The sides of a, b, c (in the plane of a proper triangle that holds the line) of the line, in
+// interval arithmetic: 1 or -1 where the side is sure, 0 where it is not.
+std::array<int, 3> sides_in_plane(const object& s, const P3& a, const P3& b, const P3& c) {
+    CGAL::Protect_FPU_rounding<true> upwards;
+    using I = CGAL::Interval_nt<false>;
+    using IV = CGAL::Simple_cartesian<I>::Vector_3;
+    const auto& O = CGAL::approx(s.o);
+    const IV D = CGAL::approx(s.d), A = CGAL::approx(a) - O, B = CGAL::approx(b) - O, C = CGAL::approx(c) - O;
+    const IV m = CGAL::cross_product(D, CGAL::cross_product(B - A, C - A));
+    auto side = [&](const IV& v) {
+        const I h = v * m;
+        return h.inf() > 0 ? 1 : (h.sup() < 0 ? -1 : 0);
+    };
+    return {side(A), side(B), side(C)};
+}
+// A certified miss of the solid tetrahedron a b c d (not flat) by the object (not a point), in
+// interval arithmetic as above: the line misses every face (a line meets the solid only through its
+// boundary), the object's range lies strictly outside one face's plane, or all four vertices lie
+// strictly behind the object's start or beyond its end along D.
+bool surely_misses_solid(const object& s, const std::array<P3, 4>& v) {
+    CGAL::Protect_FPU_rounding<true> upwards;
+    using I = CGAL::Interval_nt<false>;
+    using IV = CGAL::Simple_cartesian<I>::Vector_3;
+    const auto& O = CGAL::approx(s.o);
+    const IV D = CGAL::approx(s.d);
+    std::array<IV, 4> P;
+    for (std::size_t i = 0; i < 4; ++i) P[i] = CGAL::approx(v[i]) - O;
+    bool misses_every_face = true;
+    for (std::size_t f = 0; f < 4; ++f) {
+        const IV& A = P[(f + 1) % 4];
+        const IV& B = P[(f + 2) % 4];
+        const IV& C = P[(f + 3) % 4];
+        const I p[3] = {D * CGAL::cross_product(A, B), D * CGAL::cross_product(B, C), D * CGAL::cross_product(C, A)};
+        bool pos = false, neg = false;
+        for (const I& x : p) pos = pos || x.inf() > 0, neg = neg || x.sup() < 0;
+        misses_every_face = misses_every_face && pos && neg;
+        // the face's plane, oriented away from the fourth vertex: the object strictly outside
+        const IV n = CGAL::cross_product(B - A, C - A);
+        const I inner = n * (P[f] - A), h0 = -(n * A), hd = n * D;
+        const int in = inner.inf() > 0 ? 1 : (inner.sup() < 0 ? -1 : 0);
+        if (in == 0 || !s.bounded_below()) continue;
+        const I g0 = h0 * I(in), gd = hd * I(in); // heights towards the inside
+        if (s.bounded_above()) {
+            if (g0.sup() < 0 && (g0 + gd).sup() < 0) return true;
+        } else if (g0.sup() < 0 && gd.sup() <= 0) {
+            return true;
+        }
+    }
+    if (misses_every_face) return true;
+    if (!s.bounded_below()) return false;
+    bool behind = true, beyond = s.bounded_above();
+    const I dd = D * D;
+    for (const IV& x : P) {
+        const I t = x * D;
+        behind = behind && t.sup() < 0;
+        beyond = beyond && (t - dd).inf() > 0;
+    }
+    return behind || beyond;
+}
 // The object against the closed triangle a b c (degenerate ones included).
 std::optional<span> triangle_span(const object& s, const P3& a, const P3& b, const P3& c) {
     if (is_point(s)) {
@@ -205,12 +322,18 @@ std::optional<span> triangle_span(const object& s, const P3& a, const P3& b, con
     // miss touching lines, found on meshes' near-degenerate lines). Otherwise the exact, filtered
     // predicate first: most of a mesh's triangles miss the line, and constructing the intersection
     // is what costs.
-    const bool in_plane = CGAL::orientation(a, b, c, s.o) == CGAL::COPLANAR && CGAL::orientation(a, b, c, s.o + s.d) == CGAL::COPLANAR;
+    if (surely_misses(s, a, b, c)) return std::nullopt;
+    const bool in_plane = CGAL::orientation(a, b, c, s.o) == CGAL::COPLANAR && CGAL::orientation(a, b, c, s.q) == CGAL::COPLANAR;
     if (!CGAL::collinear(a, b, c)) {
-        const K::Line_3 line(s.o, s.d);
+        const K::Line_3& line = s.line;
         if (in_plane) { // the line's span, then clipped to the ray's or the segment's range
-            auto along = [&](const P3& p, const P3& q) { return span_of_result(s, CGAL::intersection(line, K::Segment_3(p, q))); };
-            return clipped_to_range(s, hull(hull(along(a, b), along(b, c)), along(c, a)));
+            const auto side = sides_in_plane(s, a, b, c);
+            auto along = [&](const P3& p, int sp, const P3& q, int sq) -> std::optional<span> {
+                if (sp != 0 && sp == sq) return std::nullopt; // both ends surely on one side of the line
+                return span_of_result(s, CGAL::intersection(line, K::Segment_3(p, q)));
+            };
+            return clipped_to_range(
+                s, hull(hull(along(a, side[0], b, side[1]), along(b, side[1], c, side[2])), along(c, side[2], a, side[0])));
         }
         // across the plane: the line's one point in it, inside the closed triangle or not (CGAL
         // 5.5's Line_3/Triangle_3 intersection misses some lines through an edge or a vertex)
@@ -224,7 +347,7 @@ std::optional<span> triangle_span(const object& s, const P3& a, const P3& b, con
     }
     auto edge = [&](const P3& p, const P3& q) -> std::optional<span> {
         if (p == q) {
-            if (!CGAL::collinear(s.o, s.o + s.d, p)) return std::nullopt;
+            if (!CGAL::collinear(s.o, s.q, p)) return std::nullopt;
             const FT t = parameter(s, p);
             if ((s.bounded_below() && t < 0) || (s.bounded_above() && t > 1)) return std::nullopt;
             return span{t, t};
@@ -372,6 +495,7 @@ exact_hit exact_tetrahedron(const linear_object& x, const double v[12]) {
     if (CGAL::coplanar(a, b, c, d)) // flat: the union of its faces
         r = hull(hull(triangle_span(s, a, b, c), triangle_span(s, a, b, d)), hull(triangle_span(s, a, c, d), triangle_span(s, b, c, d)));
     else if (is_point(s)) r = K::Tetrahedron_3(a, b, c, d).has_on_unbounded_side(s.o) ? std::nullopt : domain(s);
+    else if (surely_misses_solid(s, {a, b, c, d})) r = std::nullopt;
     else r = meet(s, K::Tetrahedron_3(a, b, c, d));
     fill_span(*h.p, s, r);
     return h;
@@ -396,12 +520,12 @@ exact_hit exact_ball(const linear_object& x, const double c[3], double radius) {
     // the roots against the object's range
     value enter = t1, exit = t2;
     if (s.bounded_below()) {
-        if (compare(t2, 0) < 0) return h;
-        if (compare(t1, 0) <= 0) enter = rational_value(0);
+        if (compare(t2, Q(0)) < 0) return h;
+        if (compare(t1, Q(0)) <= 0) enter = rational_value(0);
     }
     if (s.bounded_above()) {
-        if (compare(t1, 1) > 0) return h;
-        if (compare(t2, 1) >= 0) exit = rational_value(1);
+        if (compare(t1, Q(1)) > 0) return h;
+        if (compare(t2, Q(1)) >= 0) exit = rational_value(1);
     }
     h.p->exists = true;
     set(*h.p, quantity::t_enter, enter);
@@ -491,9 +615,31 @@ exact_hit exact_mesh(const linear_object& x, const mesh_data& m) {
         }
         return h;
     }
+    // The triangles in the order of a lower bound on their parameters (their vertices' (v - o) . D
+    // / D . D, in interval arithmetic); once that bound passes the first contact found, no later
+    // triangle can hold a contact as early, and the exact tests stop.
+    std::vector<std::pair<double, std::size_t>> order;
+    {
+        CGAL::Protect_FPU_rounding<true> upwards;
+        using I = CGAL::Interval_nt<false>;
+        const auto& O = CGAL::approx(s.o);
+        const auto D = CGAL::approx(s.d);
+        const I dd = D * D;
+        for (std::size_t i = 0; i < m.t.size(); ++i) {
+            double lo = INFINITY;
+            for (const auto k : m.t[i]) {
+                const auto& v = m.v[k];
+                const I t = ((I(v[0]) - O.x()) * D.x() + (I(v[1]) - O.y()) * D.y() + (I(v[2]) - O.z()) * D.z()) / dd;
+                lo = std::min(lo, t.inf());
+            }
+            order.push_back({lo, i});
+        }
+    }
+    std::sort(order.begin(), order.end());
     std::optional<FT> first;
     std::vector<std::pair<FT, std::size_t>> contacts;
-    for (std::size_t i = 0; i < m.t.size(); ++i) {
+    for (const auto& [lo, i] : order) {
+        if (first && lo > CGAL::approx(*first).sup()) break;
         const auto& a = m.v[m.t[i][0]];
         const auto& b = m.v[m.t[i][1]];
         const auto& c = m.v[m.t[i][2]];

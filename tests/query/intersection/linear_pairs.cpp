@@ -488,7 +488,7 @@ void run_all(const char* suffix, const case_counts& n, int part) {
             t.print();
             t.require();
         }
-    } else {
+    } else if (part == 1) {
         auto halfspace_run = [&]<class P>(const char* name) {
             value_tally t{named(name)};
             for (long i = 0; i < n.total(); ++i) {
@@ -546,12 +546,12 @@ void run_all(const char* suffix, const case_counts& n, int part) {
             t.print();
             t.require();
         }
+    } else {
         {
             value_tally t{named("mesh")};
             support::mesh_store store, other;
-            const case_counts mesh_counts{n.random, n.near_cases / 4};
-            for (long i = 0; i < mesh_counts.total(); ++i) {
-                const X x = mesh_counts.near(i) ? support::mesh_near<X>(r, store, other) : support::mesh_random<X>(r, store, other);
+            for (long i = 0; i < n.total(); ++i) {
+                const X x = n.near(i) ? support::mesh_near<X>(r, store, other) : support::mesh_random<X>(r, store, other);
                 const mesh3 m = store.view();
                 bool finite = finite_linear(x);
                 for (const auto& p : m.vertices) finite = finite && is_finite(p);
@@ -569,10 +569,10 @@ void run_all(const char* suffix, const case_counts& n, int part) {
     }
 }
 
-// Per value query: 2,000 random and 100,000 near-degenerate cases (the four k-DOPs share them; the
-// mesh, whose oracle costs ten times more per case, 25,000), in two parts per linear kind so that
-// ctest runs them side by side. The sanitizer build does not run this test (the values fuzzer runs
-// every value family there); a build without NDEBUG runs 4,000 near-degenerate cases.
+// Per value query: 2,000 random and 100,000 near-degenerate cases (the four k-DOPs share them), in
+// three parts per linear kind (the mesh alone: the longest) so that ctest runs them side by side.
+// The sanitizer build does not run this test (the values fuzzer runs every value family there); a
+// build without NDEBUG runs 4,000 near-degenerate cases.
 #ifdef NDEBUG
 constexpr long near_value_cases = 100000;
 #else
@@ -582,21 +582,24 @@ const case_counts value_counts{support::cases(2000), support::cases(near_value_c
 TEST_CASE("intersection, rays: box, plane, triangle, tetrahedron, OBB, ball against CGAL Epeck", "[intersection][oracle]") {
     run_all<ray3>("ray", value_counts, 0);
 }
-TEST_CASE("intersection, rays: half-spaces, k-DOPs, polygon, mesh against CGAL Epeck", "[intersection][oracle]") {
+TEST_CASE("intersection, rays: half-spaces, k-DOPs, polygon against CGAL Epeck", "[intersection][oracle]") {
     run_all<ray3>("ray", value_counts, 1);
 }
+TEST_CASE("intersection, rays: mesh against CGAL Epeck", "[intersection][oracle]") { run_all<ray3>("ray", value_counts, 2); }
 TEST_CASE("intersection, segments: box, plane, triangle, tetrahedron, OBB, ball against CGAL Epeck", "[intersection][oracle]") {
     run_all<segment3>("segment", value_counts, 0);
 }
-TEST_CASE("intersection, segments: half-spaces, k-DOPs, polygon, mesh against CGAL Epeck", "[intersection][oracle]") {
+TEST_CASE("intersection, segments: half-spaces, k-DOPs, polygon against CGAL Epeck", "[intersection][oracle]") {
     run_all<segment3>("segment", value_counts, 1);
 }
+TEST_CASE("intersection, segments: mesh against CGAL Epeck", "[intersection][oracle]") { run_all<segment3>("segment", value_counts, 2); }
 TEST_CASE("intersection, lines: box, plane, triangle, tetrahedron, OBB, ball against CGAL Epeck", "[intersection][oracle]") {
     run_all<line3>("line", value_counts, 0);
 }
-TEST_CASE("intersection, lines: half-spaces, k-DOPs, polygon, mesh against CGAL Epeck", "[intersection][oracle]") {
+TEST_CASE("intersection, lines: half-spaces, k-DOPs, polygon against CGAL Epeck", "[intersection][oracle]") {
     run_all<line3>("line", value_counts, 1);
 }
+TEST_CASE("intersection, lines: mesh against CGAL Epeck", "[intersection][oracle]") { run_all<line3>("line", value_counts, 2); }
 
 TEST_CASE("intersection: fixtures", "[intersection]") {
     const aabb3 B{{0, 0, 0}, {1, 1, 1}};
