@@ -5,7 +5,8 @@
 #   ./run.sh test   the whole test suite: release build and tests (oracle, static, consumer,
 #                   benchmark smoke, audit output and report in Chromium), then the ASan+UBSan
 #                   build: its tests, and each fuzzer's corpus replay and a fixed-time run
-# and ./run.sh demo: the tiers on touching cases + a speed table, in the terminal.
+# and ./run.sh demo: the tiers on touching cases + a speed table, in the terminal; ./run.sh bench
+# [benchmark flags]: the optimised benchmarks, every timing into bench.json.
 # All install what is missing first (Debian bookworm + bookworm-backports) and skip what is there.
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -95,6 +96,14 @@ demo)
     build release
     ./build/release/tools/demo/incidence_demo
     ;;
+bench)
+    setup
+    data
+    cmake --preset release -Wno-dev >/dev/null
+    cmake --build --preset release --target incidence_bench
+    ./build/release/bench/incidence_bench --benchmark_format=json --benchmark_out=bench.json "${@:2}"
+    echo "timings in $(pwd)/bench.json"
+    ;;
 test)
     setup
     data
@@ -111,7 +120,7 @@ test)
     echo "$total_passed passed, $total_failed failed"
     ;;
 *)
-    echo "usage: $0 audit | test | demo" >&2
+    echo "usage: $0 audit | test | demo | bench [benchmark flags]" >&2
     exit 2
     ;;
 esac

@@ -13,7 +13,7 @@
 //                  runs some family;
 //   approximate    each yes/no family's alternatives and signs_in_double agree with the exact tier
 //                  on clear-cut cases (far apart, deep inside), where no floating-point method errs.
-// The benchmarks are checked by tools/pair_table (bench/CMakeLists.txt's bench_pairs_match_catalog),
+// The benchmarks are checked by tools/pair_table (its CMakeLists.txt's bench_pairs_match_catalog),
 // docs/pairs.md by docs_pairs_is_generated.
 #include <catch2/catch_test_macros.hpp>
 #include <filesystem>

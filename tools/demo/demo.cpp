@@ -201,6 +201,6 @@ int main() {
     line("ray x triangle, random", rays, tris, epick_rt);
     line("ray x triangle, edge hits (exact)", near_rays, near_tris, epick_rt);
     line("ray x aabb, random", boxes, rays, epick_rb);
-    std::printf("\n(The full benchmark suite is build/release/bench/incidence_bench --benchmark_format=json.)\n");
+    std::printf("\n(The full benchmark suite: ./run.sh bench, timings in bench.json.)\n");
     return mismatches == 0 ? 0 : 1;
 }
