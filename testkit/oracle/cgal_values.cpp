@@ -8,9 +8,10 @@
 //   tetrahedron, triangle: CGAL::intersection with Tetrahedron_3 / Triangle_3 (a point or a
 //     segment), a flat tetrahedron by its faces, a degenerate triangle by its edges;
 //   polygon: CGAL's constrained triangulation of it (polygon3_triangles), each triangle as above;
-//   mesh: every triangle as above, and the object's start inside (mesh_inside);
-//   a triangle that a plane surely separates from the object (interval arithmetic,
-//     surely_misses) skips the exact test;
+//   mesh: the triangles as above, in the order of a lower bound on their parameters until that
+//     bound passes the first contact found, and the object's start inside (mesh_inside);
+//   a triangle or tetrahedron that a plane surely separates from the object (interval arithmetic:
+//     surely_misses, surely_misses_solid) skips the exact test;
 //   ball: the roots of a t^2 + 2 b t + c, compared with a rational y by the signs of a y^2 + 2 b y
 //     + c and a y + b (irrational values are never formed).
 // The parameter of a point P on the object: (P - o) . D / D . D.
