@@ -6,7 +6,7 @@
 #                   benchmark smoke, audit output and report in Chromium), then the ASan+UBSan
 #                   build: its tests, and each fuzzer's corpus replay and a fixed-time run
 # and ./run.sh demo: the tiers on touching cases + a speed table, in the terminal; ./run.sh bench
-# [benchmark flags]: the optimised benchmarks, every timing into bench.json.
+# [benchmark flags]: the optimised benchmarks, a table in the terminal and every timing in bench.json.
 # All install what is missing first (Debian bookworm + bookworm-backports) and skip what is there.
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -101,7 +101,7 @@ bench)
     data
     cmake --preset release -Wno-dev >/dev/null
     cmake --build --preset release --target incidence_bench
-    ./build/release/bench/incidence_bench --benchmark_format=json --benchmark_out=bench.json "${@:2}"
+    ./build/release/bench/incidence_bench --benchmark_out=bench.json --benchmark_out_format=json "${@:2}"
     echo "timings in $(pwd)/bench.json"
     ;;
 test)
