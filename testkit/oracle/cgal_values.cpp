@@ -23,6 +23,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <initializer_list>
 #include <optional>
 #include <type_traits>
 #include <variant>
@@ -214,101 +215,89 @@ std::optional<span> meet(const object& s, const X& x) {
     return clipped_to_range(s, span_of_result(s, CGAL::intersection(s.line, x)));
 }
 bool is_point(const object& s) { return s.d == CGAL::NULL_VECTOR; }
-// A certified miss of the triangle a b c by the object (not a point), in interval arithmetic over
-// the exact objects' approximations with the rounding upwards: a plane separates them. Tried: the
-// triangle's plane (the object's range strictly on one side); the planes through the line with
-// normal D x n (n the triangle's normal: within the triangle's plane, the line's side); the planes
-// of the line's Pluecker products with the edges, det(D, p - o, q - o), strictly opposite in sign;
-// and the planes normal to D at the object's ends. Most of a mesh's or a polygon's triangles end
-// here; an interval that contains zero decides nothing and the exact test follows.
+// The object in interval arithmetic over the exact objects' approximations, for the certified
+// misses below: points relative to o, its direction D. Callers hold the rounding upwards
+// (CGAL::Protect_FPU_rounding<true>) while they compute with it; a sign is sure when the interval
+// excludes zero, and an undecided one decides nothing (the exact test follows).
+using I = CGAL::Interval_nt<false>;
+using IV = CGAL::Simple_cartesian<I>::Vector_3;
+int sure_sign(const I& x) { return x.inf() > 0 ? 1 : (x.sup() < 0 ? -1 : 0); }
+struct interval_object {
+    const object& s;
+    IV D;
+    explicit interval_object(const object& x) : s(x), D(CGAL::approx(x.d)) {}
+    IV at(const P3& p) const { return CGAL::approx(p) - CGAL::approx(s.o); }
+    IV at(const std::array<double, 3>& p) const { return IV(p[0], p[1], p[2]) - (CGAL::approx(s.o) - CGAL::ORIGIN); }
+    // The line misses the triangle A B C: its Pluecker products with the edges, det(D, p, q), have
+    // strictly opposite signs (a line meeting the closed triangle, degenerate or not, has none).
+    bool line_misses(const IV& A, const IV& B, const IV& C) const {
+        const int p[3] = {sure_sign(D * CGAL::cross_product(A, B)), sure_sign(D * CGAL::cross_product(B, C)),
+                          sure_sign(D * CGAL::cross_product(C, A))};
+        return (p[0] > 0 || p[1] > 0 || p[2] > 0) && (p[0] < 0 || p[1] < 0 || p[2] < 0);
+    }
+    // The object's range lies strictly on the `side` (1 or -1) of the plane n . (x - A) = 0: both ends
+    // of a segment, a ray's start with its direction not turning back; never a line.
+    bool range_strictly(const IV& n, const IV& A, int side) const {
+        if (!s.bounded_below()) return false;
+        const I g0 = -(n * A) * I(side), gd = (n * D) * I(side); // the height at t = 0 and its rate
+        if (s.bounded_above()) return g0.inf() > 0 && (g0 + gd).inf() > 0;
+        return g0.inf() > 0 && gd.inf() >= 0;
+    }
+    // Every point strictly behind the object's start, or strictly beyond a segment's end, along D.
+    bool past_range(std::initializer_list<IV> points) const {
+        if (!s.bounded_below()) return false;
+        const I dd = D * D;
+        bool behind = true, beyond = s.bounded_above();
+        for (const IV& x : points) {
+            const I t = x * D; // t D . D at the point's projection
+            behind = behind && t.sup() < 0;
+            beyond = beyond && (t - dd).inf() > 0;
+        }
+        return behind || beyond;
+    }
+};
+// A certified miss of the triangle a b c by the object (not a point): a plane separates them. Tried:
+// the triangle's plane; the plane through the line with normal D x n (n the triangle's normal:
+// within the triangle's plane, the line's side); the Pluecker signs of the edges; the planes normal
+// to D at the object's ends. Most of a mesh's or a polygon's triangles end here.
 bool surely_misses(const object& s, const P3& a, const P3& b, const P3& c) {
     CGAL::Protect_FPU_rounding<true> upwards;
-    using I = CGAL::Interval_nt<false>;
-    using IV = CGAL::Simple_cartesian<I>::Vector_3;
-    const auto& O = CGAL::approx(s.o);
-    const IV D = CGAL::approx(s.d), A = CGAL::approx(a) - O, B = CGAL::approx(b) - O, C = CGAL::approx(c) - O;
-    // all three of x, y, z strictly positive or all strictly negative
-    auto one_side = [](const I& x, const I& y, const I& z) {
-        return (x.inf() > 0 && y.inf() > 0 && z.inf() > 0) || (x.sup() < 0 && y.sup() < 0 && z.sup() < 0);
-    };
+    const interval_object io(s);
+    const IV A = io.at(a), B = io.at(b), C = io.at(c);
     const IV n = CGAL::cross_product(B - A, C - A);
-    const I h0 = -(n * A), hd = n * D; // the object's height over the triangle's plane at t = 0, and its rate
-    if (s.bounded_above()) {           // a segment: both ends strictly on one side
-        const I h1 = h0 + hd;
-        if ((h0.inf() > 0 && h1.inf() > 0) || (h0.sup() < 0 && h1.sup() < 0)) return true;
-    } else if (s.bounded_below() && ((h0.inf() > 0 && hd.inf() >= 0) || (h0.sup() < 0 && hd.sup() <= 0))) {
-        return true; // a ray moving away
-    }
-    const IV m = CGAL::cross_product(D, n);
-    if (one_side(A * m, B * m, C * m)) return true;
-    const I p[3] = {D * CGAL::cross_product(A, B), D * CGAL::cross_product(B, C), D * CGAL::cross_product(C, A)};
-    bool pos = false, neg = false;
-    for (const I& v : p) pos = pos || v.inf() > 0, neg = neg || v.sup() < 0;
-    if (pos && neg) return true;
-    if (!s.bounded_below()) return false;
-    const I ta = A * D, tb = B * D, tc = C * D;                    // t D.D at the vertices' projections
-    if (ta.sup() < 0 && tb.sup() < 0 && tc.sup() < 0) return true; // behind the start
-    const I dd = D * D;
-    return s.bounded_above() && (ta - dd).inf() > 0 && (tb - dd).inf() > 0 && (tc - dd).inf() > 0; // beyond the end
+    if (io.range_strictly(n, A, 1) || io.range_strictly(n, A, -1)) return true;
+    const IV m = CGAL::cross_product(io.D, n);
+    const int side = sure_sign(A * m);
+    if (side != 0 && sure_sign(B * m) == side && sure_sign(C * m) == side) return true;
+    return io.line_misses(A, B, C) || io.past_range({A, B, C});
 }
-// The sides of a, b, c (in the plane of a proper triangle that holds the line) of the line, in
-// interval arithmetic: 1 or -1 where the side is sure, 0 where it is not.
+// The sides of a, b, c (in the plane of a proper triangle that holds the line) of the line: 1 or
+// -1 where the side is sure, 0 where it is not.
 std::array<int, 3> sides_in_plane(const object& s, const P3& a, const P3& b, const P3& c) {
     CGAL::Protect_FPU_rounding<true> upwards;
-    using I = CGAL::Interval_nt<false>;
-    using IV = CGAL::Simple_cartesian<I>::Vector_3;
-    const auto& O = CGAL::approx(s.o);
-    const IV D = CGAL::approx(s.d), A = CGAL::approx(a) - O, B = CGAL::approx(b) - O, C = CGAL::approx(c) - O;
-    const IV m = CGAL::cross_product(D, CGAL::cross_product(B - A, C - A));
-    auto side = [&](const IV& v) {
-        const I h = v * m;
-        return h.inf() > 0 ? 1 : (h.sup() < 0 ? -1 : 0);
-    };
-    return {side(A), side(B), side(C)};
+    const interval_object io(s);
+    const IV A = io.at(a), B = io.at(b), C = io.at(c);
+    const IV m = CGAL::cross_product(io.D, CGAL::cross_product(B - A, C - A));
+    return {sure_sign(A * m), sure_sign(B * m), sure_sign(C * m)};
 }
-// A certified miss of the solid tetrahedron a b c d (not flat) by the object (not a point), in
-// interval arithmetic as above: the line misses every face (a line meets the solid only through its
-// boundary), the object's range lies strictly outside one face's plane, or all four vertices lie
-// strictly behind the object's start or beyond its end along D.
+// A certified miss of the solid tetrahedron (not flat) by the object (not a point): the line misses
+// every face (a line meets the solid only through its boundary), the object's range lies strictly
+// outside one face's plane, or all four vertices lie strictly behind its start or beyond its end.
 bool surely_misses_solid(const object& s, const std::array<P3, 4>& v) {
     CGAL::Protect_FPU_rounding<true> upwards;
-    using I = CGAL::Interval_nt<false>;
-    using IV = CGAL::Simple_cartesian<I>::Vector_3;
-    const auto& O = CGAL::approx(s.o);
-    const IV D = CGAL::approx(s.d);
-    std::array<IV, 4> P;
-    for (std::size_t i = 0; i < 4; ++i) P[i] = CGAL::approx(v[i]) - O;
+    const interval_object io(s);
+    const std::array<IV, 4> P{io.at(v[0]), io.at(v[1]), io.at(v[2]), io.at(v[3])};
     bool misses_every_face = true;
     for (std::size_t f = 0; f < 4; ++f) {
         const IV& A = P[(f + 1) % 4];
         const IV& B = P[(f + 2) % 4];
         const IV& C = P[(f + 3) % 4];
-        const I p[3] = {D * CGAL::cross_product(A, B), D * CGAL::cross_product(B, C), D * CGAL::cross_product(C, A)};
-        bool pos = false, neg = false;
-        for (const I& x : p) pos = pos || x.inf() > 0, neg = neg || x.sup() < 0;
-        misses_every_face = misses_every_face && pos && neg;
-        // the face's plane, oriented away from the fourth vertex: the object strictly outside
+        misses_every_face = misses_every_face && io.line_misses(A, B, C);
         const IV n = CGAL::cross_product(B - A, C - A);
-        const I inner = n * (P[f] - A), h0 = -(n * A), hd = n * D;
-        const int in = inner.inf() > 0 ? 1 : (inner.sup() < 0 ? -1 : 0);
-        if (in == 0 || !s.bounded_below()) continue;
-        const I g0 = h0 * I(in), gd = hd * I(in); // heights towards the inside
-        if (s.bounded_above()) {
-            if (g0.sup() < 0 && (g0 + gd).sup() < 0) return true;
-        } else if (g0.sup() < 0 && gd.sup() <= 0) {
-            return true;
-        }
+        const int inside = sure_sign(n * (P[f] - A)); // the fourth vertex's side
+        if (inside != 0 && io.range_strictly(n, A, -inside)) return true;
     }
-    if (misses_every_face) return true;
-    if (!s.bounded_below()) return false;
-    bool behind = true, beyond = s.bounded_above();
-    const I dd = D * D;
-    for (const IV& x : P) {
-        const I t = x * D;
-        behind = behind && t.sup() < 0;
-        beyond = beyond && (t - dd).inf() > 0;
-    }
-    return behind || beyond;
+    return misses_every_face || io.past_range({P[0], P[1], P[2], P[3]});
 }
 // The object against the closed triangle a b c (degenerate ones included).
 std::optional<span> triangle_span(const object& s, const P3& a, const P3& b, const P3& c) {
@@ -622,19 +611,11 @@ exact_hit exact_mesh(const linear_object& x, const mesh_data& m) {
     std::vector<std::pair<double, std::size_t>> order;
     {
         CGAL::Protect_FPU_rounding<true> upwards;
-        using I = CGAL::Interval_nt<false>;
-        const auto& O = CGAL::approx(s.o);
-        const auto D = CGAL::approx(s.d);
-        const I dd = D * D;
-        for (std::size_t i = 0; i < m.t.size(); ++i) {
-            double lo = INFINITY;
-            for (const auto k : m.t[i]) {
-                const auto& v = m.v[k];
-                const I t = ((I(v[0]) - O.x()) * D.x() + (I(v[1]) - O.y()) * D.y() + (I(v[2]) - O.z()) * D.z()) / dd;
-                lo = std::min(lo, t.inf());
-            }
-            order.push_back({lo, i});
-        }
+        const interval_object io(s);
+        const I dd = io.D * io.D;
+        std::vector<double> lower(m.v.size()); // per vertex, once (a vertex has several triangles)
+        for (std::size_t k = 0; k < m.v.size(); ++k) lower[k] = (io.at(m.v[k]) * io.D / dd).inf();
+        for (std::size_t i = 0; i < m.t.size(); ++i) order.push_back({std::min({lower[m.t[i][0]], lower[m.t[i][1]], lower[m.t[i][2]]}), i});
     }
     std::sort(order.begin(), order.end());
     std::optional<FT> first;
