@@ -138,20 +138,23 @@ template <int K>
 // candidate leaves [2^-1021, 2^1023) in magnitude (half a gap is then not a double, or the next
 // double is infinite), or it moves more than seven times.
 [[nodiscard]] constexpr double even_of(double a, double b) { return (__builtin_bit_cast(unsigned long long, a) & 1u) != 0 ? b : a; }
-template <class Cmp>
-[[nodiscard]] constexpr std::optional<double> round_at_midpoints(double guess, const Cmp& cmp) {
+// round_at_midpoints_with takes at(c) -> side(h) = sign(x - (c + h)), so that the two midpoints of
+// one candidate share what side() keeps.
+template <class At>
+[[nodiscard]] constexpr std::optional<double> round_at_midpoints_with(double guess, const At& at) {
     double c = guess;
     for (int step = 0; step < 8; ++step) {
         if (!(abs(c) >= 0x1p-1021 && abs(c) < 0x1p1023)) return std::nullopt;
         const double up = next_up(c), down = next_down(c);
-        const std::optional<sign> above = cmp(c, (up - c) * 0.5); // x - (c + half the gap above)
+        const auto side = at(c);
+        const std::optional<sign> above = side((up - c) * 0.5); // x - (c + half the gap above)
         if (!above) return std::nullopt;
         if (*above == sign::zero) return even_of(c, up);
         if (*above == sign::positive) {
             c = up;
             continue;
         }
-        const std::optional<sign> below = cmp(c, (down - c) * 0.5);
+        const std::optional<sign> below = side((down - c) * 0.5);
         if (!below) return std::nullopt;
         if (*below == sign::zero) return even_of(c, down);
         if (*below == sign::negative) {
@@ -161,6 +164,10 @@ template <class Cmp>
         return c;
     }
     return std::nullopt;
+}
+template <class Cmp>
+[[nodiscard]] constexpr std::optional<double> round_at_midpoints(double guess, const Cmp& cmp) {
+    return round_at_midpoints_with(guess, [&](double c) { return [&cmp, c](double h) { return cmp(c, h); }; });
 }
 // The double-double filter's sign as such a comparison: nothing where it proves none (a tie included).
 template <int K>
@@ -174,14 +181,25 @@ template <int K>
     return std::nullopt;
 }
 
+// h x for h a power of two: exact in every part (the filter trusts no permanent below 2^-800, so a
+// part that underflows errs by less than 2^-1075, far inside the bound's slack), the bound scaled.
+template <int K>
+[[nodiscard]] constexpr filtered_dd<K> scaled(const filtered_dd<K>& x, double h) {
+    return {x.hi * h, x.lo * h, x.p * abs(h)};
+}
+
 // P / S correctly rounded from the double-double filter's P and S, or nullopt (S not proven
-// nonzero, a sign near a midpoint, a magnitude out of the filter's range).
+// nonzero, a sign near a midpoint, a magnitude out of the filter's range). Both midpoints around a
+// candidate c share the residual R = P - c S: sign(P - (c + h) S) = sign(R - h S), h S exact.
 template <int A, int B>
 [[nodiscard]] constexpr std::optional<double> rounded_quotient(const filtered_dd<A>& p, const filtered_dd<B>& s) {
     const std::optional<sign> ss = dd_side(s);
     if (!ss) return std::nullopt;
-    const double guess = p.hi / s.hi;
-    return round_at_midpoints(guess, [&](double c, double h) { return times(dd_side(p - lift_filtered_dd(c, h) * s), *ss); });
+    const sign sign_s = *ss;
+    return round_at_midpoints_with(p.hi / s.hi, [&](double c) __attribute__((always_inline)) {
+        return [r = p - lift_filtered_dd(c) * s, &s, sign_s](double h)
+                   __attribute__((always_inline)) { return times(dd_side(r - scaled(s, h)), sign_s); };
+    });
 }
 
 template <class F>
@@ -265,42 +283,72 @@ template <class K>
 // The point a + t b of a parameter t = P / S (f(L) -> ratio{P, S}) on the line a(L) + t b(L)
 // (lifted points and vectors: b = q - a exactly for a segment), each coordinate
 // (a_i S + P b_i) / S from one evaluation of P and S. Plain: a + fl(P / S) b, as a user would write it.
+// value_and_point gives t and the point together, from that one evaluation.
+template <class K>
+struct value_with_point {
+    value_t<K> t;
+    point_value_t<K> point;
+};
+
+// Coordinate pick(a + t b) correctly rounded, as its own ratio (a_i S + P b_i) / S.
+template <class K, class F, class A, class B, class Pick>
+[[nodiscard]] constexpr double rounded_coordinate(K& k, const F& f, const A& a, const B& b, Pick pick) {
+    return value(k, [=](auto L) {
+        const auto q = ratio_of(f, L);
+        return ratio{pick(a(L)) * q.den + q.num * pick(b(L)), q.den};
+    });
+}
+inline constexpr auto pick_x = [](const auto& v) { return v.x; };
+inline constexpr auto pick_y = [](const auto& v) { return v.y; };
+inline constexpr auto pick_z = [](const auto& v) { return v.z; };
+
+// The rounded point; at run time from the double-double filter's P and S (r, when given) where its
+// midpoint tests decide, by the exact stages for the other coordinates.
 template <class K, class F, class A, class B>
-[[nodiscard]] constexpr point_value_t<K> point_at(K& k, const F& f, const A& a, const B& b) {
+[[nodiscard]] constexpr point3 rounded_point(K& k, const F& f, const A& a, const B& b) {
+    return point3{rounded_coordinate(k, f, a, b, pick_x), rounded_coordinate(k, f, a, b, pick_y), rounded_coordinate(k, f, a, b, pick_z)};
+}
+template <class K, class F, class A, class B, class R>
+[[nodiscard]] constexpr point3 rounded_point(K& k, const F& f, const A& a, const B& b, const R& r) {
+    const auto o = a(lift_filter_dd{});
+    const auto d = b(lift_filter_dd{});
+    const auto x = rounded_quotient(o.x * r.den + r.num * d.x, r.den);
+    const auto y = rounded_quotient(o.y * r.den + r.num * d.y, r.den);
+    const auto z = rounded_quotient(o.z * r.den + r.num * d.z, r.den);
+    return point3{x ? *x : rounded_coordinate(k, f, a, b, pick_x), y ? *y : rounded_coordinate(k, f, a, b, pick_y),
+                  z ? *z : rounded_coordinate(k, f, a, b, pick_z)};
+}
+
+template <class K, class F, class A, class B>
+[[nodiscard]] constexpr value_with_point<K> value_and_point(K& k, const F& f, const A& a, const B& b) {
     constexpr value_mode mode = value_mode_of<K>();
     if constexpr (mode == value_mode::plain) {
         const double t = plain_value(f);
         const auto o = a(lift_double{});
         const auto d = b(lift_double{});
-        return point3{o.x + t * d.x, o.y + t * d.y, o.z + t * d.z};
+        return {t, point3{o.x + t * d.x, o.y + t * d.y, o.z + t * d.z}};
     } else if constexpr (mode == value_mode::enclosure) {
         const auto r = ratio_of(f, lift_filter{});
         const auto o = a(lift_filter{});
         const auto d = b(lift_filter{});
         const interval s = enclose(r.den);
-        return interval3{divide(enclose(o.x * r.den + r.num * d.x), s), divide(enclose(o.y * r.den + r.num * d.y), s),
-                         divide(enclose(o.z * r.den + r.num * d.z), s)};
+        return {divide(enclose(r.num), s),
+                interval3{divide(enclose(o.x * r.den + r.num * d.x), s), divide(enclose(o.y * r.den + r.num * d.y), s),
+                          divide(enclose(o.z * r.den + r.num * d.z), s)}};
     } else {
-        auto coordinate = [&](auto pick) {
-            return value(k, [=](auto L) {
-                const auto r = ratio_of(f, L);
-                return ratio{pick(a(L)) * r.den + r.num * pick(b(L)), r.den};
-            });
-        };
-        if (!__builtin_is_constant_evaluated()) {
-            const auto r = ratio_of(f, lift_filter_dd{});
-            const auto o = a(lift_filter_dd{});
-            const auto d = b(lift_filter_dd{});
-            const auto x = rounded_quotient(o.x * r.den + r.num * d.x, r.den);
-            const auto y = rounded_quotient(o.y * r.den + r.num * d.y, r.den);
-            const auto z = rounded_quotient(o.z * r.den + r.num * d.z, r.den);
-            if (x && y && z) return point3{*x, *y, *z};
-            return point3{x ? *x : coordinate([](const auto& v) { return v.x; }), y ? *y : coordinate([](const auto& v) { return v.y; }),
-                          z ? *z : coordinate([](const auto& v) { return v.z; })};
-        }
-        return point3{coordinate([](const auto& v) { return v.x; }), coordinate([](const auto& v) { return v.y; }),
-                      coordinate([](const auto& v) { return v.z; })};
+        if (__builtin_is_constant_evaluated()) return {rounded_value(f), rounded_point(k, f, a, b)};
+        const auto r = ratio_of(f, lift_filter_dd{});
+        const auto t = rounded_quotient(r.num, r.den);
+        return {t ? *t : rounded_value_exactly(f, r.num.hi / r.den.hi), rounded_point(k, f, a, b, r)};
     }
+}
+template <class K, class F, class A, class B>
+[[nodiscard]] constexpr point_value_t<K> point_at(K& k, const F& f, const A& a, const B& b) {
+    if constexpr (value_mode_of<K>() == value_mode::rounded) {
+        if (__builtin_is_constant_evaluated()) return rounded_point(k, f, a, b);
+        return rounded_point(k, f, a, b, ratio_of(f, lift_filter_dd{}));
+    }
+    return value_and_point(k, f, a, b).point;
 }
 
 // --- roots of a quadratic --------------------------------------------------------------------------
@@ -455,35 +503,37 @@ template <class F, class A, class B>
 // coordinate a_i + t b_i is on the side of a midpoint m that t is of y = (m - a_i) / b_i (times the
 // sign of b_i), so it is bracketed as the root is, with p = +-(m - a_i) and q = |b_i|.
 template <class K, class F, class A, class B>
-[[nodiscard]] constexpr point_value_t<K> point_at_root(K& k, const F& f, root r, const A& a, const B& b) {
+[[nodiscard]] constexpr value_with_point<K> value_and_point_at_root(K& k, const F& f, root r, const A& a, const B& b) {
     constexpr value_mode mode = value_mode_of<K>();
     if constexpr (mode == value_mode::plain) {
         const double t = root_value(k, f, r);
         const auto o = a(lift_double{});
         const auto d = b(lift_double{});
-        return point3{o.x + t * d.x, o.y + t * d.y, o.z + t * d.z};
+        return {t, point3{o.x + t * d.x, o.y + t * d.y, o.z + t * d.z}};
     } else if constexpr (mode == value_mode::enclosure) {
         const interval t = enclosed_root_of(f, r);
         const auto o = a(lift_filter{});
         const auto d = b(lift_filter{});
         auto coordinate = [&](const auto& oi, const auto& di) { return add(enclose(oi), mul(t, enclose(di))); };
-        return interval3{coordinate(o.x, d.x), coordinate(o.y, d.y), coordinate(o.z, d.z)};
+        return {t, interval3{coordinate(o.x, d.x), coordinate(o.y, d.y), coordinate(o.z, d.z)}};
     } else {
         // the rounded t and one Newton step give t to about twice double's precision, and so a guess
         // for each coordinate that stays within an ulp where a_i + t b_i cancels
         const double t = rounded_root(f, r);
-        double delta = 0.0;
-        if (!__builtin_is_constant_evaluated()) delta = newton_step(f(lift_filter_dd{}), t);
+        bool run_time = !__builtin_is_constant_evaluated(); // not const: a const bool would be a constant
+        const auto q = run_time ? f(lift_filter_dd{}) : decltype(f(lift_filter_dd{})){};
+        const auto ad = run_time ? a(lift_filter_dd{}) : decltype(a(lift_filter_dd{})){};
+        const auto bd = run_time ? b(lift_filter_dd{}) : decltype(b(lift_filter_dd{})){};
+        const double delta = run_time ? newton_step(q, t) : 0.0;
         auto coordinate = [&](auto pick) -> double {
             const double bi = pick(b(lift_double{}));
             const sign sb = sign_of_double(bi);
             if (sb == sign::zero) return pick(a(lift_double{})); // b_i == 0: the coordinate is a_i, an input
             double guess = pick(a(lift_double{})) + t * bi;
             // sign(a_i + t b_i - m) = sign(b_i) sign(t - y), y = p / q = sign(b_i) (m - a_i) / |b_i|
-            if (!__builtin_is_constant_evaluated()) {
-                const auto q = f(lift_filter_dd{});
-                const auto ai = pick(a(lift_filter_dd{}));
-                const auto di = pick(b(lift_filter_dd{}));
+            if (run_time) {
+                const auto ai = pick(ad);
+                const auto di = pick(bd);
                 const auto g = ai + lift_filtered_dd(t, -delta) * di;
                 guess = g.hi + g.lo;
                 const auto v = round_at_midpoints(guess, [&](double c, double h) {
@@ -496,8 +546,7 @@ template <class K, class F, class A, class B>
             }
             return rounded_root_coordinate(f, r, [=](auto L) { return pick(a(L)); }, [=](auto L) { return pick(b(L)); }, sb, guess);
         };
-        return point3{coordinate([](const auto& v) { return v.x; }), coordinate([](const auto& v) { return v.y; }),
-                      coordinate([](const auto& v) { return v.z; })};
+        return {t, point3{coordinate(pick_x), coordinate(pick_y), coordinate(pick_z)}};
     }
 }
 

@@ -45,9 +45,9 @@ template <class K, class Con>
 [[nodiscard]] constexpr std::optional<clipped> clip(K& k, const Con& con, int m, extent x) {
     clipped r;
     for (int i = 0; i < m; ++i) {
-        const sign sb = arith::sgn<arith::hint::structural>(k, [=](auto L) { return con(i, L).b; });
+        const sign sb = arith::sgn<arith::hint::structural>(k, [&](auto L) { return con(i, L).b; });
         if (sb == sign::zero) { // parallel: the constraint holds everywhere or nowhere
-            if (k.sgn([=](auto L) { return con(i, L).a; }) == sign::negative) return std::nullopt;
+            if (k.sgn([&](auto L) { return con(i, L).a; }) == sign::negative) return std::nullopt;
             continue;
         }
         int& bound = sb == sign::positive ? r.lower : r.upper;
@@ -57,7 +57,7 @@ template <class K, class Con>
         }
         const int j = bound;
         // t_i - t_j has the sign of A_j B_i - A_i B_j (B_i B_j > 0); a lower bound tightens when larger
-        const sign order = k.sgn([=](auto L) {
+        const sign order = k.sgn([&](auto L) {
             const auto gi = con(i, L);
             const auto gj = con(j, L);
             return gj.a * gi.b - gi.a * gj.b;
@@ -68,15 +68,15 @@ template <class K, class Con>
     // way to the range's own bound, which is the same number and exact.
     if (x != extent::line && r.lower >= 0) { // t_l = -A_l / B_l <= 0 iff A_l >= 0
         const int l = r.lower;
-        if (k.sgn([=](auto L) { return con(l, L).a; }) != sign::negative) r.lower = -1;
+        if (k.sgn([&](auto L) { return con(l, L).a; }) != sign::negative) r.lower = -1;
     }
     if (x != extent::line && r.upper >= 0) { // t_u = -A_u / B_u >= 0 iff A_u >= 0
         const int u = r.upper;
-        if (k.sgn([=](auto L) { return con(u, L).a; }) == sign::negative) return std::nullopt;
+        if (k.sgn([&](auto L) { return con(u, L).a; }) == sign::negative) return std::nullopt;
     }
     if (x == extent::segment && r.upper >= 0) { // t_u >= 1 iff A_u + B_u >= 0 (B_u < 0)
         const int u = r.upper;
-        if (k.sgn([=](auto L) {
+        if (k.sgn([&](auto L) {
                 const auto g = con(u, L);
                 return g.a + g.b;
             }) != sign::negative)
@@ -84,7 +84,7 @@ template <class K, class Con>
     }
     if (x == extent::segment && r.lower >= 0) { // t_l <= 1 iff A_l + B_l >= 0 (B_l > 0)
         const int l = r.lower;
-        if (k.sgn([=](auto L) {
+        if (k.sgn([&](auto L) {
                 const auto g = con(l, L);
                 return g.a + g.b;
             }) == sign::negative)
@@ -92,7 +92,7 @@ template <class K, class Con>
     }
     if (r.lower >= 0 && r.upper >= 0) { // t_l - t_u has the sign of A_l B_u - A_u B_l
         const int l = r.lower, u = r.upper;
-        if (k.sgn([=](auto L) {
+        if (k.sgn([&](auto L) {
                 const auto gl = con(l, L);
                 const auto gu = con(u, L);
                 return gl.a * gu.b - gu.a * gl.b;
@@ -108,13 +108,13 @@ template <class K, class Con>
 // the clip above would compare the plane's bound with itself: a zero no filter proves.)
 template <class K, class Con>
 [[nodiscard]] constexpr std::optional<clipped> clip_equality(K& k, const Con& con, extent x) {
-    const sign sb = arith::sgn<arith::hint::structural>(k, [=](auto L) { return con(0, L).b; });
+    const sign sb = arith::sgn<arith::hint::structural>(k, [&](auto L) { return con(0, L).b; });
     if (sb == sign::zero) {
-        if (!arith::is_zero<arith::hint::structural>(k, [=](auto L) { return con(0, L).a; })) return std::nullopt;
+        if (!arith::is_zero<arith::hint::structural>(k, [&](auto L) { return con(0, L).a; })) return std::nullopt;
         return clipped{};
     }
-    if (x != extent::line && k.sgn([=](auto L) { return con(0, L).a; }) == sb) return std::nullopt; // t < 0
-    if (x == extent::segment && k.sgn([=](auto L) {
+    if (x != extent::line && k.sgn([&](auto L) { return con(0, L).a; }) == sb) return std::nullopt; // t < 0
+    if (x == extent::segment && k.sgn([&](auto L) {
             const auto g = con(0, L);
             return g.a + g.b;
         }) == -sb)
@@ -140,10 +140,12 @@ template <class K, class Con>
     auto O = [=](auto L) { return s.O(L); };
     auto D = [=](auto L) { return s.D(L); };
     span_hit<arith::value_t<K>> h{arith::exact_value(k, lo), arith::exact_value(k, hi), arith::exact_point(k, s.o)};
-    if (r.upper >= 0) h.t_exit = arith::value(k, bound_parameter(con, r.upper));
+    if (r.upper >= 0 && r.upper != r.lower) h.t_exit = arith::value(k, bound_parameter(con, r.upper));
     if (r.lower >= 0) {
-        h.t_enter = arith::value(k, bound_parameter(con, r.lower));
-        h.point = arith::point_at(k, bound_parameter(con, r.lower), O, D);
+        const auto e = arith::value_and_point(k, bound_parameter(con, r.lower), O, D);
+        h.t_enter = e.t;
+        h.point = e.point;
+        if (r.upper == r.lower) h.t_exit = e.t; // an equality: one parameter
     } else if (s.kind == extent::line && r.upper >= 0) {
         const int u = r.upper; // the exit t_u < 0 iff A_u < 0 (B_u < 0)
         if (k.sgn([=](auto L) { return con(u, L).a; }) == sign::negative) h.point = arith::point_at(k, bound_parameter(con, u), O, D);
@@ -229,10 +231,10 @@ template <class K, class... Con>
         h.t_exit =
             with_family(upper.family, [&](const auto& c) { return arith::value(k, bound_parameter(c, upper.index)); }, fams.first...);
     if (lower.index >= 0) {
-        h.t_enter =
-            with_family(lower.family, [&](const auto& c) { return arith::value(k, bound_parameter(c, lower.index)); }, fams.first...);
-        h.point = with_family(
-            lower.family, [&](const auto& c) { return arith::point_at(k, bound_parameter(c, lower.index), O, D); }, fams.first...);
+        const auto e = with_family(
+            lower.family, [&](const auto& c) { return arith::value_and_point(k, bound_parameter(c, lower.index), O, D); }, fams.first...);
+        h.t_enter = e.t;
+        h.point = e.point;
     } else if (s.kind == extent::line && upper.index >= 0) {
         const bool behind = with_family(
             upper.family, [&](const auto& c) { return k.sgn([=, u = upper.index](auto L) { return c(u, L).a; }) == sign::negative; },

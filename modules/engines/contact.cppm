@@ -245,5 +245,12 @@ template <class K>
     return with_ratio(e, s,
                       [&](const auto& t) { return arith::point_at(k, t, [=](auto L) { return s.O(L); }, [=](auto L) { return s.D(L); }); });
 }
+// Both, from one evaluation of the end's ratio.
+template <class K>
+[[nodiscard]] constexpr arith::value_with_point<K> end_value_and_point(K& k, const contact_end& e, const linear3& s) {
+    if (e.kind == end_kind::domain) return {end_value(k, e, s), end_point(k, e, s)};
+    return with_ratio(
+        e, s, [&](const auto& t) { return arith::value_and_point(k, t, [=](auto L) { return s.O(L); }, [=](auto L) { return s.D(L); }); });
+}
 
 } // namespace incidence::detail

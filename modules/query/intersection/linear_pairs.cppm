@@ -205,7 +205,8 @@ template <class K, linear_shape S>
         std::optional<contact_span> r;
         for (int f = 0; f < 4; ++f) r = hull_of(k, r, triangle_span(k, s, t.face(f)), s);
         if (!r) return std::nullopt;
-        return span_hit<arith::value_t<K>>{end_value(k, r->enter, s), end_value(k, r->exit, s), end_point(k, r->enter, s)};
+        const auto enter = end_value_and_point(k, r->enter, s);
+        return span_hit<arith::value_t<K>>{enter.t, end_value(k, r->exit, s), enter.point};
     }
     // faces (p, q, r) with the sign of orient3d(p, q, r, x) inside: (a b c) o, (a b d) -o, (a c d) o, (b c d) -o
     const std::array<point3, 4> v{t.a, t.b, t.c, t.d};
@@ -275,8 +276,9 @@ template <class K, linear_shape S>
     auto O = [=](auto L) { return s.O(L); };
     auto D = [=](auto L) { return s.D(L); };
     if (enter_at_root) {
-        h.t_enter = arith::root_value(k, q, arith::root::smaller);
-        h.point = arith::point_at_root(k, q, arith::root::smaller, O, D);
+        const auto e = arith::value_and_point_at_root(k, q, arith::root::smaller, O, D);
+        h.t_enter = e.t;
+        h.point = e.point;
     }
     if (exit_at_root) h.t_exit = arith::root_value(k, q, arith::root::larger);
     return h;
@@ -351,7 +353,8 @@ template <class K>
 
 template <class K>
 [[nodiscard]] constexpr triangle_hit<arith::value_t<K>> triangle_values(K& k, const contact_end& e, const linear3& s, const triangle3& t) {
-    triangle_hit<arith::value_t<K>> h{end_value(k, e, s), end_point(k, e, s), normal_value(k, t), {}, {}, {}};
+    const auto v = end_value_and_point(k, e, s);
+    triangle_hit<arith::value_t<K>> h{v.t, v.point, normal_value(k, t), {}, {}, {}};
     barycentrics(k, h, e, s, t);
     return h;
 }
@@ -372,7 +375,10 @@ template <class K, linear_shape S>
 [[nodiscard]] constexpr std::optional<polygon_hit<arith::value_t<K>>> intersection(K& k, const polygon3& g, const S& x) {
     if (!finite(x) || !polygon3d::usable(k, g) || !polygon3d::linear_meets(k, g, as_linear(x))) return std::nullopt;
     const linear3 s = as_linear(x);
-    auto hit = [&](const contact_end& e) { return polygon_hit<arith::value_t<K>>{end_value(k, e, s), end_point(k, e, s)}; };
+    auto hit = [&](const contact_end& e) {
+        const auto v = end_value_and_point(k, e, s);
+        return polygon_hit<arith::value_t<K>>{v.t, v.point};
+    };
     if (s.is_point()) return hit(domain_end(domain_low(s)));
     const point3 a = g.vertices[g.plane_vertices[0]], b = g.vertices[g.plane_vertices[1]], c = g.vertices[g.plane_vertices[2]];
     const sign nd = arith::sgn<arith::hint::structural>(k, [=](auto L) { return arith::dot(polygon3d::normal(L, g), s.D(L)); });
