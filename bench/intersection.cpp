@@ -2,11 +2,13 @@
 // random and near-degenerate cases of the pair's tests at scale 1, in the exact, conservative and
 // approximate tiers, and the exact yes/no answer on the same cases (exact/intersection_yes_no/...):
 // the ratio of the two exact times is what a value costs beside the answer. Before timing, the
-// exact tier's hits are checked against the exact yes/no answer of the oracle.
+// exact tier's hits are checked against the exact yes/no answer of the oracle. Each timed call
+// returns the whole hit, so its values are computed, not optimised away.
 #include "bench.hpp"
 #include "testkit/box_linear_cases.hpp"
 #include "testkit/mesh_cases.hpp"
 #include "testkit/polygon3_cases.hpp"
+#include "value_floor.hpp"
 
 namespace bench {
 namespace {
@@ -25,11 +27,18 @@ void values(const std::string& pair, const std::string& dist, const std::vector<
         reg("exact/intersection_yes_no/" + pair + "/" + dist, cs, truth, check::exact,
             [](const sx<S, X>& c) { return intersects<exact>(c.s, c.x); });
     reg("exact/intersection/" + pair + "/" + dist, cs, truth, check::exact,
-        [](const sx<S, X>& c) { return intersection<exact>(c.s, c.x).has_value(); });
+        [](const sx<S, X>& c) { return intersection<exact>(c.s, c.x); });
     reg("conservative/intersection/" + pair + "/" + dist, cs, truth, check::conservative,
-        [](const sx<S, X>& c) { return intersection<conservative>(c.s, c.x).has_value(); });
+        [](const sx<S, X>& c) { return intersection<conservative>(c.s, c.x); });
     reg("approximate/intersection/" + pair + "/" + dist, cs, truth, check::approximate,
-        [](const sx<S, X>& c) { return intersection<approximate>(c.s, c.x).has_value(); });
+        [](const sx<S, X>& c) { return intersection<approximate>(c.s, c.x); });
+    if constexpr (value_floor::has_floor<S, X>) { // value_floor.hpp: what correct rounding cannot go below
+        reg("floor/intersection/" + pair + "/" + dist, cs, truth, check::approximate,
+            [](const sx<S, X>& c) { return value_floor::with_dekker(c.s, c.x); });
+        if (__builtin_cpu_supports("fma"))
+            reg("floor_fma/intersection/" + pair + "/" + dist, cs, truth, check::approximate,
+                [](const sx<S, X>& c) { return value_floor::with_fma(c.s, c.x); });
+    }
 }
 
 template <class X>
@@ -155,11 +164,11 @@ void view_values(const std::string& pair, bool near, Gen make_case) {
     reg("exact/intersection_yes_no/" + pair + "/" + dist, cs, truth, check::exact,
         [](const view_case& c) { return intersects<exact>(c.g.view(), c.x); });
     reg("exact/intersection/" + pair + "/" + dist, cs, truth, check::exact,
-        [](const view_case& c) { return intersection<exact>(c.g.view(), c.x).has_value(); });
+        [](const view_case& c) { return intersection<exact>(c.g.view(), c.x); });
     reg("conservative/intersection/" + pair + "/" + dist, cs, truth, check::conservative,
-        [](const view_case& c) { return intersection<conservative>(c.g.view(), c.x).has_value(); });
+        [](const view_case& c) { return intersection<conservative>(c.g.view(), c.x); });
     reg("approximate/intersection/" + pair + "/" + dist, cs, truth, check::approximate,
-        [](const view_case& c) { return intersection<approximate>(c.g.view(), c.x).has_value(); });
+        [](const view_case& c) { return intersection<approximate>(c.g.view(), c.x); });
 }
 
 template <class X>
