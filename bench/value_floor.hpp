@@ -10,17 +10,15 @@
 // machine can do; the library cannot use it at compile time or in a build for every x86-64.
 #pragma once
 #include <cmath>
+#include <type_traits>
 
 namespace bench::value_floor {
 
-struct dd {
-    double hi, lo;
-};
+// The library's error-free transforms (arith's eft: Knuth's two_sum, Dekker's fast_two_sum and
+// two_product); the operations below add no error bound.
+using dd = incidence::arith::two_double;
 struct dekker {
-    [[gnu::always_inline]] static dd product(double a, double b) {
-        const auto p = incidence::arith::two_product(a, b);
-        return {p.hi, p.lo};
-    }
+    [[gnu::always_inline]] static dd product(double a, double b) { return incidence::arith::two_product(a, b); }
 };
 struct fused {
     [[gnu::always_inline]] static dd product(double a, double b) {
@@ -29,44 +27,38 @@ struct fused {
     }
 };
 
-[[gnu::always_inline]] inline dd quick_sum(double a, double b) {
-    const double s = a + b;
-    return {s, b - (s - a)};
-}
-[[gnu::always_inline]] inline dd sum(double a, double b) {
-    const double s = a + b, bb = s - a;
-    return {s, (a - (s - bb)) + (b - bb)};
-}
+using incidence::arith::fast_two_sum;
+using incidence::arith::two_sum;
 [[gnu::always_inline]] inline dd operator+(dd a, dd b) {
-    const dd s = sum(a.hi, b.hi);
-    return quick_sum(s.hi, s.lo + a.lo + b.lo);
+    const dd s = two_sum(a.hi, b.hi);
+    return fast_two_sum(s.hi, s.lo + a.lo + b.lo);
 }
 [[gnu::always_inline]] inline dd operator-(dd a) { return {-a.hi, -a.lo}; }
 [[gnu::always_inline]] inline dd operator-(dd a, dd b) { return a + (-b); }
 [[gnu::always_inline]] inline dd exact(double a) { return {a, 0.0}; }
-[[gnu::always_inline]] inline dd difference(double a, double b) { return sum(a, -b); }
+[[gnu::always_inline]] inline dd difference(double a, double b) { return incidence::arith::two_diff(a, b); }
 template <class M>
 [[gnu::always_inline]] inline dd mul(dd a, dd b) {
     const dd p = M::product(a.hi, b.hi);
-    return quick_sum(p.hi, p.lo + (a.hi * b.lo + a.lo * b.hi));
+    return fast_two_sum(p.hi, p.lo + (a.hi * b.lo + a.lo * b.hi));
 }
 template <class M>
 [[gnu::always_inline]] inline dd mul(dd a, double b) {
     const dd p = M::product(a.hi, b);
-    return quick_sum(p.hi, p.lo + a.lo * b);
+    return fast_two_sum(p.hi, p.lo + a.lo * b);
 }
 template <class M>
 [[gnu::always_inline]] inline dd div(dd a, dd b) {
     const double q1 = a.hi / b.hi;
     const dd r = a - mul<M>(b, q1);
-    return quick_sum(q1, r.hi / b.hi);
+    return fast_two_sum(q1, r.hi / b.hi);
 }
 template <class M>
 [[gnu::always_inline]] inline dd root(dd a) {
     if (!(a.hi > 0.0)) return {0.0, 0.0};
     const double x = std::sqrt(a.hi);
     const dd r = a - M::product(x, x);
-    return quick_sum(x, r.hi / (2.0 * x));
+    return fast_two_sum(x, r.hi / (2.0 * x));
 }
 [[gnu::always_inline]] inline double value(dd a) { return a.hi + a.lo; }
 
@@ -213,28 +205,19 @@ template <class M>
     return h;
 }
 
-template <class M>
-[[gnu::always_inline]] inline hit of(const incidence::plane3& p, const incidence::ray3& x) {
-    return plane_floor<M>(p, x);
-}
-template <class M>
-[[gnu::always_inline]] inline hit of(const incidence::plane3& p, const incidence::line3& x) {
-    return plane_floor<M>(p, x);
-}
-template <class M>
-[[gnu::always_inline]] inline hit of(const incidence::aabb3& b, const incidence::ray3& x) {
-    return box_floor<M>(b, x);
-}
-template <class M>
-[[gnu::always_inline]] inline hit of(const incidence::sphere3& s, const incidence::ray3& x) {
-    return ball_floor<M>(s, x);
-}
-template <class M>
-[[gnu::always_inline]] inline hit of(const incidence::triangle3& t, const incidence::ray3& x) {
-    return triangle_floor<M>(t, x);
-}
+// The pairs with a floor: a plane against a ray or a line, a box, a ball and a triangle against a ray.
 template <class S, class X>
-concept has_floor = requires(const S& s, const X& x) { of<dekker>(s, x); };
+inline constexpr bool has_floor =
+    std::is_same_v<X, incidence::ray3> ? (std::is_same_v<S, incidence::plane3> || std::is_same_v<S, incidence::aabb3> ||
+                                          std::is_same_v<S, incidence::sphere3> || std::is_same_v<S, incidence::triangle3>)
+                                       : std::is_same_v<X, incidence::line3> && std::is_same_v<S, incidence::plane3>;
+template <class M, class S, class X>
+[[gnu::always_inline]] inline hit of(const S& s, const X& x) {
+    if constexpr (std::is_same_v<S, incidence::plane3>) return plane_floor<M>(s, x);
+    else if constexpr (std::is_same_v<S, incidence::aabb3>) return box_floor<M>(s, x);
+    else if constexpr (std::is_same_v<S, incidence::sphere3>) return ball_floor<M>(s, x);
+    else return triangle_floor<M>(s, x);
+}
 
 template <class S, class X>
 hit with_dekker(const S& s, const X& x) {
