@@ -79,6 +79,14 @@ template <int A, int B>
     return {r.hi, r.lo, a.p * b.p + 0x1p-960};
 }
 
+// A bound on |hi + lo - x| (I1), inflated as proven_sign's; infinite where the bound is not trusted.
+template <int K>
+[[nodiscard]] constexpr double dd_error(const filtered_dd<K>& a) {
+    if (!(a.p >= 0x1p-800 && a.p <= 0x1p900)) return dd_infinity;
+    constexpr double e = 8.0 * (K + 1) * unit_roundoff * unit_roundoff * (1.0 + 0x1p-20);
+    return e * a.p;
+}
+
 // +1 / -1 when the sign is proven, 0 otherwise.
 template <int K>
 [[nodiscard]] constexpr int proven_sign(const filtered_dd<K>& a) {

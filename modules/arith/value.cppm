@@ -188,18 +188,57 @@ template <int K>
     return {x.hi * h, x.lo * h, x.p * abs(h)};
 }
 
+// Whether P / S surely rounds to c, from R = P - c S (r): |R| < h |S|, h half the smaller gap
+// around c (a power of two), puts P / S strictly between the midpoints next to c. In double:
+// |R| <= |r.hi| (1 + u) + e_R and |S| >= |s.hi| (1 - u) - e_S, the factors 1 +- 2^-20 covering
+// each operation's rounding; h times a number above 2^-900 is exact. A tie (|R| = h |S|) is not
+// decided here.
+template <int A, int B>
+[[nodiscard]] constexpr bool surely_rounds_to(const filtered_dd<A>& r, const filtered_dd<B>& s, double c) {
+    if (!(abs(c) >= 0x1p-1021 && abs(c) < 0x1p1023)) return false;
+    const double h = (abs(c) - next_down(abs(c))) * 0.5;
+    const double s_min = h * (abs(s.hi) * (1.0 - 0x1p-20) - dd_error(s));
+    const double r_max = (abs(r.hi) * (1.0 + 0x1p-20) + dd_error(r)) * (1.0 + 0x1p-20);
+    return s_min > 0x1p-900 && r_max < s_min;
+}
+// A polynomial's value x = hi + lo (+- e) rounds to hi when |lo| + e < h, h as above.
+template <int K>
+[[nodiscard]] constexpr bool surely_rounds_to_hi(const filtered_dd<K>& x) {
+    const double c = x.hi;
+    if (!(abs(c) >= 0x1p-1021 && abs(c) < 0x1p1023)) return false;
+    const double h = (abs(c) - next_down(abs(c))) * 0.5;
+    return (abs(x.lo) + dd_error(x)) * (1.0 + 0x1p-20) < h;
+}
+
 // P / S correctly rounded from the double-double filter's P and S, or nullopt (S not proven
-// nonzero, a sign near a midpoint, a magnitude out of the filter's range). Both midpoints around a
-// candidate c share the residual R = P - c S: sign(P - (c + h) S) = sign(R - h S), h S exact.
+// nonzero, a value near a midpoint, a magnitude out of the filter's range). First the quotient of
+// the leading parts c0, then c0 corrected by the residual R0 = P - c0 S (P / S to about twice
+// double's precision, rounded), each decided by surely_rounds_to on its own residual; otherwise the
+// midpoint test around the corrected candidate, both midpoints of a candidate c sharing
+// R = P - c S: sign(P - (c + h) S) = sign(R - h S), h S exact.
 template <int A, int B>
 [[nodiscard]] constexpr std::optional<double> rounded_quotient(const filtered_dd<A>& p, const filtered_dd<B>& s) {
+    const double c0 = p.hi / s.hi;
+    const auto r0 = p - lift_filtered_dd(c0) * s;
+    if (surely_rounds_to(r0, s, c0)) return c0;
+    const double c = c0 + r0.hi / s.hi;
+    // c - c0 is exact where c and c0 are within a factor 2 of each other (Sterbenz)
+    if (c != c0 && ((c0 > 0.0 && c > 0.0) || (c0 < 0.0 && c < 0.0)) && abs(c) <= 2.0 * abs(c0) && abs(c0) <= 2.0 * abs(c))
+        if (surely_rounds_to(r0 - lift_filtered_dd(c - c0) * s, s, c)) return c;
     const std::optional<sign> ss = dd_side(s);
     if (!ss) return std::nullopt;
     const sign sign_s = *ss;
-    return round_at_midpoints_with(p.hi / s.hi, [&](double c) __attribute__((always_inline)) {
-        return [r = p - lift_filtered_dd(c) * s, &s, sign_s](double h)
+    return round_at_midpoints_with(is_finite(c) ? c : c0, [&](double m) __attribute__((always_inline)) {
+        return [r = p - lift_filtered_dd(m) * s, &s, sign_s](double h)
                    __attribute__((always_inline)) { return times(dd_side(r - scaled(s, h)), sign_s); };
     });
+}
+// A polynomial's value rounded from its double-double filter value: hi, or the quotient's test on
+// P / 1.
+template <int K>
+[[nodiscard]] constexpr std::optional<double> rounded_polynomial(const filtered_dd<K>& x) {
+    if (surely_rounds_to_hi(x)) return x.hi;
+    return rounded_quotient(x, lift_filtered_dd(1.0));
 }
 
 template <class F>
@@ -247,9 +286,15 @@ template <class F>
 [[nodiscard]] constexpr double rounded_value(const F& f) {
     double guess = 0.0;
     if (!__builtin_is_constant_evaluated()) { // the filter's NaN and infinities are run-time only
-        const auto r = ratio_of(f, lift_filter_dd{});
-        if (const auto v = rounded_quotient(r.num, r.den)) return *v;
-        guess = r.num.hi / r.den.hi;
+        if constexpr (!is_ratio<decltype(f(lift_filter_dd{}))>) {
+            const auto x = f(lift_filter_dd{});
+            if (const auto v = rounded_polynomial(x)) return *v;
+            guess = x.hi;
+        } else {
+            const auto r = f(lift_filter_dd{});
+            if (const auto v = rounded_quotient(r.num, r.den)) return *v;
+            guess = r.num.hi / r.den.hi;
+        }
     }
     return rounded_value_exactly(f, guess);
 }

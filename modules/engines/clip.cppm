@@ -14,6 +14,10 @@
 // -(A + B) / B. The kernel decides each sign (degree 2 deg(A) at most), so the chosen bounds are the
 // exact ones in the exact tier; the values t = -A / B and the point o + t D are then computed once,
 // as the kernel computes values (arith::value, arith::point_at: correctly rounded, enclosed, or plain).
+// For a box (every tier), an oriented box and a tetrahedron (the exact tier), the slab test on
+// enclosures of the bounds' parameters in double comes first (box_slabs, clip_in_double): where they
+// are apart, its choice is the exact one, at the cost of one division per constraint instead of a
+// product per comparison.
 module;
 #include <optional>
 #include <utility>
@@ -39,6 +43,134 @@ affine(A, B) -> affine<A, B>;
 struct clipped {
     int lower = -1, upper = -1;
 };
+
+[[nodiscard]] constexpr double component(point3 p, int axis) { return axis == 0 ? p.x : (axis == 1 ? p.y : p.z); }
+[[nodiscard]] constexpr double component(vec3 v, int axis) { return axis == 0 ? v.x : (axis == 1 ? v.y : v.z); }
+
+// --- the clip decided in double --------------------------------------------------------------------
+// Where every comparison the clip makes (the tightest lower and upper bounds, each against the others
+// of its kind, against 0 and 1, and against each other) holds between enclosures of the bounds'
+// parameters that are apart, the choice is the exact one, so every kernel may take it; a tie, or a
+// bound at 0 or 1, is left to the kernel's clip (decided false). The slab test of Kay and Kajiya
+// (SIGGRAPH 1986) on enclosures.
+struct slab_choice {
+    bool decided = false;
+    std::optional<clipped> range; // nullopt: the object misses the set
+};
+inline constexpr slab_choice slab_undecided{};
+inline constexpr slab_choice slab_misses{true, std::nullopt};
+
+// An enclosure [lo, hi] of a bound's parameter, of constraint `index`.
+struct bound_enclosure {
+    double lo = 0.0, hi = 0.0;
+    int index = -1;
+};
+// The tightest of the bounds of one kind seen so far, and the nearest end of the others: the largest
+// upper end of the other lower bounds (the least lower end of the other upper bounds).
+struct tightest {
+    bound_enclosure best;
+    double rival;
+    [[nodiscard]] constexpr bool apart(bool lower) const { return best.index < 0 || (lower ? rival < best.lo : rival > best.hi); }
+};
+[[nodiscard]] constexpr tightest no_bound(bool lower) { return {{}, lower ? -__builtin_huge_val() : __builtin_huge_val()}; }
+constexpr void add_lower(tightest& t, const bound_enclosure& b) {
+    if (t.best.index < 0 || b.lo > t.best.lo) {
+        if (t.best.index >= 0) t.rival = t.rival < t.best.hi ? t.best.hi : t.rival;
+        t.best = b;
+    } else t.rival = t.rival < b.hi ? b.hi : t.rival;
+}
+constexpr void add_upper(tightest& t, const bound_enclosure& b) {
+    if (t.best.index < 0 || b.hi < t.best.hi) {
+        if (t.best.index >= 0) t.rival = t.rival > t.best.lo ? t.best.lo : t.rival;
+        t.best = b;
+    } else t.rival = t.rival > b.lo ? b.lo : t.rival;
+}
+
+// The range from the tightest bounds, as clip() decides it, where the enclosures decide.
+[[nodiscard]] constexpr slab_choice decided_range(const tightest& lower, const tightest& upper, extent x) {
+    if (!lower.apart(true) || !upper.apart(false)) return slab_undecided;
+    clipped r{lower.best.index, upper.best.index};
+    const double ll = lower.best.lo, lh = lower.best.hi, ul = upper.best.lo, uh = upper.best.hi;
+    if (x != extent::line && r.lower >= 0) { // t_l <= 0 gives way to the range's own 0
+        if (lh < 0.0) r.lower = -1;
+        else if (!(ll > 0.0)) return slab_undecided;
+    }
+    if (x != extent::line && r.upper >= 0) { // t_u < 0: behind the start
+        if (uh < 0.0) return slab_misses;
+        if (!(ul > 0.0)) return slab_undecided;
+    }
+    if (x == extent::segment && r.upper >= 0) { // t_u >= 1 gives way to the range's own 1
+        if (ul > 1.0) r.upper = -1;
+        else if (!(uh < 1.0)) return slab_undecided;
+    }
+    if (x == extent::segment && r.lower >= 0) { // t_l > 1: beyond the end
+        if (ll > 1.0) return slab_misses;
+        if (!(lh < 1.0)) return slab_undecided;
+    }
+    if (r.lower >= 0 && r.upper >= 0) {
+        if (ll > uh) return slab_misses;
+        if (!(lh < ul)) return slab_undecided;
+    }
+    return {true, r};
+}
+
+// Any constraints, from the semi-static filter's A and B (filtered.cppm: |A - A.v| <= e_A): with
+// |B.v| > 2 e_B, the bound t = -A / B is within (e_A + |t| e_B) / (|B.v| - e_B) <= 2 (e_A + |t| e_B) / |B.v|
+// of -A.v / B.v, which t = -A.v (1 / B.v) in double approaches within 2.01 u |t| (1 / B.v normal:
+// |B.v| < 2^1021). A constraint with B exactly zero (B.p = 0) holds everywhere or nowhere by A's sign.
+template <class Con>
+[[nodiscard]] constexpr slab_choice clip_in_double(const Con& con, int m, extent x) {
+    tightest lower = no_bound(true), upper = no_bound(false);
+    for (int i = 0; i < m; ++i) {
+        const auto g = con(i, arith::lift_filter{});
+        if (g.b.p == 0.0 && g.b.v == 0.0) { // parallel, exactly
+            if (g.a.p == 0.0 && g.a.v == 0.0) continue;
+            const int sa = arith::proven_sign(g.a);
+            if (sa < 0) return slab_misses;
+            if (sa == 0) return slab_undecided;
+            continue;
+        }
+        const double ea = arith::error_bound(g.a), eb = arith::error_bound(g.b), bv = g.b.v;
+        if (!(g.a.p >= 0x1p-900 && g.b.p >= 0x1p-900 && arith::abs(bv) > 2.0 * eb && arith::abs(bv) < 0x1p1021 && finite(g.a.v)))
+            return slab_undecided;
+        const double inv = 1.0 / bv;
+        const double t = -g.a.v * inv;
+        const double w = ((ea + arith::abs(t) * eb) * (2.0 * arith::abs(inv)) + arith::abs(t) * 0x1p-51) * (1.0 + 0x1p-20) + 0x1p-1020;
+        if (!finite(t) || !finite(w)) return slab_undecided;
+        const bound_enclosure e{t - w, t + w, i};
+        if (bv > 0.0) add_lower(lower, e);
+        else add_upper(upper, e);
+    }
+    return decided_range(lower, upper, x);
+}
+
+// The box's faces (box_constraints: 2 axis for min, 2 axis + 1 for max): t = (f - o_i) (1 / D_i) in
+// double (D_i = q_i - o_i for a segment) has at most four roundings, so |t - exact| <= 4.01 u |t| +
+// 2^-1074 while 1 / D_i is normal (|D_i| < 2^1021); t -+ (2^-50 |t| + 2^-1020 (normal: a subnormal operand costs a microcode assist)) holds it with room
+// for its own rounding. The direction's signs select without branches, which random rays mispredict.
+[[nodiscard]] constexpr slab_choice box_slabs(const aabb3& box, const linear3& s) {
+    tightest lower = no_bound(true), upper = no_bound(false);
+    bool usable = true;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double o = component(s.o, axis), lo_face = component(box.min, axis), hi_face = component(box.max, axis);
+        const double d = s.kind == extent::segment ? component(s.q, axis) - o : component(s.d, axis);
+        if (d == 0.0) { // parallel (the sign of q_i - o_i in double is exact)
+            if (o < lo_face || o > hi_face) return slab_misses;
+            continue;
+        }
+        usable = usable && arith::abs(d) < 0x1p1021;
+        const double inv = 1.0 / d;
+        const double t_min = (lo_face - o) * inv, t_max = (hi_face - o) * inv;
+        const bool up = d > 0.0;
+        const double tn = up ? t_min : t_max, tf = up ? t_max : t_min;
+        const double wn = arith::abs(tn) * 0x1p-50 + 0x1p-1020, wf = arith::abs(tf) * 0x1p-50 + 0x1p-1020;
+        usable = usable && finite(tn) && finite(tf);
+        add_lower(lower, {tn - wn, tn + wn, up ? 2 * axis : 2 * axis + 1});
+        add_upper(upper, {tf - wf, tf + wf, up ? 2 * axis + 1 : 2 * axis});
+    }
+    if (!usable) return slab_undecided;
+    return decided_range(lower, upper, s.kind);
+}
 
 // Constraints: con(i, L) -> affine{A_i(L), B_i(L)} for i in [0, m).
 template <class K, class Con>
@@ -159,6 +291,21 @@ template <class K, class Con>
     if (!r) return std::nullopt;
     return clipped_values(k, con, *r, s);
 }
+// clip_span, the exact tier first trying the choice in double (clip_in_double). Taken where it
+// measured faster: the oriented box's faces and the tetrahedron's in the exact tier (bench/NOTES.md).
+// On the half-space sets of a frustum or a convex polyhedron it measured slower, and in the
+// approximate tier, whose signs are plain double already; the other tiers keep the body whose
+// branches the approximate tier's stated bound refers to (the plain filter deciding every sign).
+template <class K, class Con>
+[[nodiscard]] constexpr std::optional<span_hit<arith::value_t<K>>> clip_span_in_double(K& k, const Con& con, int m, const linear3& s) {
+    if (arith::value_mode_of<K>() == arith::value_mode::rounded &&
+        !__builtin_is_constant_evaluated()) // the filter's infinities are run-time only
+        if (const slab_choice c = clip_in_double(con, m, s.kind); c.decided) {
+            if (!c.range) return std::nullopt;
+            return clipped_values(k, con, *c.range, s);
+        }
+    return clip_span(k, con, m, s);
+}
 
 // --- several constraint families -----------------------------------------------------------------
 // A set given by families of constraints whose polynomials have different types (the faces of a flat
@@ -262,7 +409,6 @@ template <class K, class... Con>
         return affine{L(p.offset) * L(1.0) - arith::dot(n, s.O(L)), -arith::dot(n, s.D(L))};
     };
 }
-[[nodiscard]] constexpr double component(point3 p, int axis) { return axis == 0 ? p.x : (axis == 1 ? p.y : p.z); }
 // The box's six faces: min_i <= x_i <= max_i (degree 1).
 [[nodiscard]] constexpr auto box_constraints(const aabb3& box, const linear3& s) {
     return [=](int i, auto L) {

@@ -69,6 +69,11 @@ template <class K, linear_shape S>
 [[nodiscard]] constexpr span_of<K> intersection(K& k, const aabb3& b, const S& x) {
     if (!finite(b.min) || !finite(b.max) || !finite(x)) return std::nullopt;
     const linear3 s = as_linear(x);
+    if (!__builtin_is_constant_evaluated()) // the faces' parameters in double may overflow to infinity
+        if (const slab_choice c = box_slabs(b, s); c.decided) {
+            if (!c.range) return std::nullopt;
+            return clipped_values(k, box_constraints(b, s), *c.range, s);
+        }
     return clip_span(k, box_constraints(b, s), 6, s);
 }
 
@@ -187,7 +192,7 @@ template <class K, linear_shape S>
     const sign det =
         k.sgn([=](auto L) { return arith::det3(arith::lift(L, b.axes[0]), arith::lift(L, b.axes[1]), arith::lift(L, b.axes[2])); });
     if (det == sign::zero) return obb_flat(k, b, s);
-    return clip_span(k, obb_face_constraints<K>(b, s, det), 6, s);
+    return clip_span_in_double(k, obb_face_constraints<K>(b, s, det), 6, s);
 }
 
 // The tetrahedron: with o = orient3d(a, b, c, d) != 0, inside its four face planes, each face's
@@ -220,7 +225,7 @@ template <class K, linear_shape S>
         const bool flip = (i % 2 == 1) != (o == sign::negative);
         return flip ? affine{-A, -B} : affine{A, B};
     };
-    return clip_span(k, con, 4, s);
+    return clip_span_in_double(k, con, 4, s);
 }
 
 // The ball |x - c| <= |r|: o + t D inside iff a t^2 + 2 b t + c' <= 0 with a = D . D, b = m . D,
