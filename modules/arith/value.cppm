@@ -188,6 +188,11 @@ template <int K>
     return {x.hi * h, x.lo * h, x.p * abs(h)};
 }
 
+// Half the smaller gap around c (a power of two), or 0 where |c| is outside [2^-1021, 2^1023).
+[[nodiscard]] constexpr double half_gap(double c) {
+    if (!(abs(c) >= 0x1p-1021 && abs(c) < 0x1p1023)) return 0.0;
+    return (abs(c) - next_down(abs(c))) * 0.5;
+}
 // Whether P / S surely rounds to c, from R = P - c S (r): |R| < h |S|, h half the smaller gap
 // around c (a power of two), puts P / S strictly between the midpoints next to c. In double:
 // |R| <= |r.hi| (1 + u) + e_R and |S| >= |s.hi| (1 - u) - e_S, the factors 1 +- 2^-20 covering
@@ -195,8 +200,7 @@ template <int K>
 // decided here.
 template <int A, int B>
 [[nodiscard]] constexpr bool surely_rounds_to(const filtered_dd<A>& r, const filtered_dd<B>& s, double c) {
-    if (!(abs(c) >= 0x1p-1021 && abs(c) < 0x1p1023)) return false;
-    const double h = (abs(c) - next_down(abs(c))) * 0.5;
+    const double h = half_gap(c);
     const double s_min = h * (abs(s.hi) * (1.0 - 0x1p-20) - dd_error(s));
     const double r_max = (abs(r.hi) * (1.0 + 0x1p-20) + dd_error(r)) * (1.0 + 0x1p-20);
     return s_min > 0x1p-900 && r_max < s_min;
@@ -204,10 +208,7 @@ template <int A, int B>
 // A polynomial's value x = hi + lo (+- e) rounds to hi when |lo| + e < h, h as above.
 template <int K>
 [[nodiscard]] constexpr bool surely_rounds_to_hi(const filtered_dd<K>& x) {
-    const double c = x.hi;
-    if (!(abs(c) >= 0x1p-1021 && abs(c) < 0x1p1023)) return false;
-    const double h = (abs(c) - next_down(abs(c))) * 0.5;
-    return (abs(x.lo) + dd_error(x)) * (1.0 + 0x1p-20) < h;
+    return (abs(x.lo) + dd_error(x)) * (1.0 + 0x1p-20) < half_gap(x.hi);
 }
 
 // P / S correctly rounded from the double-double filter's P and S, or nullopt (S not proven
@@ -493,6 +494,30 @@ template <class Q>
     const double delta = (f.hi + f.lo) / d;
     return is_finite(delta) ? delta : 0.0;
 }
+// Whether root r of g(p) = a p^2 + 2 b p w + c w^2 (w > 0 fixed) lies strictly within p0 -+ h, from
+// G0 = g(p0) and G1 = a p0 + b w (half the slope there): g(p0 +- h) = G0 +- 2 h G1 + a h^2. With
+// a > 0, g is positive outside its roots and negative between them, so g(p0 - h) > 0 > g(p0 + h)
+// puts the smaller root, and only it, inside (and - then + the larger): G1 < 0 (> 0) and
+// |G0 + a h^2| < 2 h |G1|. In double with the filter's bounds, each rounding covered by 1 +- 2^-20
+// and 2^-1020 (normal) for an a h^2 that underflows; h a power of two, so 2 h times a number
+// above 2^-900 is exact. One evaluation of g for both midpoints, where the midpoint test takes two.
+template <class Q, int A, int B>
+[[nodiscard]] constexpr bool root_surely_within(const Q& q, root r, const filtered_dd<A>& g0, const filtered_dd<B>& g1, double h) {
+    if ((g1.hi < 0.0) != (r == root::smaller)) return false;
+    const double a_max = abs(q.a.hi) * (1.0 + 0x1p-20) + dd_error(q.a);
+    const double left = (abs(g0.hi) * (1.0 + 0x1p-20) + dd_error(g0) + (a_max * h * h * (1.0 + 0x1p-20) + 0x1p-1020)) * (1.0 + 0x1p-20);
+    const double right = 2.0 * h * (abs(g1.hi) * (1.0 - 0x1p-20) - dd_error(g1));
+    return right > 0x1p-900 && left < right;
+}
+// Whether the root is surely c (rounded to nearest), as root_surely_within at p0 = c, w = 1.
+template <class Q>
+[[nodiscard]] constexpr bool root_surely_rounds_to(const Q& q, root r, double c) {
+    const double h = half_gap(c);
+    if (h == 0.0) return false;
+    const filtered_dd<0> x = lift_filtered_dd(c), one = lift_filtered_dd(1.0);
+    return root_surely_within(q, r, root_f(q, x, one), root_v(q, x, one), h);
+}
+
 template <class F>
 [[nodiscard]] constexpr double rounded_root(const F& f, root r) {
     const auto qd = f(lift_double{});
@@ -501,6 +526,7 @@ template <class F>
         const auto q = f(lift_filter_dd{});
         const filtered_dd<0> one = lift_filtered_dd(1.0);
         if (is_finite(guess)) guess -= newton_step(q, guess);
+        if (root_surely_rounds_to(q, r, guess)) return guess;
         if (const auto v = round_at_midpoints(guess, [&](double c, double h) {
                 const auto m = lift_filtered_dd(c, h);
                 return root_side(r, dd_side(root_f(q, m, one)), dd_side(root_v(q, m, one)));
@@ -581,6 +607,12 @@ template <class K, class F, class A, class B>
                 const auto di = pick(bd);
                 const auto g = ai + lift_filtered_dd(t, -delta) * di;
                 guess = g.hi + g.lo;
+                if (const double h = half_gap(guess); h != 0.0) { // both midpoints from one evaluation
+                    const auto c = lift_filtered_dd(guess);
+                    const auto p0 = sb == sign::positive ? c - ai : ai - c;
+                    const auto w = sb == sign::positive ? di : -di;
+                    if (root_surely_within(q, r, root_f(q, p0, w), root_v(q, p0, w), h)) return guess;
+                }
                 const auto v = round_at_midpoints(guess, [&](double c, double h) {
                     const auto m = lift_filtered_dd(c, h);
                     const auto s = sb == sign::positive ? root_side(r, dd_side(root_f(q, m - ai, di)), dd_side(root_v(q, m - ai, di)))

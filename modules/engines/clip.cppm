@@ -146,8 +146,9 @@ template <class Con>
 
 // The box's faces (box_constraints: 2 axis for min, 2 axis + 1 for max): t = (f - o_i) (1 / D_i) in
 // double (D_i = q_i - o_i for a segment) has at most four roundings, so |t - exact| <= 4.01 u |t| +
-// 2^-1074 while 1 / D_i is normal (|D_i| < 2^1021); t -+ (2^-50 |t| + 2^-1020 (normal: a subnormal operand costs a microcode assist)) holds it with room
-// for its own rounding. The direction's signs select without branches, which random rays mispredict.
+// 2^-1074 while 1 / D_i is normal (|D_i| < 2^1021); t -+ (2^-50 |t| + 2^-1020) holds it with room
+// for its own rounding (the slack a normal number: a subnormal operand costs a microcode assist).
+// The direction's signs select without branches, which random rays mispredict.
 [[nodiscard]] constexpr slab_choice box_slabs(const aabb3& box, const linear3& s) {
     tightest lower = no_bound(true), upper = no_bound(false);
     bool usable = true;
