@@ -39,7 +39,7 @@ template <int A, int B>
 [[nodiscard]] constexpr filtered_dd<0> lift_filtered_dd(double x) { return {x, 0.0, abs(x)}; }
 
 template <int A, int B>
-[[nodiscard]] constexpr auto operator+(const filtered_dd<A>& a, const filtered_dd<B>& b) {
+[[nodiscard, gnu::always_inline]] constexpr auto operator+(const filtered_dd<A>& a, const filtered_dd<B>& b) {
     constexpr int K = (A > B ? A : B) + 1;
     if (dd_poisoned(a, b)) return filtered_dd<K>{0.0, 0.0, dd_infinity};
     const auto s = two_sum(a.hi, b.hi);
@@ -51,7 +51,7 @@ template <int A, int B>
     return filtered_dd<K>{r.hi, r.lo, a.p + b.p};
 }
 template <int A>
-[[nodiscard]] constexpr filtered_dd<A> operator-(const filtered_dd<A>& a) {
+[[nodiscard, gnu::always_inline]] constexpr filtered_dd<A> operator-(const filtered_dd<A>& a) {
     return {-a.hi, -a.lo, a.p};
 }
 // |x|: a normalised double-double has the sign of its leading part; the bound carries over.
@@ -60,7 +60,7 @@ template <int A>
     return a.hi < 0.0 ? -a : a;
 }
 template <int A, int B>
-[[nodiscard]] constexpr auto operator-(const filtered_dd<A>& a, const filtered_dd<B>& b) {
+[[nodiscard, gnu::always_inline]] constexpr auto operator-(const filtered_dd<A>& a, const filtered_dd<B>& b) {
     if constexpr (A == 0 && B == 0) {
         // Difference of two inputs: exact.
         if (a.lo == 0.0 && b.lo == 0.0) {
@@ -71,7 +71,7 @@ template <int A, int B>
     return a + (-b);
 }
 template <int A, int B>
-[[nodiscard]] constexpr filtered_dd<A + B + 1> operator*(const filtered_dd<A>& a, const filtered_dd<B>& b) {
+[[nodiscard, gnu::always_inline]] constexpr filtered_dd<A + B + 1> operator*(const filtered_dd<A>& a, const filtered_dd<B>& b) {
     if (dd_poisoned(a, b)) return {0.0, 0.0, dd_infinity};
     const auto p = two_product(a.hi, b.hi);
     const double cross = a.hi * b.lo + a.lo * b.hi;

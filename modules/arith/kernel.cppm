@@ -89,6 +89,32 @@ template <class A, class B, class C>
 [[nodiscard]] constexpr auto det3(const v3<A>& a, const v3<B>& b, const v3<C>& c) {
     return a.x * (b.y * c.z - b.z * c.y) + a.y * (b.z * c.x - b.x * c.z) + a.z * (b.x * c.y - b.y * c.x);
 }
+// The same over the double-double filter, always inlined: a value's parts in that filter are
+// composed of these, and once inlined into one function, several values share them
+// (intersection/linear_pairs.cppm's rounded_triangle_values). Only there: inlining them for every
+// number type made the yes/no filter's bodies slower (bench/NOTES.md).
+template <int A, int B>
+[[nodiscard, gnu::always_inline]] constexpr auto operator-(const v3<filtered_dd<A>>& a, const v3<filtered_dd<B>>& b) {
+    return v3<decltype(a.x - b.x)>{a.x - b.x, a.y - b.y, a.z - b.z};
+}
+template <int A, int B>
+[[nodiscard, gnu::always_inline]] constexpr auto dot(const v3<filtered_dd<A>>& a, const v3<filtered_dd<B>>& b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+template <int A, int B>
+[[nodiscard, gnu::always_inline]] constexpr auto cross(const v3<filtered_dd<A>>& a, const v3<filtered_dd<B>>& b) {
+    using T = decltype(a.y * b.z - a.z * b.y);
+    return v3<T>{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+template <int A, int B, int C>
+[[nodiscard, gnu::always_inline]] constexpr auto det3(const v3<filtered_dd<A>>& a, const v3<filtered_dd<B>>& b,
+                                                      const v3<filtered_dd<C>>& c) {
+    return a.x * (b.y * c.z - b.z * c.y) + a.y * (b.z * c.x - b.x * c.z) + a.z * (b.x * c.y - b.y * c.x);
+}
+template <int A, int B>
+[[nodiscard, gnu::always_inline]] constexpr auto cross(const v2<filtered_dd<A>>& a, const v2<filtered_dd<B>>& b) {
+    return a.x * b.y - a.y * b.x;
+}
 template <class A, class B>
 [[nodiscard]] constexpr auto operator-(const v2<A>& a, const v2<B>& b) {
     return v2<decltype(a.x - b.x)>{a.x - b.x, a.y - b.y};

@@ -283,21 +283,28 @@ template <class F>
     return quotient(d.num, d.den);
 }
 
+// The value f rounded from x, f's double-double filter value (a ratio or a polynomial) already
+// evaluated, perhaps in one evaluation that several values share: the fast path's answer where its
+// test decides, else f's exact stages. Run time only (the filter's NaN and infinities).
+// A value that is zero by structure (coplanar or axis-aligned inputs: kernel.cppm's
+// zero_by_structure, sound here as a zero filter value implies finite inputs) is 0 with no exact
+// stage: no error bound proves a zero.
+template <class F, class X>
+[[nodiscard]] constexpr double rounded_from(const F& f, const X& x) {
+    if constexpr (is_ratio<X>) {
+        if (x.num.hi == 0.0 && dd_side(x.den) && zero_by_structure([&](auto L) { return ratio_of(f, L).num; })) return 0.0;
+        if (const auto v = rounded_quotient(x.num, x.den)) return *v;
+        return rounded_value_exactly(f, x.num.hi / x.den.hi);
+    } else {
+        if (x.hi == 0.0 && zero_by_structure(f)) return 0.0;
+        if (const auto v = rounded_polynomial(x)) return *v;
+        return rounded_value_exactly(f, x.hi);
+    }
+}
 template <class F>
 [[nodiscard]] constexpr double rounded_value(const F& f) {
-    double guess = 0.0;
-    if (!__builtin_is_constant_evaluated()) { // the filter's NaN and infinities are run-time only
-        if constexpr (!is_ratio<decltype(f(lift_filter_dd{}))>) {
-            const auto x = f(lift_filter_dd{});
-            if (const auto v = rounded_polynomial(x)) return *v;
-            guess = x.hi;
-        } else {
-            const auto r = f(lift_filter_dd{});
-            if (const auto v = rounded_quotient(r.num, r.den)) return *v;
-            guess = r.num.hi / r.den.hi;
-        }
-    }
-    return rounded_value_exactly(f, guess);
+    if (__builtin_is_constant_evaluated()) return rounded_value_exactly(f, 0.0);
+    return rounded_from(f, f(lift_filter_dd{}));
 }
 
 // --- one value, in the kernel's mode ---------------------------------------------------------------
@@ -354,17 +361,88 @@ template <class K, class F, class A, class B>
 [[nodiscard]] constexpr point3 rounded_point(K& k, const F& f, const A& a, const B& b) {
     return point3{rounded_coordinate(k, f, a, b, pick_x), rounded_coordinate(k, f, a, b, pick_y), rounded_coordinate(k, f, a, b, pick_z)};
 }
-template <class K, class F, class A, class B, class R>
-[[nodiscard]] constexpr point3 rounded_point(K& k, const F& f, const A& a, const B& b, const R& r) {
-    const auto o = a(lift_filter_dd{});
-    const auto d = b(lift_filter_dd{});
-    const auto x = rounded_quotient(o.x * r.den + r.num * d.x, r.den);
-    const auto y = rounded_quotient(o.y * r.den + r.num * d.y, r.den);
-    const auto z = rounded_quotient(o.z * r.den + r.num * d.z, r.den);
-    return point3{x ? *x : rounded_coordinate(k, f, a, b, pick_x), y ? *y : rounded_coordinate(k, f, a, b, pick_y),
-                  z ? *z : rounded_coordinate(k, f, a, b, pick_z)};
+// t = P / S to about twice double's precision, c0 + q with |t - (c0 + q)| <= delta, from the
+// double-double P and S: c0 = P.hi / S.hi and q = R.hi / S.hi for R = P - c0 S, so that
+// t - (c0 + q) = R / S - R.hi / S.hi, which is at most (dR + |q| (1 + u) dS) / (|S.hi| - dS) +
+// u |q| with dR = u |R.hi| + e_R and dS = u |S.hi| + e_S (|lo| <= u |hi|, e the filter's bounds),
+// plus 2^-1073 for a q that underflows; each rounding in double covered by factors 1 +- 2^-20.
+// ok is false where S is not proven away from 0 or a number is not finite.
+struct near_quotient {
+    double c0 = 0.0, q = 0.0, delta = 0.0;
+    bool ok = false;
+};
+template <int A, int B>
+[[nodiscard]] constexpr near_quotient near_quotient_of(const filtered_dd<A>& p, const filtered_dd<B>& s) {
+    const double s_min = abs(s.hi) * (1.0 - 0x1p-20) - dd_error(s);
+    if (!(s_min > 0x1p-900)) return {};
+    const double c0 = p.hi / s.hi;
+    const auto r = p - lift_filtered_dd(c0) * s;
+    const double q = r.hi / s.hi;
+    const double d_r = abs(r.hi) * 0x1p-52 + dd_error(r);
+    const double d_s = abs(s.hi) * 0x1p-52 + dd_error(s);
+    const double delta = ((d_r + abs(q) * (1.0 + 0x1p-50) * d_s) / s_min + abs(q) * 0x1p-52 + 0x1p-1073) * (1.0 + 0x1p-20);
+    if (!(is_finite(c0) && is_finite(q) && is_finite(delta))) return {};
+    return {c0, q, delta, true};
+}
+// The filter's bound on x, or 0 where x is exact by construction: an input or a double-double
+// constant (K = 0), or a value whose permanent is 0 (every term a zero: exactly 0).
+template <int K>
+[[nodiscard]] constexpr double exact_error(const filtered_dd<K>& x) {
+    if (K == 0 || x.p == 0.0) return 0.0;
+    return dd_error(x);
+}
+// The coordinate x = o + t d (o, d the double-double filter's values of the point's coordinate and
+// the direction's, with their bounds) correctly rounded, from t = c0 + q +- delta: o + c0 d to
+// double-double by two_product and two_sum (exact where the product neither underflows nor
+// overflows), the rest in double, x = g + gl +- E with E the sum of: delta |d|, the dropped
+// q d.lo, u times the low terms' magnitudes for each of the five roundings there, the bounds of o
+// and d (d's times |t|), and 2^-1020 for a low product that underflows. x rounds to g when
+// |gl| + E is below half the smaller gap around g. nullopt where that does not decide.
+template <int A, int B>
+[[nodiscard]] constexpr std::optional<double> coordinate_near(const filtered_dd<A>& o, const filtered_dd<B>& d, const near_quotient& t) {
+    if (!(abs(t.c0) < 0x1p995 && abs(d.hi) < 0x1p995)) return std::nullopt; // Dekker's split
+    const auto p = two_product(t.c0, d.hi);
+    if (!(t.c0 == 0.0 || d.hi == 0.0 || (abs(p.hi) >= 0x1p-900 && abs(p.hi) <= 0x1p995))) return std::nullopt;
+    const auto sh = two_sum(o.hi, p.hi);
+    const double a = t.c0 * d.lo, b = t.q * d.hi;
+    const double low = ((sh.lo + p.lo) + (o.lo + a)) + b;
+    const auto g = two_sum(sh.hi, low);
+    const double magnitude = abs(sh.lo) + abs(p.lo) + abs(o.lo) + abs(a) + abs(b);
+    const double t_max = abs(t.c0) + abs(t.q) + t.delta;
+    const double e =
+        (t.delta * (abs(d.hi) + abs(d.lo)) + abs(t.q) * abs(d.lo) + magnitude * 0x1p-50 + exact_error(o) + t_max * exact_error(d)) *
+            (1.0 + 0x1p-20) +
+        0x1p-1020;
+    if ((abs(g.lo) + e) * (1.0 + 0x1p-20) < half_gap(g.hi)) return g.hi;
+    return std::nullopt;
 }
 
+template <class K, class F, class A, class B, class R>
+[[nodiscard]] constexpr point3 rounded_point(K& k, const F& f, const A& a, const B& b, const R& r, const near_quotient& t) {
+    const auto o = a(lift_filter_dd{});
+    const auto d = b(lift_filter_dd{});
+    auto coordinate = [&](const auto& oi, const auto& di, auto pick) {
+        if (t.ok)
+            if (const auto v = coordinate_near(oi, di, t)) return *v;
+        if (const auto v = rounded_quotient(oi * r.den + r.num * di, r.den)) return *v;
+        return rounded_coordinate(k, f, a, b, pick);
+    };
+    return point3{coordinate(o.x, d.x, pick_x), coordinate(o.y, d.y, pick_y), coordinate(o.z, d.z, pick_z)};
+}
+template <class K, class F, class A, class B, class R>
+[[nodiscard]] constexpr point3 rounded_point(K& k, const F& f, const A& a, const B& b, const R& r) {
+    return rounded_point(k, f, a, b, r, near_quotient_of(r.num, r.den));
+}
+
+// Both rounded, at run time, from r, the double-double filter's ratio of f: t itself as the
+// coordinate 0 + t 1, from the same near quotient as the point.
+template <class K, class F, class A, class B, class R>
+[[nodiscard]] constexpr value_with_point<K> rounded_value_and_point(K& k, const F& f, const A& a, const B& b, const R& r) {
+    const near_quotient q = near_quotient_of(r.num, r.den);
+    std::optional<double> t;
+    if (q.ok) t = coordinate_near(lift_filtered_dd(0.0), lift_filtered_dd(1.0), q);
+    return {t ? *t : rounded_from(f, r), rounded_point(k, f, a, b, r, q)};
+}
 template <class K, class F, class A, class B>
 [[nodiscard]] constexpr value_with_point<K> value_and_point(K& k, const F& f, const A& a, const B& b) {
     constexpr value_mode mode = value_mode_of<K>();
@@ -383,9 +461,7 @@ template <class K, class F, class A, class B>
                           divide(enclose(o.z * r.den + r.num * d.z), s)}};
     } else {
         if (__builtin_is_constant_evaluated()) return {rounded_value(f), rounded_point(k, f, a, b)};
-        const auto r = ratio_of(f, lift_filter_dd{});
-        const auto t = rounded_quotient(r.num, r.den);
-        return {t ? *t : rounded_value_exactly(f, r.num.hi / r.den.hi), rounded_point(k, f, a, b, r)};
+        return rounded_value_and_point(k, f, a, b, ratio_of(f, lift_filter_dd{}));
     }
 }
 template <class K, class F, class A, class B>

@@ -337,4 +337,45 @@ TEST_CASE("arith: the double-double filter never claims a wrong sign, near cance
     CHECK(wrong == 0);
 }
 
+TEST_CASE("arith: a coordinate o + t d from t to twice double's precision is the nearest double where decided", "[arith]") {
+    // t = P / S with P, S double-double products (value.cppm's near_quotient_of), o an input, d an
+    // input (a ray) or a difference of inputs (a segment): the enclosure of t - (c0 + q) and the
+    // rounding of o + t d (coordinate_near) against exact rationals, at scales 2^-500..2^500, with
+    // o at t d's scale, cancelling it, or cancelling all but a small part of it.
+    support::rng r(support::seed() + 5);
+    long n = 0, decided = 0, wrong = 0, outside = 0;
+    auto scaled = [&](int lo, int hi) { return std::ldexp(r.uniform(-1, 1), r.integer(lo, hi)); };
+    for (long i = 0; i < support::cases(100000); ++i) {
+        const int e = r.integer(-500, 500);
+        const double p[4] = {scaled(e - 2, e + 2), scaled(-2, 2), scaled(e - 2, e + 2), scaled(-2, 2)};
+        const double s[4] = {scaled(-2, 2), scaled(-2, 2), scaled(-2, 2), scaled(-2, 2)};
+        const arith::lift_filter_dd L{};
+        const auto P = L(p[0]) * L(p[1]) - L(p[2]) * L(p[3]);
+        const auto S = L(s[0]) * L(s[1]) + L(s[2]) * L(s[3]);
+        const rational Pq = Q(p[0]) * Q(p[1]) - Q(p[2]) * Q(p[3]), Sq = Q(s[0]) * Q(s[1]) + Q(s[2]) * Q(s[3]);
+        if (Sq == 0) continue;
+        const arith::near_quotient t = arith::near_quotient_of(P, S);
+        if (!t.ok) continue;
+        const rational tq = Pq / Sq;
+        if (abs(tq - Q(t.c0) - Q(t.q)) > Q(t.delta)) ++outside;
+        const bool segment = r.coin();
+        const double d0 = scaled(-3, 3), d1 = segment ? d0 - scaled(-3 - r.integer(0, 40), -3) : 0.0;
+        const rational dq = segment ? Q(d0) - Q(d1) : Q(d0);
+        // o at t d's scale, or a few ulps from -t d (cancellation), or -t d plus a much smaller y
+        const double td = static_cast<double>(tq * dq);
+        const int kind = r.integer(0, 2);
+        const double o =
+            kind == 0 ? td * r.uniform(-2, 2) : support::nudge(kind == 1 ? -td : -td + std::ldexp(td, -r.integer(1, 60)), r.integer(-2, 2));
+        const auto x = segment ? arith::coordinate_near(L(o), L(d0) - L(d1), t) : arith::coordinate_near(L(o), L(d0), t);
+        ++n;
+        if (!x) continue;
+        ++decided;
+        if (!nearest(Q(o) + tq * dq, *x)) ++wrong;
+    }
+    std::printf("[cases] coordinate from t: %ld, decided %ld, wrong %ld, t outside its enclosure %ld\n", n, decided, wrong, outside);
+    CHECK(n > support::cases(100000) / 2);
+    CHECK(outside == 0);
+    CHECK(wrong == 0);
+}
+
 } // namespace test_arith_arith
