@@ -291,73 +291,142 @@ template <class K, linear_shape S>
 
 // --- the triangle, the polygon, the mesh: first contact ---------------------------------------------
 
+// The values of a hit on a triangle, each a ratio (or polynomial) lambda f(L) lifted like a sign:
+// - the normal's component `axis`, (b - a) x (c - a);
+// - crossing the plane, the barycentric of the vertex opposite p q by Pluecker's coordinates:
+//   det(D, p - o, q - o) / n . D;
+// - in the plane (the projection dropping `axis`, where the area is not zero), at X = o + (N / S) D:
+//   cross2(p - X, q - X) / area = (S cross2(p - o, q - o) - N cross2(D, q - p)) / (S area), the
+//   terms in t^2 cancelling (cross2(D, D) = 0); at the point o itself, cross2(p - o, q - o) / area.
+[[nodiscard]] constexpr auto normal_component(const triangle3& t, int axis) {
+    return [=](auto L) {
+        const auto A = arith::lift(L, t.a);
+        return pick(arith::cross(arith::lift(L, t.b) - A, arith::lift(L, t.c) - A), axis);
+    };
+}
+[[nodiscard]] constexpr auto pluecker_barycentric(const linear3& s, const triangle3& t, point3 p, point3 q) {
+    return [=](auto L) {
+        const auto A = arith::lift(L, t.a);
+        const auto n = arith::cross(arith::lift(L, t.b) - A, arith::lift(L, t.c) - A);
+        return arith::ratio{arith::det3(s.D(L), arith::lift(L, p) - s.O(L), arith::lift(L, q) - s.O(L)), arith::dot(n, s.D(L))};
+    };
+}
+template <class L>
+[[nodiscard]] constexpr auto projected_area(L l, const triangle3& t, int axis) {
+    const auto A = arith::lift(l, t.a);
+    return arith::cross(drop_axis(arith::lift(l, t.b) - A, axis), drop_axis(arith::lift(l, t.c) - A, axis));
+}
+[[nodiscard]] constexpr auto area_barycentric_at_origin(const linear3& s, const triangle3& t, int axis, point3 p, point3 q) {
+    return [=](auto L) {
+        const auto O = s.O(L);
+        return arith::ratio{arith::cross(drop_axis(arith::lift(L, p) - O, axis), drop_axis(arith::lift(L, q) - O, axis)),
+                            projected_area(L, t, axis)};
+    };
+}
+template <class T>
+[[nodiscard]] constexpr auto area_barycentric(const T& tr, const linear3& s, const triangle3& t, int axis, point3 p, point3 q) {
+    return [=](auto L) {
+        const auto x = tr(L);
+        const auto P = arith::lift(L, p), Q = arith::lift(L, q), O = s.O(L);
+        return arith::ratio{x.den * arith::cross(drop_axis(P - O, axis), drop_axis(Q - O, axis)) -
+                                x.num * arith::cross(drop_axis(s.D(L), axis), drop_axis(Q - P, axis)),
+                            x.den * projected_area(L, t, axis)};
+    };
+}
+
+// Whether the end lies on the edge p q by construction (entering or leaving a coplanar triangle
+// there): the barycentric of the vertex opposite p q is then exactly 0.
+[[nodiscard]] constexpr bool on_edge(const contact_end& e, point3 p, point3 q) {
+    return e.kind == end_kind::edge_clip && e.p == p && e.q == q;
+}
+
+// The axis whose projection keeps a proper triangle's area (-1: degenerate, no barycentrics).
+template <class K>
+[[nodiscard]] constexpr int area_axis(K& k, const triangle3& t) {
+    for (int i = 0; i < 3; ++i)
+        if (arith::sgn<arith::hint::structural>(k, normal_component(t, i)) != sign::zero) return i;
+    return -1;
+}
+
 // The barycentrics of the point at a contact end of s with the proper or degenerate triangle t.
 template <class K>
 constexpr void barycentrics(K& k, triangle_hit<arith::value_t<K>>& h, const contact_end& e, const linear3& s, const triangle3& t) {
     const point3 a = t.a, b = t.b, c = t.c;
     h.u = h.v = h.w = arith::exact_value(k, 0.0);
-    if (e.kind == end_kind::plane_crossing) { // Pluecker: w_a = det(D, b - o, c - o), ... over n . D
-        auto w = [=](point3 p, point3 q) {
-            return [=](auto L) {
-                const auto P = arith::lift(L, a), Q = arith::lift(L, b), R = arith::lift(L, c);
-                const auto n = arith::cross(Q - P, R - P);
-                return arith::ratio{arith::det3(s.D(L), arith::lift(L, p) - s.O(L), arith::lift(L, q) - s.O(L)), arith::dot(n, s.D(L))};
-            };
-        };
-        h.u = arith::value(k, w(b, c));
-        h.v = arith::value(k, w(c, a));
-        h.w = arith::value(k, w(a, b));
+    if (e.kind == end_kind::plane_crossing) {
+        h.u = arith::value(k, pluecker_barycentric(s, t, b, c));
+        h.v = arith::value(k, pluecker_barycentric(s, t, c, a));
+        h.w = arith::value(k, pluecker_barycentric(s, t, a, b));
         return;
     }
-    int axis = -1;
-    for (int i = 0; i < 3 && axis < 0; ++i)
-        if (arith::sgn<arith::hint::structural>(k, [=](auto L) {
-                const auto P = arith::lift(L, a);
-                return pick(arith::cross(arith::lift(L, b) - P, arith::lift(L, c) - P), i);
-            }) != sign::zero)
-            axis = i;
-    if (axis < 0) return; // degenerate: no barycentrics
-    // X = (o S + D N) / S; u = cross2(b S - X', c S - X') / (area S^2), X' = o S + D N
-    auto area_ratio = [&](point3 p, point3 q) {
-        if (e.kind == end_kind::domain) { // the point o itself
-            return arith::value(k, [=](auto L) {
-                const auto A = arith::lift(L, a);
-                const auto X = s.O(L);
-                return arith::ratio{arith::cross(drop_axis(arith::lift(L, p) - X, axis), drop_axis(arith::lift(L, q) - X, axis)),
-                                    arith::cross(drop_axis(arith::lift(L, b) - A, axis), drop_axis(arith::lift(L, c) - A, axis))};
-            });
-        }
-        return with_ratio(e, s, [&](const auto& tr) {
-            return arith::value(k, [=](auto L) {
-                const auto x = tr(L);
-                const auto Xn = arith::scaled(s.O(L), x.den) + arith::scaled(s.D(L), x.num);
-                const auto A = arith::lift(L, a);
-                const auto area = arith::cross(drop_axis(arith::lift(L, b) - A, axis), drop_axis(arith::lift(L, c) - A, axis));
-                return arith::ratio{arith::cross(drop_axis(arith::scaled(arith::lift(L, p), x.den) - Xn, axis),
-                                                 drop_axis(arith::scaled(arith::lift(L, q), x.den) - Xn, axis)),
-                                    area * (x.den * x.den)};
-            });
-        });
-    };
-    h.u = area_ratio(b, c);
-    h.v = area_ratio(c, a);
-    h.w = area_ratio(a, b);
+    const int axis = area_axis(k, t);
+    if (axis < 0) return;             // degenerate: no barycentrics
+    if (e.kind == end_kind::domain) { // the point o itself
+        h.u = arith::value(k, area_barycentric_at_origin(s, t, axis, b, c));
+        h.v = arith::value(k, area_barycentric_at_origin(s, t, axis, c, a));
+        h.w = arith::value(k, area_barycentric_at_origin(s, t, axis, a, b));
+        return;
+    }
+    with_ratio(e, s, [&](const auto& tr) {
+        auto one = [&](point3 p, point3 q) {
+            return on_edge(e, p, q) ? arith::exact_value(k, 0.0) : arith::value(k, area_barycentric(tr, s, t, axis, p, q));
+        };
+        h.u = one(b, c);
+        h.v = one(c, a);
+        h.w = one(a, b);
+    });
 }
 
 template <class K>
 [[nodiscard]] constexpr arith::vec_value_t<K> normal_value(K& k, const triangle3& t) {
-    auto component = [&](int axis) {
-        return arith::value(k, [=](auto L) {
-            const auto A = arith::lift(L, t.a);
-            return pick(arith::cross(arith::lift(L, t.b) - A, arith::lift(L, t.c) - A), axis);
-        });
-    };
+    auto component = [&](int axis) { return arith::value(k, normal_component(t, axis)); };
     if constexpr (arith::encloses<K>) return interval3{component(0), component(1), component(2)};
     else return vec3{component(0), component(1), component(2)};
 }
 
+// The exact tier at run time: every value of a hit from one pass in the double-double filter (each
+// value's lambda evaluated in one function, so the parts they share, n and the end's ratio, are
+// computed once), each rounded from it where its test decides (arith::rounded_from), by its own
+// exact stages otherwise. The general path evaluates each value alone.
+template <class K>
+[[nodiscard]] triangle_hit<double> rounded_triangle_values(K& k, const contact_end& e, const linear3& s, const triangle3& t) {
+    const arith::lift_filter_dd L{};
+    const auto n0 = normal_component(t, 0), n1 = normal_component(t, 1), n2 = normal_component(t, 2);
+    const auto x0 = n0(L), x1 = n1(L), x2 = n2(L);
+    const int axis = e.kind == end_kind::plane_crossing ? -1 : area_axis(k, t);
+    triangle_hit<double> h{};
+    auto round3 = [&](const auto& fu, const auto& fv, const auto& fw) {
+        const auto u = fu(L), v = fv(L), w = fw(L);
+        h.u = on_edge(e, t.b, t.c) ? 0.0 : arith::rounded_from(fu, u);
+        h.v = on_edge(e, t.c, t.a) ? 0.0 : arith::rounded_from(fv, v);
+        h.w = on_edge(e, t.a, t.b) ? 0.0 : arith::rounded_from(fw, w);
+    };
+    if (e.kind == end_kind::domain) {
+        h.t = e.bound;
+        h.point = e.bound == 1.0 ? s.q : s.o;
+        if (axis >= 0)
+            round3(area_barycentric_at_origin(s, t, axis, t.b, t.c), area_barycentric_at_origin(s, t, axis, t.c, t.a),
+                   area_barycentric_at_origin(s, t, axis, t.a, t.b));
+    } else {
+        with_ratio(e, s, [&](const auto& tr) {
+            const auto v = arith::rounded_value_and_point(k, tr, [=](auto M) { return s.O(M); }, [=](auto M) { return s.D(M); }, tr(L));
+            h.t = v.t;
+            h.point = v.point;
+            if (e.kind == end_kind::plane_crossing)
+                round3(pluecker_barycentric(s, t, t.b, t.c), pluecker_barycentric(s, t, t.c, t.a), pluecker_barycentric(s, t, t.a, t.b));
+            else if (axis >= 0)
+                round3(area_barycentric(tr, s, t, axis, t.b, t.c), area_barycentric(tr, s, t, axis, t.c, t.a),
+                       area_barycentric(tr, s, t, axis, t.a, t.b));
+        });
+    }
+    h.normal = vec3{arith::rounded_from(n0, x0), arith::rounded_from(n1, x1), arith::rounded_from(n2, x2)};
+    return h;
+}
+
 template <class K>
 [[nodiscard]] constexpr triangle_hit<arith::value_t<K>> triangle_values(K& k, const contact_end& e, const linear3& s, const triangle3& t) {
+    if constexpr (arith::value_mode_of<K>() == arith::value_mode::rounded)
+        if (!__builtin_is_constant_evaluated()) return rounded_triangle_values(k, e, s, t);
     const auto v = end_value_and_point(k, e, s);
     triangle_hit<arith::value_t<K>> h{v.t, v.point, normal_value(k, t), {}, {}, {}};
     barycentrics(k, h, e, s, t);
