@@ -52,7 +52,8 @@ void register_classic_rays(bool near) {
             arith::approx_kernel k;
             return detail::intersects(k, c.r, c.t);
         });
-        reg("exact/intersection/ray_triangle/" + dist, cs, t, check::exact, [](const rt& c) { return intersection(c.r, c.t).has_value(); });
+        reg("exact/intersection_has_value/ray_triangle/" + dist, cs, t, check::exact,
+            [](const rt& c) { return intersection(c.r, c.t).has_value(); });
         // Epick builds Ray_3(point, vector) by rounding point + vector: not exact for such rays.
         reg("cgal_epick/intersects/ray_triangle/" + dist, cs, t, check::approximate, [](const rt& c) {
             double o[3], d[3], a[3], b[3], cc[3];
