@@ -16,6 +16,16 @@
 //   (<= 3 * 2^-1075) of the products that underflow.
 // Trust only 2^-800 <= p <= 2^900 (no underflow of e_K p, no overflow in Dekker's split); the
 // final bound is inflated by (1 + 2^-20) for the rounding of p (fewer than 2^30 operations).
+module;
+// INCIDENCE_DD_INLINE: the double-double filter's operations and vector algebra are always inlined
+// in an optimised build (bench/NOTES.md: values that share parts then share them). The sanitizer
+// build (-O0, INCIDENCE_UNFORCED_INLINE) leaves them to the compiler: forced inlining at -O0 only
+// multiplies the code (the exact value instances took 74 s to compile there, the values fuzzer 93 s).
+#ifdef INCIDENCE_UNFORCED_INLINE
+#define INCIDENCE_DD_INLINE
+#else
+#define INCIDENCE_DD_INLINE gnu::always_inline
+#endif
 export module incidence.arith:filtered_dd;
 import :eft;
 import :filtered; // unit_roundoff
@@ -39,7 +49,7 @@ template <int A, int B>
 [[nodiscard]] constexpr filtered_dd<0> lift_filtered_dd(double x) { return {x, 0.0, abs(x)}; }
 
 template <int A, int B>
-[[nodiscard, gnu::always_inline]] constexpr auto operator+(const filtered_dd<A>& a, const filtered_dd<B>& b) {
+[[nodiscard, INCIDENCE_DD_INLINE]] constexpr auto operator+(const filtered_dd<A>& a, const filtered_dd<B>& b) {
     constexpr int K = (A > B ? A : B) + 1;
     if (dd_poisoned(a, b)) return filtered_dd<K>{0.0, 0.0, dd_infinity};
     const auto s = two_sum(a.hi, b.hi);
@@ -51,7 +61,7 @@ template <int A, int B>
     return filtered_dd<K>{r.hi, r.lo, a.p + b.p};
 }
 template <int A>
-[[nodiscard, gnu::always_inline]] constexpr filtered_dd<A> operator-(const filtered_dd<A>& a) {
+[[nodiscard, INCIDENCE_DD_INLINE]] constexpr filtered_dd<A> operator-(const filtered_dd<A>& a) {
     return {-a.hi, -a.lo, a.p};
 }
 // |x|: a normalised double-double has the sign of its leading part; the bound carries over.
@@ -60,7 +70,7 @@ template <int A>
     return a.hi < 0.0 ? -a : a;
 }
 template <int A, int B>
-[[nodiscard, gnu::always_inline]] constexpr auto operator-(const filtered_dd<A>& a, const filtered_dd<B>& b) {
+[[nodiscard, INCIDENCE_DD_INLINE]] constexpr auto operator-(const filtered_dd<A>& a, const filtered_dd<B>& b) {
     if constexpr (A == 0 && B == 0) {
         // Difference of two inputs: exact.
         if (a.lo == 0.0 && b.lo == 0.0) {
@@ -71,7 +81,7 @@ template <int A, int B>
     return a + (-b);
 }
 template <int A, int B>
-[[nodiscard, gnu::always_inline]] constexpr filtered_dd<A + B + 1> operator*(const filtered_dd<A>& a, const filtered_dd<B>& b) {
+[[nodiscard, INCIDENCE_DD_INLINE]] constexpr filtered_dd<A + B + 1> operator*(const filtered_dd<A>& a, const filtered_dd<B>& b) {
     if (dd_poisoned(a, b)) return {0.0, 0.0, dd_infinity};
     const auto p = two_product(a.hi, b.hi);
     const double cross = a.hi * b.lo + a.lo * b.hi;

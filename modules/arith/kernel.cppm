@@ -17,6 +17,15 @@
 // abs(x) of a subexpression is allowed: every number type knows or bounds its sign, and
 // |x| keeps both the degree and the filters' error bounds.
 module;
+// INCIDENCE_DD_INLINE (as in filtered_dd.cppm): the double-double filter's operations and vector algebra are always inlined
+// in an optimised build (bench/NOTES.md: values that share parts then share them). The sanitizer
+// build (-O0, INCIDENCE_UNFORCED_INLINE) leaves them to the compiler: forced inlining at -O0 only
+// multiplies the code (the exact value instances took 74 s to compile there, the values fuzzer 93 s).
+#ifdef INCIDENCE_UNFORCED_INLINE
+#define INCIDENCE_DD_INLINE
+#else
+#define INCIDENCE_DD_INLINE gnu::always_inline
+#endif
 #include <type_traits>
 #include <array>
 #include <cstdint>
@@ -94,25 +103,25 @@ template <class A, class B, class C>
 // (intersection/linear_pairs.cppm's rounded_triangle_values). Only there: inlining them for every
 // number type made the yes/no filter's bodies slower (bench/NOTES.md).
 template <int A, int B>
-[[nodiscard, gnu::always_inline]] constexpr auto operator-(const v3<filtered_dd<A>>& a, const v3<filtered_dd<B>>& b) {
+[[nodiscard, INCIDENCE_DD_INLINE]] constexpr auto operator-(const v3<filtered_dd<A>>& a, const v3<filtered_dd<B>>& b) {
     return v3<decltype(a.x - b.x)>{a.x - b.x, a.y - b.y, a.z - b.z};
 }
 template <int A, int B>
-[[nodiscard, gnu::always_inline]] constexpr auto dot(const v3<filtered_dd<A>>& a, const v3<filtered_dd<B>>& b) {
+[[nodiscard, INCIDENCE_DD_INLINE]] constexpr auto dot(const v3<filtered_dd<A>>& a, const v3<filtered_dd<B>>& b) {
     return a.x * b.x + a.y * b.y + a.z * b.z;
 }
 template <int A, int B>
-[[nodiscard, gnu::always_inline]] constexpr auto cross(const v3<filtered_dd<A>>& a, const v3<filtered_dd<B>>& b) {
+[[nodiscard, INCIDENCE_DD_INLINE]] constexpr auto cross(const v3<filtered_dd<A>>& a, const v3<filtered_dd<B>>& b) {
     using T = decltype(a.y * b.z - a.z * b.y);
     return v3<T>{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 template <int A, int B, int C>
-[[nodiscard, gnu::always_inline]] constexpr auto det3(const v3<filtered_dd<A>>& a, const v3<filtered_dd<B>>& b,
-                                                      const v3<filtered_dd<C>>& c) {
+[[nodiscard, INCIDENCE_DD_INLINE]] constexpr auto det3(const v3<filtered_dd<A>>& a, const v3<filtered_dd<B>>& b,
+                                                       const v3<filtered_dd<C>>& c) {
     return a.x * (b.y * c.z - b.z * c.y) + a.y * (b.z * c.x - b.x * c.z) + a.z * (b.x * c.y - b.y * c.x);
 }
 template <int A, int B>
-[[nodiscard, gnu::always_inline]] constexpr auto cross(const v2<filtered_dd<A>>& a, const v2<filtered_dd<B>>& b) {
+[[nodiscard, INCIDENCE_DD_INLINE]] constexpr auto cross(const v2<filtered_dd<A>>& a, const v2<filtered_dd<B>>& b) {
     return a.x * b.y - a.y * b.x;
 }
 template <class A, class B>
