@@ -14,6 +14,7 @@ void register_classic_rays(bool near);
 void register_classic_sat(bool near);
 void register_contains(bool near);
 void register_intersection(bool near);
+void register_batch(bool near);
 } // namespace bench
 
 int main(int argc, char** argv) {
@@ -28,6 +29,7 @@ int main(int argc, char** argv) {
         bench::register_classic_sat(near);
         bench::register_contains(near);
         bench::register_intersection(near);
+        bench::register_batch(near);
     }
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;

@@ -7,3 +7,4 @@ export import incidence.shapes;
 export import incidence.query;
 export import incidence.catalog;
 export import incidence.bound;
+export import incidence.batch;

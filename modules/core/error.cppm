@@ -28,6 +28,7 @@ enum class errc : unsigned char {
     invalid_field_of_view,     // a camera's vertical field of view is not in (0, pi), or its aspect ratio is not positive
     invalid_clip_range,        // a camera's near distance is not positive, or its far distance not beyond it
     up_parallel_to_forward,    // a camera's up vector is zero or parallel to its viewing direction
+    size_mismatch,             // a batch's output span, or one of its coordinate arrays, has another length than its input
 };
 
 struct error {
@@ -58,6 +59,7 @@ struct error {
             return "the camera's near distance is not positive, or its far distance is not greater than the near one";
         case errc::up_parallel_to_forward: return "the camera's up vector is zero or parallel to its viewing direction";
         case errc::non_planar_polygon: return "the polygon's vertices are not exactly coplanar";
+        case errc::size_mismatch: return "the batch's output span, or one of its coordinate arrays, differs in length from its input";
         case errc::self_intersecting_polygon:
             return "the polygon's boundary meets itself: two edges share a point other than consecutive edges' common vertex (a crossing, "
                    "a touch, a repeated vertex or a fold back)";

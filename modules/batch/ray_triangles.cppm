@@ -1,0 +1,114 @@
+// One ray against many triangles: batch::intersects<Tier>(ray, triangles, out), for triangles as
+// an array of triangle3 or as a structure-of-arrays packet (triangles_soa). out[i] is 1 where the
+// ray meets triangle i, else 0: the answer of the scalar intersects<Tier>(ray, triangle), bit for
+// bit, in every tier (tests/batch/ray_triangles.cpp checks it on every SIMD target).
+// Method: the lanes run the scalar algorithm's operations in SIMD (ray_triangles_simd.cpp):
+// - approximate: the watertight test (Woop, Benthin and Wald, JCGT 2(1), 2013), the scalar
+//   approximate tier's, with its bound (catalog: ray_triangle);
+// - exact, conservative, aggressive: the five signs of the scalar filter's first decision in the
+//   semi-static filter, against a static bound per block of 64 triangles (the largest differences
+//   of the block: one comparison per sign and lane) and, where that leaves a lane open, against
+//   the lane's own bound; a lane left open still asks the scalar query of the same tier
+//   (bench/NOTES.md, "Batches", has the measured shares and times).
+// No heap allocation: an array of triangles is transposed 64 at a time into the stack.
+module;
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <type_traits>
+export module incidence.batch:ray_triangles;
+import incidence.core;
+import incidence.shapes;
+import incidence.query;
+
+// The SIMD kernels (ray_triangles_simd.cpp, compiled for every target Highway knows; the best one
+// the processor has runs). coords: nine arrays of n coordinates (a.x, a.y, a.z, b.x, ..., c.z).
+// watertight writes 1 or 0; filter writes 1 or 0 where its signs are proven and 2 where not.
+extern "C++" {
+namespace incidence::batch::simd {
+void ray_triangles_watertight(const double* origin, const double* direction, const double* const* coords, std::size_t n, std::uint8_t* out);
+void ray_triangles_filter(const double* origin, const double* direction, const double* const* coords, std::size_t n, std::uint8_t* out);
+const char* target_name();
+} // namespace incidence::batch::simd
+}
+
+export namespace incidence::batch {
+
+// Triangles kept as structure of arrays: nine arrays of one length, triangle i being
+// {ax[i], ay[i], az[i]}, {bx[i], ...}, {cx[i], ...}.
+struct triangles_soa {
+    std::span<const double> ax, ay, az, bx, by, bz, cx, cy, cz;
+    [[nodiscard]] constexpr std::size_t size() const { return ax.size(); }
+    [[nodiscard]] constexpr bool consistent() const {
+        const std::size_t n = ax.size();
+        return ay.size() == n && az.size() == n && bx.size() == n && by.size() == n && bz.size() == n && cx.size() == n && cy.size() == n &&
+               cz.size() == n;
+    }
+    [[nodiscard]] constexpr triangle3 operator[](std::size_t i) const {
+        return {{ax[i], ay[i], az[i]}, {bx[i], by[i], bz[i]}, {cx[i], cy[i], cz[i]}};
+    }
+};
+
+// The name of the SIMD target the batches run on here ("AVX3" for AVX-512, "AVX2", "SSE4", ...).
+[[nodiscard]] inline const char* simd_target() { return simd::target_name(); }
+
+} // namespace incidence::batch
+
+namespace incidence::batch::detail {
+
+// One block of n lanes, SoA: the kernel of the tier, then the scalar query where the filter left a
+// lane open. The number of lanes met.
+template <tier Tier, class At>
+std::size_t ray_triangles_block(const ray3& r, const double* const* coords, std::size_t n, std::uint8_t* out, const At& at) {
+    const double o[3] = {r.origin.x, r.origin.y, r.origin.z};
+    const double d[3] = {r.direction.x, r.direction.y, r.direction.z};
+    std::size_t met = 0;
+    if constexpr (std::is_same_v<Tier, approximate>) {
+        simd::ray_triangles_watertight(o, d, coords, n, out);
+        for (std::size_t i = 0; i < n; ++i) met += out[i];
+    } else {
+        simd::ray_triangles_filter(o, d, coords, n, out);
+        for (std::size_t i = 0; i < n; ++i) {
+            if (out[i] == 2) out[i] = incidence::intersects<Tier>(r, at(i)) ? 1 : 0;
+            met += out[i];
+        }
+    }
+    return met;
+}
+
+} // namespace incidence::batch::detail
+
+export namespace incidence::batch {
+
+// Does the ray meet each triangle? out[i] for triangles[i] (out must be as long as triangles);
+// the number of triangles met. Tiers as the scalar intersects: the same answer, lane by lane.
+template <tier Tier = exact>
+[[nodiscard]] result<std::size_t> intersects(const ray3& r, std::span<const triangle3> triangles, std::span<std::uint8_t> out) {
+    if (out.size() != triangles.size()) return error{errc::size_mismatch};
+    constexpr std::size_t block = 64;
+    double buffer[9][block];
+    const double* coords[9];
+    for (int k = 0; k < 9; ++k) coords[k] = buffer[k];
+    std::size_t met = 0;
+    for (std::size_t start = 0; start < triangles.size(); start += block) {
+        const std::size_t n = triangles.size() - start < block ? triangles.size() - start : block;
+        const triangle3* t = triangles.data() + start;
+        for (std::size_t i = 0; i < n; ++i) {
+            buffer[0][i] = t[i].a.x, buffer[1][i] = t[i].a.y, buffer[2][i] = t[i].a.z;
+            buffer[3][i] = t[i].b.x, buffer[4][i] = t[i].b.y, buffer[5][i] = t[i].b.z;
+            buffer[6][i] = t[i].c.x, buffer[7][i] = t[i].c.y, buffer[8][i] = t[i].c.z;
+        }
+        met += detail::ray_triangles_block<Tier>(r, coords, n, out.data() + start, [t](std::size_t i) { return t[i]; });
+    }
+    return met;
+}
+
+template <tier Tier = exact>
+[[nodiscard]] result<std::size_t> intersects(const ray3& r, const triangles_soa& triangles, std::span<std::uint8_t> out) {
+    if (!triangles.consistent() || out.size() != triangles.size()) return error{errc::size_mismatch};
+    const double* coords[9] = {triangles.ax.data(), triangles.ay.data(), triangles.az.data(), triangles.bx.data(), triangles.by.data(),
+                               triangles.bz.data(), triangles.cx.data(), triangles.cy.data(), triangles.cz.data()};
+    return detail::ray_triangles_block<Tier>(r, coords, triangles.size(), out.data(), [&](std::size_t i) { return triangles[i]; });
+}
+
+} // namespace incidence::batch

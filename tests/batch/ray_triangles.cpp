@@ -1,0 +1,238 @@
+// batch::intersects(ray3, triangles): on every SIMD target this processor has (Highway lets a test
+// choose it), each lane's answer equals the scalar intersects<Tier>(ray, triangle) in all four
+// tiers, for the array and the structure-of-arrays entry points, on random triangles, on meshes
+// whose edges and vertices the rays pass exactly (with coplanar rays, degenerate triangles, ulp
+// nudges and scales 2^-500..2^500), and on special values (NaN, infinities, huge and subnormal
+// coordinates). The exact lanes are also checked against the CGAL Epeck oracle on the meshes.
+#include <catch2/catch_test_macros.hpp>
+#include <hwy/targets.h>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <string>
+#include <vector>
+#include "testkit/oracle/cgal_oracle.hpp"
+import incidence;
+#include "testkit/testing.hpp"
+
+namespace test_batch_ray_triangles { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
+using namespace incidence;
+
+namespace {
+
+struct ray_set {
+    ray3 ray;
+    std::vector<triangle3> triangles;
+};
+
+point3 P(support::transform& tr, double x, double y, double z) { return {tr.apply(x, 0), tr.apply(y, 1), tr.apply(z, 2)}; }
+
+// A ray and 2 n + 1 random triangles around it, at one random scale and place (an odd count, so
+// that the SIMD tails run).
+ray_set random_set(support::rng& r, int n) {
+    support::transform tr = support::random_transform(r, false);
+    auto p = [&] { return point3{support::random_coord(r, tr, 0), support::random_coord(r, tr, 1), support::random_coord(r, tr, 2)}; };
+    ray_set s;
+    const point3 o = p(), aim = p();
+    s.ray = ray3{o, vec3{aim.x - o.x, aim.y - o.y, aim.z - o.z}};
+    for (int i = 0; i < 2 * n + 1; ++i) s.triangles.push_back({p(), p(), p()});
+    return s;
+}
+
+// A grid mesh in the plane z = 0 (cells of side 1 from -4 to 4, each split along a diagonal), a
+// ray aimed exactly at a vertex, an edge point or a cell's inside, or lying in the plane, and the
+// whole scaled, translated, nudged and with its axes permuted; some triangles made degenerate.
+ray_set mesh_set(support::rng& r) {
+    using support::small;
+    const int perm = r.integer(0, 2);
+    auto axes = [perm](double x, double y, double z) {
+        return perm == 0 ? std::array<double, 3>{x, y, z} : (perm == 1 ? std::array<double, 3>{z, x, y} : std::array<double, 3>{y, z, x});
+    };
+    support::transform tr = support::random_transform(r, r.coin());
+    auto at = [&](double x, double y, double z) {
+        const auto q = axes(x, y, z);
+        return P(tr, q[0], q[1], q[2]);
+    };
+    ray_set s;
+    for (int i = -4; i < 4; ++i)
+        for (int j = -4; j < 4; ++j) {
+            s.triangles.push_back({at(i, j, 0), at(i + 1, j, 0), at(i + 1, j + 1, 0)});
+            s.triangles.push_back({at(i, j, 0), at(i + 1, j + 1, 0), at(i, j + 1, 0)});
+        }
+    for (int k = 0; k < 5; ++k) { // collinear triangles, and one with the ray's origin as a vertex below
+        const double x = r.integer(-4, 4), y = r.integer(-4, 4);
+        s.triangles.push_back({at(x, y, 0), at(x + 1, y + 1, 0), at(x + 2, y + 2, 0)});
+    }
+    const int kind = r.integer(0, 3);
+    const double tx = r.integer(-4, 4) + (kind == 1 ? 0.5 : (kind == 2 ? 0.25 : 0.0)), ty = r.integer(-4, 4) + (kind == 2 ? 0.5 : 0.0);
+    const bool coplanar = kind == 3;
+    const double ox = small(r), oy = small(r), oz = coplanar ? 0.0 : small(r);
+    double dx = tx - ox, dy = ty - oy, dz = -oz;
+    if (r.integer(0, 7) == 0) dx = -dx, dy = -dy, dz = -dz; // pointing away
+    const auto d = axes(dx, dy, dz);
+    s.ray = ray3{at(ox, oy, oz), vec3{tr.dir(d[0]), tr.dir(d[1]), tr.dir(d[2])}};
+    s.triangles.push_back({s.ray.origin, at(tx, ty, 0), at(tx + 1, ty, 0)});
+    return s;
+}
+
+// Triangles with NaN, infinite, huge and subnormal coordinates, against a ray that is ordinary
+// or special itself.
+ray_set special_set(support::rng& r) {
+    const double specials[] = {std::numeric_limits<double>::quiet_NaN(),
+                               std::numeric_limits<double>::infinity(),
+                               -std::numeric_limits<double>::infinity(),
+                               0x1p1020,
+                               -0x1.fffffffffffffp1023,
+                               0x1p-1074,
+                               -0x1p-1060,
+                               0x1p-1022,
+                               0.0,
+                               1.0,
+                               -1.0};
+    auto pick = [&] { return r.integer(0, 2) == 0 ? specials[r.integer(0, 10)] : r.uniform(-1, 1); };
+    auto point = [&] { return point3{pick(), pick(), pick()}; };
+    ray_set s;
+    s.ray = ray3{point(), vec3{pick(), pick(), pick()}};
+    for (int i = 0; i < 37; ++i) s.triangles.push_back({point(), point(), point()});
+    return s;
+}
+
+struct soa_copy {
+    std::vector<double> c[9];
+    explicit soa_copy(const std::vector<triangle3>& ts) {
+        for (const triangle3& t : ts) {
+            const double v[9] = {t.a.x, t.a.y, t.a.z, t.b.x, t.b.y, t.b.z, t.c.x, t.c.y, t.c.z};
+            for (int k = 0; k < 9; ++k) c[k].push_back(v[k]);
+        }
+    }
+    batch::triangles_soa view() const { return {c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8]}; }
+};
+
+std::string str(point3 p) { return "(" + support::hex(p.x) + "," + support::hex(p.y) + "," + support::hex(p.z) + ")"; }
+std::string str(vec3 v) { return str(point3{v.x, v.y, v.z}); }
+
+struct counts {
+    long lanes = 0, wrong = 0;
+};
+
+// Every lane of both entry points against the scalar query of the tier.
+template <class Tier>
+void compare(const ray_set& s, counts& c, const std::string& where) {
+    const std::size_t n = s.triangles.size();
+    std::vector<std::uint8_t> aos(n, 7), soa(n, 7);
+    const auto ra = batch::intersects<Tier>(s.ray, std::span<const triangle3>(s.triangles), aos);
+    const soa_copy copy(s.triangles);
+    const auto rs = batch::intersects<Tier>(s.ray, copy.view(), soa);
+    REQUIRE(ra.has_value());
+    REQUIRE(rs.has_value());
+    std::size_t met = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint8_t scalar = intersects<Tier>(s.ray, s.triangles[i]) ? 1 : 0;
+        met += scalar;
+        ++c.lanes;
+        if (aos[i] != scalar || soa[i] != scalar) {
+            if (++c.wrong <= 5)
+                std::printf("  %s lane %zu: scalar %d, batch %d (array) %d (soa); ray %s dir %s\n", where.c_str(), i, scalar, aos[i],
+                            soa[i], str(s.ray.origin).c_str(), str(s.ray.direction).c_str());
+        }
+    }
+    if (ra.value() != met || rs.value() != met) ++c.wrong;
+}
+
+template <class Make>
+void every_tier_on_every_target(const char* name, long sets, Make make) {
+    counts c[4];
+    int targets = 0;
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        REQUIRE(std::string(batch::simd_target()) == hwy::TargetName(target));
+        ++targets;
+        support::rng r(support::seed());
+        for (long k = 0; k < sets; ++k) {
+            const ray_set s = make(r);
+            const std::string where = std::string(name) + " on " + hwy::TargetName(target);
+            compare<exact>(s, c[0], where + ", exact");
+            compare<conservative>(s, c[1], where + ", conservative");
+            compare<aggressive>(s, c[2], where + ", aggressive");
+            compare<approximate>(s, c[3], where + ", approximate");
+        }
+    }
+    hwy::SetSupportedTargetsForTest(0);
+    std::printf("[cases] batch ray_triangles %s: %d SIMD targets, %ld lanes per tier; lanes unlike the scalar answer: exact %ld, "
+                "conservative %ld, aggressive %ld, approximate %ld\n",
+                name, targets, c[0].lanes, c[0].wrong, c[1].wrong, c[2].wrong, c[3].wrong);
+    CHECK(targets >= 2); // the portable emulation and at least one native target
+    for (const counts& x : c) CHECK(x.wrong == 0);
+}
+
+} // namespace
+
+TEST_CASE("batch ray_triangles: every lane is the scalar answer, random triangles, every target", "[batch]") {
+    every_tier_on_every_target("random", support::cases(400), [](support::rng& r) { return random_set(r, 128); });
+}
+
+TEST_CASE("batch ray_triangles: every lane is the scalar answer, rays through a mesh's edges and vertices, every target", "[batch]") {
+    every_tier_on_every_target("mesh", support::cases(400), mesh_set);
+}
+
+TEST_CASE("batch ray_triangles: every lane is the scalar answer, special values, every target", "[batch]") {
+    every_tier_on_every_target("special", support::cases(400), special_set);
+}
+
+TEST_CASE("batch ray_triangles: the exact lanes against the CGAL Epeck oracle, rays through a mesh", "[batch]") {
+    support::rng r(support::seed());
+    long lanes = 0, wrong = 0, skipped = 0;
+    const long sets = support::cases(1000);
+    for (long k = 0; k < sets; ++k) {
+        const ray_set s = mesh_set(r);
+        std::vector<std::uint8_t> out(s.triangles.size());
+        REQUIRE(batch::intersects<exact>(s.ray, std::span<const triangle3>(s.triangles), out).has_value());
+        double o[3], d[3];
+        support::arr(s.ray.origin, o);
+        support::arr(s.ray.direction, d);
+        for (std::size_t i = 0; i < s.triangles.size(); ++i) {
+            double a[3], b[3], c[3];
+            support::arr(s.triangles[i].a, a);
+            support::arr(s.triangles[i].b, b);
+            support::arr(s.triangles[i].c, c);
+            // the oracle's ray needs a direction and its triangle an area (the scalar test covers the rest)
+            if (s.ray.direction == vec3{0, 0, 0} || oracle::triangle_is_degenerate(a, b, c)) {
+                ++skipped;
+                continue;
+            }
+            ++lanes;
+            if ((out[i] == 1) != oracle::ray_triangle(o, d, a, b, c)) ++wrong;
+        }
+    }
+    std::printf("[cases] batch ray_triangles exact against the oracle: %ld lanes, %ld wrong; %ld lanes with a degenerate triangle left to "
+                "the scalar test\n",
+                lanes, wrong, skipped);
+    CHECK(wrong == 0);
+    CHECK(skipped * 10 < lanes); // the degenerate triangles are a small share of the set
+}
+
+TEST_CASE("batch ray_triangles: sizes", "[batch]") {
+    const ray3 ray{{0, 0, -1}, {0, 0, 1}};
+    const std::vector<triangle3> ts(3, triangle3{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}});
+    std::vector<std::uint8_t> out(2);
+    const auto refused = batch::intersects<exact>(ray, std::span<const triangle3>(ts), out);
+    REQUIRE(refused.has_error());
+    CHECK(refused.error().code == errc::size_mismatch);
+    out.resize(3);
+    const auto all = batch::intersects<exact>(ray, std::span<const triangle3>(ts), out);
+    REQUIRE(all.has_value());
+    CHECK(all.value() == 3);
+    const auto none = batch::intersects<approximate>(ray, std::span<const triangle3>{}, std::span<std::uint8_t>{});
+    REQUIRE(none.has_value());
+    CHECK(none.value() == 0);
+    const std::vector<double> x{0.0, 1.0}, y{0.0};
+    const batch::triangles_soa uneven{x, x, x, x, x, x, x, x, y};
+    out.resize(2);
+    const auto bad = batch::intersects<exact>(ray, uneven, out);
+    REQUIRE(bad.has_error());
+    CHECK(bad.error().code == errc::size_mismatch);
+}
+
+} // namespace test_batch_ray_triangles
