@@ -1,4 +1,6 @@
-// Benchmarks: batches. One ray against a set of triangles (batch::intersects) in every tier,
+// Benchmarks: batches. One ray against a set of triangles, and a box or a ball against a set of
+// points (batch::intersects: <tier>/batch_intersects/{aabb,sphere}_points[_soa]/<dist> beside
+// <tier>/scalar_loop/{aabb,sphere}_points/<dist>). The triangles in every tier,
 // beside the loop over the scalar query that it replaces, on each SIMD target the processor has:
 //   <tier>/batch_intersects/ray_triangles/<dist>              the dispatched (best) target
 //   <tier>/batch_intersects/ray_triangles_<TARGET>/<dist>     one target (AVX3 = AVX-512, AVX2, SSE4)
@@ -173,6 +175,84 @@ void reg_tier(const std::string& tier, const std::string& dist, const std::vecto
     reg_loop<Tier>(tier + "/scalar_loop/ray_triangles/" + dist, set);
 }
 
+// Points against one box and one ball: 16 solids, each against the set's points (random: in the
+// unit cube around them; near_degenerate: every point within 4 ulps of the solid's boundary).
+struct solid_points {
+    aabb3 box;
+    sphere3 ball;
+    std::vector<point3> points;
+};
+std::vector<solid_points> points_set(bool near) {
+    std::vector<solid_points> out;
+    for (int k = 0; k < 16; ++k) {
+        solid_points s;
+        s.box = box(rp(), rp());
+        s.ball = sphere3{rp(), uni(0.25, 1.0)};
+        for (std::size_t i = 0; i < set_size; ++i) {
+            if (!near) {
+                s.points.push_back(rp());
+            } else if (i % 2 == 0) { // on a face of the box, nudged
+                point3 p{uni(s.box.min.x, s.box.max.x), uni(s.box.min.y, s.box.max.y), uni(s.box.min.z, s.box.max.z)};
+                p.x = irand(0, 1) == 0 ? s.box.min.x : s.box.max.x;
+                s.points.push_back(np(p.x, p.y, p.z));
+            } else { // on the sphere (rounded), nudged
+                const double a = uni(0, 6.283185307179586), b = uni(-1, 1), c = std::sqrt(1 - b * b);
+                const point3 m = s.ball.center;
+                s.points.push_back(
+                    np(m.x + s.ball.radius * c * std::cos(a), m.y + s.ball.radius * c * std::sin(a), m.z + s.ball.radius * b));
+            }
+        }
+        out.push_back(std::move(s));
+    }
+    return out;
+}
+
+template <class Tier, bool Ball>
+void reg_points(const std::string& name, const std::vector<solid_points>& set, int entry) { // entry 0 array, 1 packet, 2 scalar loop
+    benchmark::RegisterBenchmark(name.c_str(), [set, entry](benchmark::State& st) {
+        auto solid = [](const solid_points& s) {
+            if constexpr (Ball) return s.ball;
+            else return s.box;
+        };
+        std::vector<std::uint8_t> out(set.front().points.size());
+        for (const solid_points& s : set) { // every lane against the scalar answer before timing
+            if (!batch::intersects<Tier>(solid(s), std::span<const point3>(s.points), out)) return st.SkipWithError("refused");
+            for (std::size_t i = 0; i < out.size(); ++i)
+                if ((out[i] == 1) != intersects<Tier>(solid(s), s.points[i]))
+                    return st.SkipWithError("a lane differs from the scalar answer");
+        }
+        std::vector<std::vector<double>> soa;
+        for (const solid_points& s : set)
+            for (int k = 0; k < 3; ++k) {
+                soa.emplace_back();
+                for (const point3& p : s.points) soa.back().push_back(k == 0 ? p.x : (k == 1 ? p.y : p.z));
+            }
+        std::size_t k = 0;
+        for (auto _ : st) {
+            const solid_points& s = set[k];
+            if (entry == 0) benchmark::DoNotOptimize(batch::intersects<Tier>(solid(s), std::span<const point3>(s.points), out));
+            else if (entry == 1)
+                benchmark::DoNotOptimize(
+                    batch::intersects<Tier>(solid(s), batch::points_soa{soa[3 * k], soa[3 * k + 1], soa[3 * k + 2]}, out));
+            else
+                for (std::size_t i = 0; i < out.size(); ++i) out[i] = intersects<Tier>(solid(s), s.points[i]) ? 1 : 0;
+            benchmark::ClobberMemory();
+            if (++k == set.size()) k = 0;
+        }
+        st.counters["s_per_test"] = benchmark::Counter(static_cast<double>(out.size()),
+                                                       benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+    });
+}
+template <class Tier>
+void reg_points_tier(const std::string& tier, const std::string& dist, const std::vector<solid_points>& set) {
+    reg_points<Tier, false>(tier + "/batch_intersects/aabb_points/" + dist, set, 0);
+    reg_points<Tier, false>(tier + "/batch_intersects/aabb_points_soa/" + dist, set, 1);
+    reg_points<Tier, false>(tier + "/scalar_loop/aabb_points/" + dist, set, 2);
+    reg_points<Tier, true>(tier + "/batch_intersects/sphere_points/" + dist, set, 0);
+    reg_points<Tier, true>(tier + "/batch_intersects/sphere_points_soa/" + dist, set, 1);
+    reg_points<Tier, true>(tier + "/scalar_loop/sphere_points/" + dist, set, 2);
+}
+
 } // namespace
 
 void register_batch(bool near) {
@@ -187,6 +267,11 @@ void register_batch(bool near) {
     reg_tier<conservative>("conservative", dist, set);
     reg_tier<aggressive>("aggressive", dist, set);
     reg_tier<approximate>("approximate", dist, set);
+    const auto points = points_set(near);
+    reg_points_tier<exact>("exact", dist, points);
+    reg_points_tier<conservative>("conservative", dist, points);
+    reg_points_tier<aggressive>("aggressive", dist, points);
+    reg_points_tier<approximate>("approximate", dist, points);
 }
 
 } // namespace bench

@@ -4,3 +4,4 @@
 // units (Highway compiles them once per target); the partitions declare their entry points.
 export module incidence.batch;
 export import :ray_triangles;
+export import :points;

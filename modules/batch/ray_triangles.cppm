@@ -10,7 +10,7 @@
 //   of the block: one comparison per sign and lane) and, where that leaves a lane open, against
 //   the lane's own bound; a lane left open still asks the scalar query of the same tier
 //   (bench/NOTES.md, "Batches", has the measured shares and times).
-// No heap allocation: an array of triangles is transposed 64 at a time into the stack.
+// No heap allocation: an array of triangles is transposed 64 at a time into the stack (lanes.cppm).
 module;
 #include <cstddef>
 #include <cstdint>
@@ -20,6 +20,7 @@ export module incidence.batch:ray_triangles;
 import incidence.core;
 import incidence.shapes;
 import incidence.query;
+import :lanes;
 
 // The SIMD kernels (ray_triangles_simd.cpp, compiled for every target Highway knows; the best one
 // the processor has runs). coords: nine arrays of n coordinates (a.x, a.y, a.z, b.x, ..., c.z).
@@ -62,18 +63,15 @@ template <tier Tier, class At>
 std::size_t ray_triangles_block(const ray3& r, const double* const* coords, std::size_t n, std::uint8_t* out, const At& at) {
     const double o[3] = {r.origin.x, r.origin.y, r.origin.z};
     const double d[3] = {r.direction.x, r.direction.y, r.direction.z};
-    std::size_t met = 0;
     if constexpr (std::is_same_v<Tier, approximate>) {
         simd::ray_triangles_watertight(o, d, coords, n, out);
+        std::size_t met = 0;
         for (std::size_t i = 0; i < n; ++i) met += out[i];
+        return met;
     } else {
         simd::ray_triangles_filter(o, d, coords, n, out);
-        for (std::size_t i = 0; i < n; ++i) {
-            if (out[i] == 2) out[i] = incidence::intersects<Tier>(r, at(i)) ? 1 : 0;
-            met += out[i];
-        }
+        return settle_open(out, n, [&](std::size_t i) { return incidence::intersects<Tier>(r, at(i)); });
     }
-    return met;
 }
 
 } // namespace incidence::batch::detail
@@ -85,22 +83,14 @@ export namespace incidence::batch {
 template <tier Tier = exact>
 [[nodiscard]] result<std::size_t> intersects(const ray3& r, std::span<const triangle3> triangles, std::span<std::uint8_t> out) {
     if (out.size() != triangles.size()) return error{errc::size_mismatch};
-    constexpr std::size_t block = 64;
-    double buffer[9][block];
-    const double* coords[9];
-    for (int k = 0; k < 9; ++k) coords[k] = buffer[k];
-    std::size_t met = 0;
-    for (std::size_t start = 0; start < triangles.size(); start += block) {
-        const std::size_t n = triangles.size() - start < block ? triangles.size() - start : block;
-        const triangle3* t = triangles.data() + start;
-        for (std::size_t i = 0; i < n; ++i) {
-            buffer[0][i] = t[i].a.x, buffer[1][i] = t[i].a.y, buffer[2][i] = t[i].a.z;
-            buffer[3][i] = t[i].b.x, buffer[4][i] = t[i].b.y, buffer[5][i] = t[i].b.z;
-            buffer[6][i] = t[i].c.x, buffer[7][i] = t[i].c.y, buffer[8][i] = t[i].c.z;
-        }
-        met += detail::ray_triangles_block<Tier>(r, coords, n, out.data() + start, [t](std::size_t i) { return t[i]; });
-    }
-    return met;
+    auto unpack = [](const triangle3& t, double* f) {
+        const double v[9] = {t.a.x, t.a.y, t.a.z, t.b.x, t.b.y, t.b.z, t.c.x, t.c.y, t.c.z};
+        for (int k = 0; k < 9; ++k) f[k] = v[k];
+    };
+    return detail::by_blocks<9>(
+        triangles, out.data(), unpack, [&](const double* const* coords, std::size_t n, std::uint8_t* o, std::size_t start) {
+            return detail::ray_triangles_block<Tier>(r, coords, n, o, [&](std::size_t i) { return triangles[start + i]; });
+        });
 }
 
 template <tier Tier = exact>

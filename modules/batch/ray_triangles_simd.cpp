@@ -26,6 +26,7 @@
 #define HWY_TARGET_INCLUDE "modules/batch/ray_triangles_simd.cpp"
 #include <hwy/foreach_target.h> // IWYU pragma: keep
 #include <hwy/highway.h>
+#include "modules/batch/lanes-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace incidence::batch::simd::HWY_NAMESPACE {
@@ -39,25 +40,6 @@ using M = hn::Mask<D>;
 struct soa {
     const double* c[9];
 };
-
-// Lane i's bit of `bits` as byte i of a little-endian word (0 or 1): the byte replicated into
-// every byte, bit i kept in byte i, each nonzero byte then carried into its top bit (no carry
-// crosses a byte: 0x80 + 0x7f < 0x100) and shifted down.
-HWY_INLINE std::uint64_t byte_per_bit(unsigned bits) {
-    const std::uint64_t x = (bits * 0x0101010101010101ULL) & 0x8040201008040201ULL;
-    return ((x + 0x7f7f7f7f7f7f7f7fULL) >> 7) & 0x0101010101010101ULL;
-}
-
-// Stores `count` (at most 8) lanes: 2 where `open` is set, else 1 where `yes` is, else 0.
-HWY_INLINE void store_answers(D d, M yes, M open, std::uint8_t* out, std::size_t count) {
-    static_assert(HWY_MAX_BYTES / sizeof(double) <= 8, "one byte of mask bits per vector");
-    static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "byte i of the word is lane i");
-    std::uint8_t y = 0, o = 0;
-    hn::StoreMaskBits(d, yes, &y);
-    hn::StoreMaskBits(d, open, &o);
-    const std::uint64_t word = byte_per_bit(y & ~o & 0xffu) | (byte_per_bit(o) << 1);
-    std::memcpy(out, &word, count);
-}
 
 // Runs body(arrays, at, lane, count) over n lanes: `count` lanes from `lane` on, read at offset `at`
 // of the arrays: whole vectors from the arrays themselves, the tail from a zero-padded copy on the
@@ -120,7 +102,7 @@ void watertight(const double* origin, const double* direction, const double* con
         // A NaN det passes `!(det != 0)` in the scalar code, as it fails Eq here.
         const M behind = hn::Or(hn::And(hn::Lt(det, zero), hn::Gt(T, zero)), hn::And(hn::Gt(det, zero), hn::Lt(T, zero)));
         const M miss = hn::Or(hn::Or(hn::And(negative, positive), hn::Eq(det, zero)), behind);
-        store_answers(d, hn::Not(miss), hn::FirstN(d, 0), out + lane, count);
+        store_answers(d, hn::Not(miss), out + lane, count);
     });
 }
 
@@ -249,7 +231,6 @@ void filter(const double* origin, const double* direction, const double* const* 
         }
         auto inputs = [&](std::size_t i) { return i < full ? inputs_at(d, whole, i, o) : inputs_at(d, padded, 0, o); };
         // The block's largest |difference| of each kind and axis (a NaN counts as infinite).
-        const V inf = hn::Set(d, __builtin_huge_val());
         V most[15];
         for (V& x : most) x = hn::Zero(d);
         for (std::size_t i = 0; i < m; i += N) {
@@ -257,10 +238,7 @@ void filter(const double* origin, const double* direction, const double* const* 
             const vec<fv>* kinds[5] = {&in.ab, &in.ac, &in.oa, &in.ob, &in.oc};
             for (int k = 0; k < 5; ++k) {
                 const fv* axis[3] = {&kinds[k]->x, &kinds[k]->y, &kinds[k]->z};
-                for (int a = 0; a < 3; ++a) {
-                    const V x = hn::IfThenElse(hn::Eq(axis[a]->p, axis[a]->p), axis[a]->p, inf);
-                    most[3 * k + a] = hn::Max(most[3 * k + a], x);
-                }
+                for (int a = 0; a < 3; ++a) { most[3 * k + a] = max_counting_nan(d, most[3 * k + a], axis[a]->p); }
             }
         }
         vec<pp> largest[5];
