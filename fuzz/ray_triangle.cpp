@@ -9,51 +9,15 @@
 // answer in every tier. Any finding aborts.
 #include "testkit/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
-#include <hwy/targets.h>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <span>
-#include <vector>
 import incidence;
 #include "contracts.hpp"
+#include "batches.hpp"
 
 using namespace incidence;
-
-namespace {
-template <class Tier>
-void batch_is_scalar(const ray3& r, std::span<const triangle3> ts) {
-    std::uint8_t out[16];
-    const auto met = batch::intersects<Tier>(r, ts, std::span<std::uint8_t>(out, ts.size()));
-    if (!met) std::abort();
-    std::size_t count = 0;
-    for (std::size_t i = 0; i < ts.size(); ++i) {
-        const std::uint8_t scalar = intersects<Tier>(r, ts[i]) ? 1 : 0;
-        if (out[i] != scalar) std::abort();
-        count += scalar;
-    }
-    if (met.value() != count) std::abort();
-}
-void batches(const std::uint8_t* data, std::size_t size, const double* v, const ray3& r, const triangle3& t, const triangle3& u) {
-    static const std::vector<std::int64_t> targets = hwy::SupportedAndGeneratedTargets();
-    hwy::SetSupportedTargetsForTest(targets[(size > 0 ? data[0] : 0) % targets.size()]);
-    const point3 p{v[18], v[19], v[20]}, q{v[21], v[22], v[23]}, w{v[24], v[25], v[26]}, x{v[27], v[28], v[29]};
-    const triangle3 ts[9] = {t,
-                             u,
-                             {t.b, t.c, t.a},
-                             {t.a, t.c, t.b},
-                             {p, q, w},
-                             {t.a, t.b, x},
-                             {t.b, t.c, p},
-                             {r.origin, q, t.c},
-                             {{v[30], v[31], v[0]}, t.a, w}};
-    batch_is_scalar<exact>(r, ts);
-    batch_is_scalar<conservative>(r, ts);
-    batch_is_scalar<aggressive>(r, ts);
-    batch_is_scalar<approximate>(r, ts);
-    hwy::SetSupportedTargetsForTest(0);
-}
-} // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     double v[32] = {};
@@ -62,7 +26,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const segment3 s{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
     const triangle3 t{{v[6], v[7], v[8]}, {v[9], v[10], v[11]}, {v[12], v[13], v[14]}};
     const triangle3 u{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}, {v[15], v[16], v[17]}};
-    batches(data, size, v, r, t, u);
+    {
+        const point3 p{v[18], v[19], v[20]}, q{v[21], v[22], v[23]}, w{v[24], v[25], v[26]}, x{v[27], v[28], v[29]};
+        const triangle3 ts[9] = {t,
+                                 u,
+                                 {t.b, t.c, t.a},
+                                 {t.a, t.c, t.b},
+                                 {p, q, w},
+                                 {t.a, t.b, x},
+                                 {t.b, t.c, p},
+                                 {r.origin, q, t.c},
+                                 {{v[30], v[31], v[0]}, t.a, w}};
+        batch_contracts(r, std::span<const triangle3>(ts), size > 0 ? data[0] : 0);
+    }
     // Every tier and every find must finish on any bits.
     (void)intersects<approximate>(r, t);
     (void)intersects<conservative>(r, t);

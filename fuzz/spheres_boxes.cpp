@@ -8,14 +8,13 @@
 // aborts.
 #include "testkit/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
-#include <hwy/targets.h>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <span>
-#include <vector>
 import incidence;
 #include "contracts.hpp"
+#include "batches.hpp"
 
 using namespace incidence;
 
@@ -29,26 +28,6 @@ aabb3 ordered(point3 a, point3 b) {
     return {{std::fmin(a.x, b.x), std::fmin(a.y, b.y), std::fmin(a.z, b.z)},
             {std::fmax(a.x, b.x), std::fmax(a.y, b.y), std::fmax(a.z, b.z)}};
 }
-template <class Tier, class Solid>
-void batch_is_scalar(const Solid& solid, std::span<const point3> ps) {
-    std::uint8_t out[16];
-    const auto met = batch::intersects<Tier>(solid, ps, std::span<std::uint8_t>(out, ps.size()));
-    if (!met) std::abort();
-    std::size_t count = 0;
-    for (std::size_t i = 0; i < ps.size(); ++i) {
-        const std::uint8_t scalar = intersects<Tier>(solid, ps[i]) ? 1 : 0;
-        if (out[i] != scalar) std::abort();
-        count += scalar;
-    }
-    if (met.value() != count) std::abort();
-}
-template <class Solid>
-void batches(const Solid& solid, std::span<const point3> ps) {
-    batch_is_scalar<exact>(solid, ps);
-    batch_is_scalar<conservative>(solid, ps);
-    batch_is_scalar<aggressive>(solid, ps);
-    batch_is_scalar<approximate>(solid, ps);
-}
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -60,8 +39,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const sphere3 s1{c, r1}, s2{e, r2};
     const aabb3 b1{c, e}, b2{p, q}; // unchecked: may be inverted or NaN
     {
-        static const std::vector<std::int64_t> targets = hwy::SupportedAndGeneratedTargets();
-        hwy::SetSupportedTargetsForTest(targets[(size > 0 ? data[0] : 0) % targets.size()]);
         const point3 ps[11] = {p,
                                q,
                                c,
@@ -73,11 +50,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                {c.x + r1, c.y, c.z},
                                {e.x, e.y - r2, e.z},
                                {0, 0, 0}};
-        batches(b1, ps);
-        batches(b2, ps);
-        batches(s1, ps);
-        batches(s2, ps);
-        hwy::SetSupportedTargetsForTest(0);
+        const std::uint8_t pick = size > 0 ? data[0] : 0;
+        batch_contracts(b1, std::span<const point3>(ps), pick);
+        batch_contracts(b2, std::span<const point3>(ps), pick);
+        batch_contracts(s1, std::span<const point3>(ps), pick);
+        batch_contracts(s2, std::span<const point3>(ps), pick);
     }
     // Every tier and every find must finish on any bits.
     (void)intersects<approximate>(ray, s1);

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <random>
 #include <string>
 #include "rng.hpp"
@@ -71,6 +72,24 @@ inline transform random_transform(rng& r, bool nudged, bool any_scale = true) {
         for (double& ti : tr.t) ti = std::ldexp(r.uniform(-1, 1), tr.k + far);
     }
     return tr;
+}
+
+// A coordinate for bad-input tests: one time in three a special value (NaN, infinities, the
+// largest and near-largest magnitudes, subnormals, the smallest normal, zero, +-1), else uniform in
+// [-1, 1].
+inline double special_or_uniform(rng& r) {
+    const double specials[] = {std::numeric_limits<double>::quiet_NaN(),
+                               std::numeric_limits<double>::infinity(),
+                               -std::numeric_limits<double>::infinity(),
+                               0x1p1020,
+                               -0x1.fffffffffffffp1023,
+                               0x1p-1074,
+                               -0x1p-1060,
+                               0x1p-1022,
+                               0.0,
+                               1.0,
+                               -1.0};
+    return r.integer(0, 2) == 0 ? specials[r.integer(0, 10)] : r.uniform(-1, 1);
 }
 
 // Small integer or dyadic coordinates, so boundary constructions are exact before transforming.

@@ -17,10 +17,8 @@
 // abs(x) of a subexpression is allowed: every number type knows or bounds its sign, and
 // |x| keeps both the degree and the filters' error bounds.
 module;
-// INCIDENCE_DD_INLINE (as in filtered_dd.cppm): the double-double filter's operations and vector algebra are always inlined
-// in an optimised build (bench/NOTES.md: values that share parts then share them). The sanitizer
-// build (-O0, INCIDENCE_UNFORCED_INLINE) leaves them to the compiler: forced inlining at -O0 only
-// multiplies the code (the exact value instances took 74 s to compile there, the values fuzzer 93 s).
+// INCIDENCE_DD_INLINE, defined as in filtered_dd.cppm (a module cannot export a macro), for the
+// double-double overloads of the vector algebra below.
 #ifdef INCIDENCE_UNFORCED_INLINE
 #define INCIDENCE_DD_INLINE
 #else

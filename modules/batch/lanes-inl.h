@@ -16,6 +16,11 @@ HWY_BEFORE_NAMESPACE();
 namespace incidence::batch::simd::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
+// The batches' lanes: doubles, as many as the target's vectors hold.
+using D = hn::ScalableTag<double>;
+using V = hn::Vec<D>;
+using M = hn::Mask<D>;
+
 // Lane i's bit of `bits` as byte i of a little-endian word (0 or 1): the byte replicated into
 // every byte, bit i kept in byte i, each nonzero byte then carried into its top bit (no carry
 // crosses a byte: 0x80 + 0x7f < 0x100) and shifted down.
@@ -37,7 +42,6 @@ HWY_INLINE void store_bytes(std::uint64_t word, std::uint8_t* out, std::size_t c
 
 // Stores `count` (at most 8) lanes of double masks: 2 where `open` is set, else 1 where `yes` is,
 // else 0 (the batches' answers; 2 is a lane the filter left to the scalar query).
-template <class D, class M>
 HWY_INLINE void store_answers(D d, M yes, M open, std::uint8_t* out, std::size_t count) {
     static_assert(HWY_MAX_BYTES / sizeof(double) <= 8, "one byte of mask bits per vector");
     static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "byte i of the word is lane i");
@@ -47,7 +51,6 @@ HWY_INLINE void store_answers(D d, M yes, M open, std::uint8_t* out, std::size_t
     store_bytes(byte_per_bit(y & ~o & 0xffu) | (byte_per_bit(o) << 1), out, count);
 }
 // The same where no lane is open: 1 where `yes` is set, else 0.
-template <class D, class M>
 HWY_INLINE void store_answers(D d, M yes, std::uint8_t* out, std::size_t count) {
     std::uint8_t y = 0;
     hn::StoreMaskBits(d, yes, &y);
@@ -56,10 +59,7 @@ HWY_INLINE void store_answers(D d, M yes, std::uint8_t* out, std::size_t count) 
 
 // The largest lane of x, a NaN lane counting as infinite (a static bound must not lose a larger
 // value to a NaN, which Max would drop or propagate depending on the operand order).
-template <class D>
-HWY_INLINE hn::Vec<D> max_counting_nan(D d, hn::Vec<D> most, hn::Vec<D> x) {
-    return hn::Max(most, hn::IfThenElse(hn::Eq(x, x), x, hn::Set(d, __builtin_huge_val())));
-}
+HWY_INLINE V max_counting_nan(D d, V most, V x) { return hn::Max(most, hn::IfThenElse(hn::Eq(x, x), x, hn::Set(d, __builtin_huge_val()))); }
 
 } // namespace incidence::batch::simd::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();

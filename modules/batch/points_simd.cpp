@@ -27,10 +27,6 @@ HWY_BEFORE_NAMESPACE();
 namespace incidence::batch::simd::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-using D = hn::ScalableTag<double>;
-using V = hn::Vec<D>;
-using M = hn::Mask<D>;
-
 // Where the n points are: three coordinate arrays (xyz == nullptr), or one array of x, y, z
 // interleaved (point after point, as an array of point3 copied into doubles).
 struct points_at {

@@ -32,10 +32,6 @@ HWY_BEFORE_NAMESPACE();
 namespace incidence::batch::simd::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-using D = hn::ScalableTag<double>;
-using V = hn::Vec<D>;
-using M = hn::Mask<D>;
-
 // The nine coordinate arrays: a.x, a.y, a.z, b.x, ..., c.z.
 struct soa {
     const double* c[9];

@@ -8,7 +8,6 @@
 #include <hwy/targets.h>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <span>
 #include <string>
 #include <vector>
@@ -80,18 +79,7 @@ ray_set mesh_set(support::rng& r) {
 // Triangles with NaN, infinite, huge and subnormal coordinates, against a ray that is ordinary
 // or special itself.
 ray_set special_set(support::rng& r) {
-    const double specials[] = {std::numeric_limits<double>::quiet_NaN(),
-                               std::numeric_limits<double>::infinity(),
-                               -std::numeric_limits<double>::infinity(),
-                               0x1p1020,
-                               -0x1.fffffffffffffp1023,
-                               0x1p-1074,
-                               -0x1p-1060,
-                               0x1p-1022,
-                               0.0,
-                               1.0,
-                               -1.0};
-    auto pick = [&] { return r.integer(0, 2) == 0 ? specials[r.integer(0, 10)] : r.uniform(-1, 1); };
+    auto pick = [&] { return support::special_or_uniform(r); };
     auto point = [&] { return point3{pick(), pick(), pick()}; };
     ray_set s;
     s.ray = ray3{point(), vec3{pick(), pick(), pick()}};
