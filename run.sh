@@ -15,9 +15,9 @@ cd "$(dirname "$0")"
 # clang-format-19 checks the formatting (format_check), python3-matplotlib draws the audit report, python3-jsonschema and chromium test it, libcgal-demo
 # has the real meshes (data.tar.gz), libqhull-dev is the convex-hull peer in the bounding-volume table, libeigen3-dev lets CGAL's
 # oriented_bounding_box be the OBB peer, libfcl-dev is the FCL peer in the OBB-OBB and triangle-triangle benchmarks,
-# libhwy-dev (Google Highway) is the batches' SIMD with run-time dispatch.
+# libhwy-dev (Google Highway) is the batches' SIMD with run-time dispatch, libembree-dev (Embree 3) the ray-casting peer in the scene benchmarks.
 packages=(clang-19 clang-tools-19 clang-format-19 libclang-rt-19-dev libfuzzer-19-dev ninja-build libboost-dev libgmp-dev
-          libmpfr-dev libcgal-dev libcgal-demo libqhull-dev libeigen3-dev libfcl-dev libhwy-dev libbenchmark-dev python3 python3-matplotlib python3-jsonschema
+          libmpfr-dev libcgal-dev libcgal-demo libqhull-dev libeigen3-dev libfcl-dev libhwy-dev libembree-dev libbenchmark-dev python3 python3-matplotlib python3-jsonschema
           chromium)
 backports=(cmake catch2)
 

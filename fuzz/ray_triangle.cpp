@@ -6,7 +6,8 @@
 // (NaN, infinities, subnormals, zero directions, degenerate triangles). And the batch: the ray
 // against nine triangles from the same bytes (t, u, t's vertices permuted, t's edges with other
 // apexes, doubles 18..31), on a SIMD target the first byte picks, every lane equal to the scalar
-// answer in every tier. Any finding aborts.
+// answer in every tier; and the same nine triangles as a scene3, the ray and the segment against it
+// (fuzz/scenes.hpp: the brute force over the nine). Any finding aborts.
 #include "testkit/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <cmath>
@@ -16,6 +17,7 @@
 import incidence;
 #include "contracts.hpp"
 #include "batches.hpp"
+#include "scenes.hpp"
 
 using namespace incidence;
 
@@ -38,6 +40,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                  {r.origin, q, t.c},
                                  {{v[30], v[31], v[0]}, t.a, w}};
         batch_contracts(r, std::span<const triangle3>(ts), size > 0 ? data[0] : 0);
+        scene_contracts(r, std::span<const triangle3>(ts));
+        scene_contracts(s, std::span<const triangle3>(ts));
     }
     // Every tier and every find must finish on any bits.
     (void)intersects<approximate>(r, t);

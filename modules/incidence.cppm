@@ -8,3 +8,4 @@ export import incidence.query;
 export import incidence.catalog;
 export import incidence.bound;
 export import incidence.batch;
+export import incidence.scene;

@@ -199,6 +199,13 @@ for fam in d["tradeoff"]["families"]:
 sc = d["scene"]
 w = {x["name"]: x for x in sc["workloads"]}
 check(w["camera_rays"]["tests"] == 16 * len(faces), "camera ray tests = rays x triangles")
+check(w["scene_rays"]["tests"] == 16, "scene ray tests = rays")
+check([m["name"] for m in w["scene_rays"]["methods"] if m["kind"] == "batch"] ==
+      [t + " (batch)" for t in ["exact", "conservative", "aggressive", "approximate"]], "scene rays: a batch row per tier")
+for m in w["scene_rays"]["methods"]:  # every ray of the grid aims at the mesh's box: the exact tier's yes/no, per ray
+    if m["name"] in ("exact", "exact (batch)"):
+        check(m["wrong"] == 0, f"scene rays: {m['name']} agrees with the exact scene")
+check(sc["advice"]["scene_tier"] in [t["name"] for t in sc["tiers"]], "the advice names a scene tier")
 check(w["edge_rays"]["tests"] == 3 * len(faces), "edge ray tests = 2 per edge of a closed mesh")
 check(w["vertex_rays"]["tests"] == 3 * len(faces), "vertex ray tests = 3 per triangle")
 around = {}

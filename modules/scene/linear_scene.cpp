@@ -1,0 +1,254 @@
+// A line, a ray or a segment against a scene3: the traversals (see linear_scene.cppm for the
+// semantics, the method and its sources).
+module;
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <type_traits>
+module incidence.scene;
+import incidence.core;
+import incidence.arith;
+import incidence.shapes;
+import incidence.query;
+import incidence.detail;
+
+namespace incidence::detail {
+
+namespace {
+
+// The filter's signs; a sign it cannot prove is decided at once by the exact stages
+// (filter_kernel::decided_sgn) instead of failing the pass. A traversal visits many triangles, and
+// one open sign would otherwise send the whole traversal to the exact kernel.
+struct deciding_kernel : arith::filter_kernel {
+    template <class F>
+    [[nodiscard, gnu::always_inline]] constexpr sign sgn(const F& f) {
+        return decided_sgn(f);
+    }
+    template <class F>
+    [[nodiscard, gnu::always_inline]] constexpr bool zero(const F& f) {
+        return decided_sgn(f) == sign::zero;
+    }
+    template <class F>
+    [[nodiscard, gnu::always_inline]] constexpr sign settled_sgn(const F& f) {
+        return decided_sgn(f);
+    }
+    template <class F>
+    [[nodiscard, gnu::always_inline]] constexpr sign structural_sgn(const F& f) {
+        return decided_sgn(f);
+    }
+    template <class F>
+    [[nodiscard, gnu::always_inline]] constexpr bool structural_zero(const F& f) {
+        return decided_sgn(f) == sign::zero;
+    }
+};
+
+constexpr double inf = __builtin_huge_val();
+constexpr double moderate_limit = 0x1p400, small_direction = 0x1p-400;
+
+double coordinate(point3 p, int i) { return i == 0 ? p.x : (i == 1 ? p.y : p.z); }
+
+// The slab test of a linear object against node boxes, never missing a box the object meets.
+template <class S>
+class node_slabs {
+public:
+    static constexpr double missed = inf; // entry()'s answer for a box the object surely misses
+
+    node_slabs(const S& x, const linear3& s, const scene3& scene) : x_(x) {
+        const vec3 d = s.kind == extent::segment ? s.q - s.o : s.d;
+        const double dv[3] = {d.x, d.y, d.z};
+        lo_ = s.kind == extent::line ? -inf : 0.0;
+        hi_ = s.kind == extent::segment ? 1.0 : inf;
+        fast_ = scene.moderate();
+        for (int i = 0; i < 3; ++i) {
+            o_[i] = coordinate(s.o, i);
+            const double m = std::fabs(dv[i]);
+            if (!(std::fabs(o_[i]) <= moderate_limit) || !(std::fabs(coordinate(s.q, i)) <= moderate_limit)) fast_ = false;
+            if (m != 0.0 && !(m >= small_direction && m <= moderate_limit)) fast_ = false;
+            inv_[i] = 1.0 / dv[i]; // +-infinity for a zero component
+            negative_[i] = std::signbit(dv[i]);
+        }
+    }
+    // Whether the widened slab test applies (every coordinate within 2^400, directions in range).
+    [[nodiscard]] bool fast() const { return fast_; }
+    // A lower bound of the parameter where the object enters the box, at most `limit`; `missed`
+    // where it surely does not meet the box up to `limit`.
+    template <bool Fast>
+    [[nodiscard, gnu::always_inline]] double entry(const aabb3& b, double limit) const {
+        if constexpr (!Fast) {
+            return incidence::intersects<conservative>(x_, b) ? lo_ : missed;
+        } else {
+            // Per axis the slab's parameters (bound - o) / d as (bound - o) (1 / d); a zero direction
+            // gives 1 / d = +-infinity, so a slab the origin lies outside gives an empty range, one it
+            // lies inside an unbounded one, and one it lies on NaN, which max and min below ignore.
+            // Then the widening, once: the largest entry's and the least exit's own error bounds.
+            double lo = lo_, hi = std::min(hi_, limit);
+            const double bmin[3] = {b.min.x, b.min.y, b.min.z}, bmax[3] = {b.max.x, b.max.y, b.max.z};
+            for (int i = 0; i < 3; ++i) {
+                const double a = ((negative_[i] ? bmax[i] : bmin[i]) - o_[i]) * inv_[i];
+                const double c = ((negative_[i] ? bmin[i] : bmax[i]) - o_[i]) * inv_[i];
+                lo = std::max(lo, a);
+                hi = std::min(hi, c);
+            }
+            lo -= std::fabs(lo) * 0x1p-49 + 0x1p-1070;
+            hi += std::fabs(hi) * 0x1p-49 + 0x1p-1070;
+            return lo <= hi ? lo : missed;
+        }
+    }
+
+private:
+    const S& x_;
+    double o_[3], inv_[3];
+    bool negative_[3];
+    double lo_, hi_;
+    bool fast_;
+};
+
+// Visits the leaves' triangles the object may meet, depth first, the child it enters first first;
+// visit(i) returns false to stop; limit() bounds the parameters still of interest.
+template <bool Fast, class S, class Visit, class Limit>
+void traverse_with(const scene3& scene, const node_slabs<S>& sl, Visit&& visit, Limit&& limit) {
+    const auto nodes = scene.nodes();
+    struct pending {
+        std::uint32_t node;
+        double entry;
+    };
+    pending stack[2 * scene3::max_depth + 4];
+    int top = 0;
+    constexpr double missed = node_slabs<S>::missed;
+    if (const double t = sl.template entry<Fast>(nodes[0].box, limit()); t != missed) stack[top++] = {0, t};
+    while (top > 0) {
+        const pending p = stack[--top];
+        if (p.entry > limit()) continue; // begins beyond what is still of interest
+        const scene3::node& n = nodes[p.node];
+        if (n.leaf()) {
+            for (std::uint32_t i = n.first; i < n.first + n.count; ++i)
+                if (!visit(i)) return;
+            continue;
+        }
+        const double l = limit();
+        const double ta = sl.template entry<Fast>(nodes[n.first].box, l), tb = sl.template entry<Fast>(nodes[n.first + 1].box, l);
+        const bool a = ta != missed, b = tb != missed;
+        if (a && b) {
+            const bool a_first = ta <= tb;
+            stack[top++] = a_first ? pending{n.first + 1, tb} : pending{n.first, ta};
+            stack[top++] = a_first ? pending{n.first, ta} : pending{n.first + 1, tb};
+        } else if (a) {
+            stack[top++] = {n.first, ta};
+        } else if (b) {
+            stack[top++] = {n.first + 1, tb};
+        }
+    }
+}
+template <class S, class Visit, class Limit>
+void traverse(const scene3& scene, const node_slabs<S>& sl, Visit&& visit, Limit&& limit) {
+    if (sl.fast()) traverse_with<true>(scene, sl, visit, limit);
+    else traverse_with<false>(scene, sl, visit, limit);
+}
+
+// An upper bound of an end's parameter (infinity where its enclosure is not finite).
+double upper_bound(const contact_end& e, const linear3& s) {
+    if (e.kind == end_kind::domain) return e.bound;
+    const double hi = with_ratio(e, s, [](const auto& t) { return arith::enclosed_value(t); }).hi;
+    return hi == hi ? hi : inf;
+}
+
+// The first contact in kernel K: the least end over the triangles, ties to the least source index.
+template <class K, class S>
+std::optional<scene_hit<arith::value_t<K>>> first_contact(K& k, const S& x, const scene3& scene) {
+    const linear3 s = as_linear(x);
+    const node_slabs<S> sl(x, s, scene);
+    const auto triangles = scene.triangles();
+    const aabb3 xb = bounds(x);
+    std::optional<contact_end> first;
+    std::uint32_t best = 0;
+    double limit = inf;
+    traverse(
+        scene, sl,
+        [&](std::uint32_t i) {
+            if (!boxes_meet(xb, bounds(triangles[i]))) return true; // the scalar pair's first step (comparisons)
+            if (const auto r = triangle_span(k, s, triangles[i])) {
+                const sign c = first ? compare_ends(k, r->enter, *first, s) : sign::negative;
+                if (c == sign::negative || (c == sign::zero && scene.source(i) < scene.source(best))) {
+                    first = r->enter;
+                    best = i;
+                    limit = upper_bound(*first, s);
+                }
+            }
+            return true;
+        },
+        [&] { return limit; });
+    if (!first) return std::nullopt;
+    const auto h = triangle_values(k, *first, s, triangles[best]);
+    return scene_hit<arith::value_t<K>>{h.t, h.point, h.normal, h.u, h.v, h.w, scene.source(best)};
+}
+
+} // namespace
+
+template <class Tier, class S>
+bool scene_any_hit(const S& x, const scene3& scene) {
+    if (scene.empty() || !finite(x)) return false;
+    const node_slabs<S> sl(x, as_linear(x), scene);
+    const auto triangles = scene.triangles();
+    bool met = false;
+    traverse(
+        scene, sl,
+        [&](std::uint32_t i) {
+            met = incidence::intersects<Tier>(x, triangles[i]);
+            return !met;
+        },
+        [] { return inf; });
+    return met;
+}
+
+template <class Tier, class S>
+std::optional<scene_hit<scene_value_t<Tier>>> scene_first_hit(const S& x, const scene3& scene) {
+    if (scene.empty() || !finite(x)) return std::nullopt;
+    if constexpr (std::is_same_v<Tier, approximate>) {
+        arith::approx_kernel k;
+        auto h = first_contact(k, x, scene);
+        if (h) h->exists = certainty::uncertain;
+        return h;
+    } else {
+        std::conditional_t<std::is_same_v<Tier, exact>, arith::rounding_kernel<deciding_kernel>, deciding_kernel> k;
+        const auto h = first_contact(k, x, scene);
+        if (!k.failed()) return h;
+        // Not reached for finite inputs (the exact stages decide every sign); the exact kernel, or
+        // for an interval tier no hit that it could vouch for, as a filter pass left open says.
+        if constexpr (std::is_same_v<Tier, exact>) {
+            arith::exact_kernel e;
+            const auto he = first_contact(e, x, scene);
+            return e.valid ? he : std::nullopt;
+        } else {
+            return std::nullopt;
+        }
+    }
+}
+
+template bool scene_any_hit<exact, ray3>(const ray3&, const scene3&);
+template bool scene_any_hit<exact, segment3>(const segment3&, const scene3&);
+template bool scene_any_hit<exact, line3>(const line3&, const scene3&);
+template bool scene_any_hit<conservative, ray3>(const ray3&, const scene3&);
+template bool scene_any_hit<conservative, segment3>(const segment3&, const scene3&);
+template bool scene_any_hit<conservative, line3>(const line3&, const scene3&);
+template bool scene_any_hit<aggressive, ray3>(const ray3&, const scene3&);
+template bool scene_any_hit<aggressive, segment3>(const segment3&, const scene3&);
+template bool scene_any_hit<aggressive, line3>(const line3&, const scene3&);
+template bool scene_any_hit<approximate, ray3>(const ray3&, const scene3&);
+template bool scene_any_hit<approximate, segment3>(const segment3&, const scene3&);
+template bool scene_any_hit<approximate, line3>(const line3&, const scene3&);
+template std::optional<scene_hit<double>> scene_first_hit<exact, ray3>(const ray3&, const scene3&);
+template std::optional<scene_hit<double>> scene_first_hit<exact, segment3>(const segment3&, const scene3&);
+template std::optional<scene_hit<double>> scene_first_hit<exact, line3>(const line3&, const scene3&);
+template std::optional<scene_hit<interval>> scene_first_hit<conservative, ray3>(const ray3&, const scene3&);
+template std::optional<scene_hit<interval>> scene_first_hit<conservative, segment3>(const segment3&, const scene3&);
+template std::optional<scene_hit<interval>> scene_first_hit<conservative, line3>(const line3&, const scene3&);
+template std::optional<scene_hit<interval>> scene_first_hit<aggressive, ray3>(const ray3&, const scene3&);
+template std::optional<scene_hit<interval>> scene_first_hit<aggressive, segment3>(const segment3&, const scene3&);
+template std::optional<scene_hit<interval>> scene_first_hit<aggressive, line3>(const line3&, const scene3&);
+template std::optional<scene_hit<double>> scene_first_hit<approximate, ray3>(const ray3&, const scene3&);
+template std::optional<scene_hit<double>> scene_first_hit<approximate, segment3>(const segment3&, const scene3&);
+template std::optional<scene_hit<double>> scene_first_hit<approximate, line3>(const line3&, const scene3&);
+
+} // namespace incidence::detail
