@@ -2,7 +2,12 @@
 // fcl::detail::Intersect<double>::intersect_Triangle, called as FCL's users call them.
 #include "fcl_peer.hpp"
 
+#include <fcl/geometry/bvh/BVH_model.h>
 #include <fcl/math/bv/OBB.h>
+#include <fcl/math/bv/OBBRSS.h>
+#include <fcl/narrowphase/collision.h>
+#include <fcl/narrowphase/collision_object.h>
+#include <memory>
 #include <fcl/narrowphase/detail/traversal/collision/intersect.h>
 
 namespace fcl_peer {
@@ -23,6 +28,42 @@ bool obb_obb(const double ca[3], const double aa[9], const double ha[3], const d
 bool triangle_triangle(const double p1[3], const double p2[3], const double p3[3], const double q1[3], const double q2[3],
                        const double q3[3]) {
     return fcl::detail::Intersect<double>::intersect_Triangle(v(p1), v(p2), v(p3), v(q1), v(q2), v(q3));
+}
+
+struct mesh_pair::impl {
+    std::shared_ptr<fcl::BVHModel<fcl::OBBRSS<double>>> a, b;
+};
+
+namespace {
+std::shared_ptr<fcl::BVHModel<fcl::OBBRSS<double>>> model(const double* v, std::size_t nv, const std::uint32_t* t, std::size_t nt) {
+    std::vector<fcl::Vector3<double>> points;
+    std::vector<fcl::Triangle> triangles;
+    for (std::size_t i = 0; i < nv; ++i) points.emplace_back(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
+    for (std::size_t i = 0; i < nt; ++i) triangles.emplace_back(t[3 * i], t[3 * i + 1], t[3 * i + 2]);
+    auto m = std::make_shared<fcl::BVHModel<fcl::OBBRSS<double>>>();
+    m->beginModel();
+    m->addSubModel(points, triangles);
+    m->endModel();
+    return m;
+}
+} // namespace
+
+mesh_pair::mesh_pair(const double* va, std::size_t nva, const std::uint32_t* ta, std::size_t nta, const double* vb, std::size_t nvb,
+                     const std::uint32_t* tb, std::size_t ntb)
+    : p_(new impl{model(va, nva, ta, nta), model(vb, nvb, tb, ntb)}) {}
+mesh_pair::~mesh_pair() { delete p_; }
+
+std::vector<std::pair<std::size_t, std::size_t>> mesh_pair::contacts() const {
+    const fcl::CollisionObject<double> a(p_->a), b(p_->b);
+    const fcl::CollisionRequest<double> request(100000000, false);
+    fcl::CollisionResult<double> result;
+    fcl::collide(&a, &b, request, result);
+    std::vector<std::pair<std::size_t, std::size_t>> out;
+    for (std::size_t i = 0; i < result.numContacts(); ++i) {
+        const auto& c = result.getContact(i);
+        out.push_back({static_cast<std::size_t>(c.b1), static_cast<std::size_t>(c.b2)});
+    }
+    return out;
 }
 
 } // namespace fcl_peer

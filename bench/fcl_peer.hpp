@@ -1,10 +1,32 @@
 // FCL's OBB-OBB and triangle-triangle tests (plain double), a peer in the benchmarks only. Its own
 // translation unit: FCL's and Eigen's headers never meet `import incidence;`.
 #pragma once
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
 
 namespace fcl_peer {
 // Box: centre c, axes a[0..2] (a[3 * i + k]: component k of axis i), half extents h.
 bool obb_obb(const double ca[3], const double aa[9], const double ha[3], const double cb[3], const double ab[9], const double hb[3]);
 bool triangle_triangle(const double p1[3], const double p2[3], const double p3[3], const double q1[3], const double q2[3],
                        const double q3[3]);
+
+// Two triangle meshes (vertices as x, y, z triples, triangles as three indices), each an FCL
+// BVHModel<OBBRSS> built once: fcl::collide with every contact asked for (enable_contact off), as a
+// user lists the touching triangle pairs of two meshes.
+class mesh_pair {
+public:
+    mesh_pair(const double* va, std::size_t nva, const std::uint32_t* ta, std::size_t nta, const double* vb, std::size_t nvb,
+              const std::uint32_t* tb, std::size_t ntb);
+    ~mesh_pair();
+    mesh_pair(const mesh_pair&) = delete;
+    mesh_pair& operator=(const mesh_pair&) = delete;
+    // The pairs (triangle of a, triangle of b) FCL reports in contact.
+    [[nodiscard]] std::vector<std::pair<std::size_t, std::size_t>> contacts() const;
+
+private:
+    struct impl;
+    impl* p_;
+};
 } // namespace fcl_peer

@@ -4,12 +4,17 @@
 // and the exact first hit: the least correctly
 // rounded parameter of the scalar intersection<exact>(x, triangle), with that triangle's values bit
 // for bit; the interval tiers name the same triangle, and their t is within an ulp of the exact tier's.
+// solid_scene_contracts: a solid against the scene, and the scene against a second scene of two
+// triangles, as sets of triangles (pairs) met, against the brute force in the same one-sided way.
 // A scene refuses non-finite triangles (make); any other difference aborts. Include after
 // `import incidence;`.
 #pragma once
 #include <cmath>
 #include <cstdlib>
 #include <optional>
+#include <set>
+#include <type_traits>
+#include <utility>
 #include <span>
 #include <vector>
 
@@ -64,4 +69,65 @@ void scene_contracts(const S& x, std::span<const incidence::triangle3> ts) {
     const double below = std::nextafter(h->t, -INFINITY), above = std::nextafter(h->t, INFINITY);
     for (const auto& hi : {intersection<conservative>(x, sc), intersection<aggressive>(sc, x)})
         if (!hi || hi->triangle != h->triangle || hi->exists != certainty::yes || !(hi->t.lo <= above && below <= hi->t.hi)) std::abort();
+}
+
+// The set a tier lists against the brute force's: exact and aggressive equal, conservative between the
+// exact set and the brute force's, approximate within the brute force's.
+template <class Tier, class T>
+void set_contract(const std::set<T>& listed, const std::set<T>& brute, const std::set<T>& truth) {
+    for (const T& x : listed)
+        if (!brute.contains(x)) std::abort();
+    if constexpr (std::is_same_v<Tier, incidence::exact> || std::is_same_v<Tier, incidence::aggressive>)
+        if (listed != brute) std::abort();
+    if constexpr (std::is_same_v<Tier, incidence::conservative>)
+        for (const T& x : truth)
+            if (!listed.contains(x)) std::abort();
+}
+
+template <class Tier, class S>
+void solid_scene_tier(const S& shape, const incidence::scene3& sc, std::span<const incidence::triangle3> ts,
+                      const std::set<std::size_t>& truth) {
+    std::set<std::size_t> brute;
+    for (std::size_t i = 0; i < ts.size(); ++i)
+        if (incidence::intersects<Tier>(shape, ts[i])) brute.insert(i);
+    std::vector<std::size_t> out;
+    const std::size_t n = incidence::intersecting<Tier>(shape, sc, out);
+    const std::set<std::size_t> listed(out.begin(), out.end());
+    if (n != out.size() || listed.size() != n || incidence::intersects<Tier>(shape, sc) != (n > 0)) std::abort();
+    set_contract<Tier>(listed, brute, truth);
+}
+template <class Tier>
+void scene_pairs_tier(const incidence::scene3& a, const incidence::scene3& b, std::span<const incidence::triangle3> ta,
+                      std::span<const incidence::triangle3> tb, const std::set<std::pair<std::size_t, std::size_t>>& truth) {
+    std::set<std::pair<std::size_t, std::size_t>> brute;
+    for (std::size_t i = 0; i < ta.size(); ++i)
+        for (std::size_t j = 0; j < tb.size(); ++j)
+            if (incidence::intersects<Tier>(ta[i], tb[j])) brute.insert({i, j});
+    std::vector<std::pair<std::size_t, std::size_t>> out;
+    const std::size_t n = incidence::intersecting<Tier>(a, b, out);
+    const std::set<std::pair<std::size_t, std::size_t>> listed(out.begin(), out.end());
+    if (n != out.size() || listed.size() != n || incidence::intersects<Tier>(a, b) != (n > 0)) std::abort();
+    set_contract<Tier>(listed, brute, truth);
+}
+
+template <class S>
+void solid_scene_contracts(const S& shape, std::span<const incidence::triangle3> ts, std::span<const incidence::triangle3> others) {
+    using namespace incidence;
+    const auto made = scene3::make(ts), other = scene3::make(others);
+    if (!made || !other) return; // non-finite: scene_contracts checks the refusal
+    std::set<std::size_t> truth;
+    for (std::size_t i = 0; i < ts.size(); ++i)
+        if (intersects<exact>(shape, ts[i])) truth.insert(i);
+    solid_scene_tier<exact>(shape, made.value(), ts, truth);
+    solid_scene_tier<conservative>(shape, made.value(), ts, truth);
+    solid_scene_tier<aggressive>(shape, made.value(), ts, truth);
+    solid_scene_tier<approximate>(shape, made.value(), ts, truth);
+    std::set<std::pair<std::size_t, std::size_t>> pairs;
+    for (std::size_t i = 0; i < ts.size(); ++i)
+        for (std::size_t j = 0; j < others.size(); ++j)
+            if (intersects<exact>(ts[i], others[j])) pairs.insert({i, j});
+    scene_pairs_tier<exact>(made.value(), other.value(), ts, others, pairs);
+    scene_pairs_tier<conservative>(made.value(), other.value(), ts, others, pairs);
+    scene_pairs_tier<aggressive>(made.value(), other.value(), ts, others, pairs);
+    scene_pairs_tier<approximate>(made.value(), other.value(), ts, others, pairs);
 }

@@ -56,7 +56,7 @@ using scene_value_t = std::conditional_t<std::is_same_v<Tier, conservative> || s
 } // namespace incidence
 
 namespace incidence::detail {
-// Compiled once in the library (linear_scene.cpp), for each tier and linear shape.
+// Compiled once in the library (traversal.cpp), for each tier and linear shape.
 template <class Tier, class S>
 [[nodiscard]] bool scene_any_hit(const S& x, const scene3& s);
 template <class Tier, class S>

@@ -20,10 +20,15 @@ import incidence;
 #include "testkit/testing.hpp"
 #include "testkit/linear_objects.hpp"
 #include "testkit/point_sets.hpp"
+#include "testkit/scene_cases.hpp"
 
 namespace test_scene_linear_scene { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 
 using namespace incidence;
+using support::box_of;
+using support::grid;
+using support::make_grid;
+using support::random_soup;
 
 namespace {
 
@@ -52,11 +57,6 @@ oracle::mesh_data soup_data(const std::vector<triangle3>& ts) {
         m.t.push_back({n, n + 1, n + 2});
     }
     return m;
-}
-
-aabb3 box_of(const triangle3& t) {
-    return {{std::min({t.a.x, t.b.x, t.c.x}), std::min({t.a.y, t.b.y, t.c.y}), std::min({t.a.z, t.b.z, t.c.z})},
-            {std::max({t.a.x, t.b.x, t.c.x}), std::max({t.a.y, t.b.y, t.c.y}), std::max({t.a.z, t.b.z, t.c.z})}};
 }
 
 // Yes/no: exact and aggressive as the brute force (an aggressive yes is certain, so the triangles the
@@ -192,48 +192,6 @@ void each_kind(support::rng& r, point3 o, point3 p, F&& f) {
     case 1: f(segment3{o, r.coin() ? p : point3{p.x + d.x, p.y + d.y, p.z + d.z}}); break;
     default: f(line3{o, d}); break;
     }
-}
-
-// Random triangles, large ones crossing each other or small ones spread out, at one random scale.
-std::vector<triangle3> random_soup(support::rng& r, support::transform& tr, int n) {
-    std::vector<triangle3> ts;
-    const bool small = r.coin();
-    for (int i = 0; i < n; ++i) {
-        const double cx = r.uniform(-1, 1), cy = r.uniform(-1, 1), cz = r.uniform(-1, 1), s = small ? 0.1 : 1.0;
-        auto p = [&] {
-            return point3{tr.apply(cx * (1 - s) + s * r.uniform(-1, 1), 0), tr.apply(cy * (1 - s) + s * r.uniform(-1, 1), 1),
-                          tr.apply(cz * (1 - s) + s * r.uniform(-1, 1), 2)};
-        };
-        ts.push_back({p(), p(), p()});
-    }
-    return ts;
-}
-
-// Two stacked grids (z = 0 and z = 1, cells of side 1 from -4 to 4 split along a diagonal), some
-// triangles repeated (exact ties) or made collinear; axes permuted, then scaled, moved and nudged.
-struct grid {
-    std::vector<triangle3> ts;
-    support::transform tr;
-    int perm;
-    point3 at(double x, double y, double z) const {
-        const double q[3][3] = {{x, y, z}, {z, x, y}, {y, z, x}};
-        return {tr.apply(q[perm][0], 0), tr.apply(q[perm][1], 1), tr.apply(q[perm][2], 2)};
-    }
-};
-grid make_grid(support::rng& r) {
-    grid g{{}, support::random_transform(r, r.coin()), r.integer(0, 2)};
-    for (int z = 0; z < 2; ++z)
-        for (int i = -4; i < 4; ++i)
-            for (int j = -4; j < 4; ++j) {
-                g.ts.push_back({g.at(i, j, z), g.at(i + 1, j, z), g.at(i + 1, j + 1, z)});
-                g.ts.push_back({g.at(i, j, z), g.at(i + 1, j + 1, z), g.at(i, j + 1, z)});
-            }
-    for (int k = 0; k < 6; ++k) g.ts.push_back(g.ts[static_cast<std::size_t>(r.integer(0, static_cast<int>(g.ts.size()) - 1))]);
-    for (int k = 0; k < 4; ++k) {
-        const double x = r.integer(-4, 4), y = r.integer(-4, 4);
-        g.ts.push_back({g.at(x, y, 0), g.at(x + 1, y + 1, 0), g.at(x + 2, y + 2, 0)});
-    }
-    return g;
 }
 
 // An object aimed exactly at a grid vertex, an edge point or a cell, or lying in a grid's plane.

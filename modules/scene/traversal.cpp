@@ -1,5 +1,6 @@
-// A line, a ray or a segment against a scene3: the traversals (see linear_scene.cppm for the
-// semantics, the method and its sources).
+// The traversals of a scene3: a line, a ray or a segment against it (linear_scene.cppm), a solid
+// against it and every triangle a shape meets (solid_scene.cppm), a scene against a scene
+// (scene_scene.cppm); see those for the semantics, the methods and their sources.
 module;
 #include <algorithm>
 #include <cmath>
@@ -7,6 +8,8 @@ module;
 #include <cstdint>
 #include <optional>
 #include <type_traits>
+#include <utility>
+#include <vector>
 module incidence.scene;
 import incidence.core;
 import incidence.arith;
@@ -226,29 +229,135 @@ std::optional<scene_hit<scene_value_t<Tier>>> scene_first_hit(const S& x, const 
     }
 }
 
-template bool scene_any_hit<exact, ray3>(const ray3&, const scene3&);
-template bool scene_any_hit<exact, segment3>(const segment3&, const scene3&);
-template bool scene_any_hit<exact, line3>(const line3&, const scene3&);
-template bool scene_any_hit<conservative, ray3>(const ray3&, const scene3&);
-template bool scene_any_hit<conservative, segment3>(const segment3&, const scene3&);
-template bool scene_any_hit<conservative, line3>(const line3&, const scene3&);
-template bool scene_any_hit<aggressive, ray3>(const ray3&, const scene3&);
-template bool scene_any_hit<aggressive, segment3>(const segment3&, const scene3&);
-template bool scene_any_hit<aggressive, line3>(const line3&, const scene3&);
-template bool scene_any_hit<approximate, ray3>(const ray3&, const scene3&);
-template bool scene_any_hit<approximate, segment3>(const segment3&, const scene3&);
-template bool scene_any_hit<approximate, line3>(const line3&, const scene3&);
-template std::optional<scene_hit<double>> scene_first_hit<exact, ray3>(const ray3&, const scene3&);
-template std::optional<scene_hit<double>> scene_first_hit<exact, segment3>(const segment3&, const scene3&);
-template std::optional<scene_hit<double>> scene_first_hit<exact, line3>(const line3&, const scene3&);
-template std::optional<scene_hit<interval>> scene_first_hit<conservative, ray3>(const ray3&, const scene3&);
-template std::optional<scene_hit<interval>> scene_first_hit<conservative, segment3>(const segment3&, const scene3&);
-template std::optional<scene_hit<interval>> scene_first_hit<conservative, line3>(const line3&, const scene3&);
-template std::optional<scene_hit<interval>> scene_first_hit<aggressive, ray3>(const ray3&, const scene3&);
-template std::optional<scene_hit<interval>> scene_first_hit<aggressive, segment3>(const segment3&, const scene3&);
-template std::optional<scene_hit<interval>> scene_first_hit<aggressive, line3>(const line3&, const scene3&);
-template std::optional<scene_hit<double>> scene_first_hit<approximate, ray3>(const ray3&, const scene3&);
-template std::optional<scene_hit<double>> scene_first_hit<approximate, segment3>(const segment3&, const scene3&);
-template std::optional<scene_hit<double>> scene_first_hit<approximate, line3>(const line3&, const scene3&);
+namespace {
+
+// s's box: exact for the shapes with vertices, rounded outward for the oriented box.
+aabb3 box_around(const aabb3& b) { return b; }
+aabb3 box_around(const triangle3& t) { return bounds(t); }
+aabb3 box_around(const tetrahedron3& t) { return bounds(t); }
+aabb3 box_around(const obb3& s) {
+    const interval3 r = reach_of(s);
+    return {{r.x.lo, r.y.lo, r.z.lo}, {r.x.hi, r.y.hi, r.z.hi}};
+}
+
+template <class S>
+bool finite_shape(const S& s) {
+    if constexpr (std::is_same_v<S, aabb3>) return finite(s.min) && finite(s.max);
+    else if constexpr (std::is_same_v<S, obb3>)
+        return finite(s.center) && finite(s.axes[0]) && finite(s.axes[1]) && finite(s.axes[2]) && finite(s.half_extents[0]) &&
+               finite(s.half_extents[1]) && finite(s.half_extents[2]);
+    else return finite(s);
+}
+
+// Visits the triangles of the leaves whose boxes meet `box`; visit(i) returns false to stop.
+template <class Visit>
+void overlapping(const scene3& scene, const aabb3& box, Visit&& visit) {
+    const auto nodes = scene.nodes();
+    std::uint32_t stack[2 * scene3::max_depth + 4];
+    int top = 0;
+    if (boxes_meet(nodes[0].box, box)) stack[top++] = 0;
+    while (top > 0) {
+        const scene3::node& n = nodes[stack[--top]];
+        if (n.leaf()) {
+            for (std::uint32_t i = n.first; i < n.first + n.count; ++i)
+                if (!visit(i)) return;
+            continue;
+        }
+        if (boxes_meet(nodes[n.first + 1].box, box)) stack[top++] = n.first + 1;
+        if (boxes_meet(nodes[n.first].box, box)) stack[top++] = n.first;
+    }
+}
+
+} // namespace
+
+template <class Tier, class S>
+bool scene_solid_any(const S& s, const scene3& scene) {
+    if (scene.empty() || !finite_shape(s)) return false;
+    const auto triangles = scene.triangles();
+    bool met = false;
+    overlapping(scene, box_around(s), [&](std::uint32_t i) {
+        met = incidence::intersects<Tier>(s, triangles[i]);
+        return !met;
+    });
+    return met;
+}
+
+template <class Tier, class S>
+std::size_t scene_every_hit(const S& s, const scene3& scene, std::vector<std::size_t>& out) {
+    if (scene.empty() || !finite_shape(s)) return 0;
+    const auto triangles = scene.triangles();
+    std::size_t met = 0;
+    auto visit = [&](std::uint32_t i) {
+        if (incidence::intersects<Tier>(s, triangles[i])) out.push_back(scene.source(i)), ++met;
+        return true;
+    };
+    if constexpr (scene_linear<S>) {
+        const node_slabs<S> sl(s, as_linear(s), scene);
+        traverse(scene, sl, visit, [] { return inf; });
+    } else {
+        overlapping(scene, box_around(s), visit);
+    }
+    return met;
+}
+
+// Every pair of triangles whose leaves' boxes meet: out == nullptr stops at the first pair met.
+template <class Tier>
+bool scene_pairs(const scene3& a, const scene3& b, std::vector<std::pair<std::size_t, std::size_t>>* out, std::size_t& met) {
+    met = 0;
+    if (a.empty() || b.empty()) return false;
+    const auto na = a.nodes(), nb = b.nodes();
+    const auto ta = a.triangles(), tb = b.triangles();
+    auto size = [](const aabb3& x) { return (x.max.x / 2 - x.min.x / 2) + (x.max.y / 2 - x.min.y / 2) + (x.max.z / 2 - x.min.z / 2); };
+    std::pair<std::uint32_t, std::uint32_t> stack[4 * scene3::max_depth + 8];
+    int top = 0;
+    if (boxes_meet(na[0].box, nb[0].box)) stack[top++] = {0, 0};
+    while (top > 0) {
+        const auto [i, j] = stack[--top];
+        const scene3::node &x = na[i], &y = nb[j];
+        if (x.leaf() && y.leaf()) {
+            for (std::uint32_t p = x.first; p < x.first + x.count; ++p)
+                for (std::uint32_t q = y.first; q < y.first + y.count; ++q) {
+                    if (!boxes_meet(bounds(ta[p]), bounds(tb[q])) || !incidence::intersects<Tier>(ta[p], tb[q])) continue;
+                    ++met;
+                    if (out == nullptr) return true;
+                    out->push_back({a.source(p), b.source(q)});
+                }
+            continue;
+        }
+        if (!x.leaf() && (y.leaf() || size(x.box) >= size(y.box))) { // descend a
+            for (std::uint32_t c = x.first + 2; c-- > x.first;)
+                if (boxes_meet(na[c].box, y.box)) stack[top++] = {c, j};
+        } else { // descend b
+            for (std::uint32_t c = y.first + 2; c-- > y.first;)
+                if (boxes_meet(x.box, nb[c].box)) stack[top++] = {i, c};
+        }
+    }
+    return met > 0;
+}
+
+// The instances the front doors (linear_scene.cppm, solid_scene.cppm) declare: every tier, every shape.
+#define INCIDENCE_SCENE_LINEAR(TIER, S)                                                                                                    \
+    template bool scene_any_hit<TIER, S>(const S&, const scene3&);                                                                         \
+    template std::optional<scene_hit<scene_value_t<TIER>>> scene_first_hit<TIER, S>(const S&, const scene3&);                              \
+    template std::size_t scene_every_hit<TIER, S>(const S&, const scene3&, std::vector<std::size_t>&);
+#define INCIDENCE_SCENE_SOLID(TIER, S)                                                                                                     \
+    template bool scene_solid_any<TIER, S>(const S&, const scene3&);                                                                       \
+    template std::size_t scene_every_hit<TIER, S>(const S&, const scene3&, std::vector<std::size_t>&);
+#define INCIDENCE_SCENE_TIER(TIER)                                                                                                         \
+    template bool scene_pairs<TIER>(const scene3&, const scene3&, std::vector<std::pair<std::size_t, std::size_t>>*, std::size_t&);        \
+    INCIDENCE_SCENE_LINEAR(TIER, ray3)                                                                                                     \
+    INCIDENCE_SCENE_LINEAR(TIER, segment3)                                                                                                 \
+    INCIDENCE_SCENE_LINEAR(TIER, line3)                                                                                                    \
+    INCIDENCE_SCENE_SOLID(TIER, aabb3)                                                                                                     \
+    INCIDENCE_SCENE_SOLID(TIER, obb3)                                                                                                      \
+    INCIDENCE_SCENE_SOLID(TIER, triangle3)                                                                                                 \
+    INCIDENCE_SCENE_SOLID(TIER, tetrahedron3)
+INCIDENCE_SCENE_TIER(exact)
+INCIDENCE_SCENE_TIER(conservative)
+INCIDENCE_SCENE_TIER(aggressive)
+INCIDENCE_SCENE_TIER(approximate)
+#undef INCIDENCE_SCENE_TIER
+#undef INCIDENCE_SCENE_SOLID
+#undef INCIDENCE_SCENE_LINEAR
 
 } // namespace incidence::detail
