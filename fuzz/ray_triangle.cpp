@@ -6,10 +6,7 @@
 // (NaN, infinities, subnormals, zero directions, degenerate triangles). And the batch: the ray
 // against nine triangles from the same bytes (t, u, t's vertices permuted, t's edges with other
 // apexes, doubles 18..31), on a SIMD target the first byte picks, every lane equal to the scalar
-// answer in every tier; and the same nine triangles as a scene3, the ray, the segment, the box and
-// a tetrahedron (doubles 18..29) against it, and it against a scene of t and u (fuzz/scenes.hpp:
-// the brute force over the nine; the ray and the box where the second byte is 0 mod 16, the
-// segment and the tetrahedron where it is 8). Any finding aborts.
+// answer in every tier. Any finding aborts.
 #include "testkit/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <cmath>
@@ -19,7 +16,6 @@
 import incidence;
 #include "contracts.hpp"
 #include "batches.hpp"
-#include "scenes.hpp"
 
 using namespace incidence;
 
@@ -42,18 +38,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                  {r.origin, q, t.c},
                                  {{v[30], v[31], v[0]}, t.a, w}};
         batch_contracts(r, std::span<const triangle3>(ts), size > 0 ? data[0] : 0);
-        // The scenes on an eighth of the inputs, half of the checks each (the brute force they are
-        // checked against is the slow part at -O0): by the second byte.
-        const triangle3 pair[2] = {t, u};
-        const int pick = size > 1 ? data[1] % 16 : 1;
-        if (pick == 0) {
-            scene_contracts(r, std::span<const triangle3>(ts));
-            solid_scene_contracts(aabb3{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}}, std::span<const triangle3>(ts),
-                                  std::span<const triangle3>(pair));
-        } else if (pick == 8) {
-            scene_contracts(s, std::span<const triangle3>(ts));
-            solid_scene_contracts(tetrahedron3{p, q, w, x}, std::span<const triangle3>(ts), std::span<const triangle3>(pair));
-        }
     }
     // Every tier and every find must finish on any bits.
     (void)intersects<approximate>(r, t);
