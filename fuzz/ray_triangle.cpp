@@ -26,19 +26,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const segment3 s{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
     const triangle3 t{{v[6], v[7], v[8]}, {v[9], v[10], v[11]}, {v[12], v[13], v[14]}};
     const triangle3 u{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}, {v[15], v[16], v[17]}};
-    {
-        const point3 p{v[18], v[19], v[20]}, q{v[21], v[22], v[23]}, w{v[24], v[25], v[26]}, x{v[27], v[28], v[29]};
-        const triangle3 ts[9] = {t,
-                                 u,
-                                 {t.b, t.c, t.a},
-                                 {t.a, t.c, t.b},
-                                 {p, q, w},
-                                 {t.a, t.b, x},
-                                 {t.b, t.c, p},
-                                 {r.origin, q, t.c},
-                                 {{v[30], v[31], v[0]}, t.a, w}};
-        batch_contracts(r, std::span<const triangle3>(ts), size > 0 ? data[0] : 0);
-    }
+    const auto ts = nine_triangles(v);
+    batch_contracts(r, std::span<const triangle3>(ts), size > 0 ? data[0] : 0);
     // Every tier and every find must finish on any bits.
     (void)intersects<approximate>(r, t);
     (void)intersects<conservative>(r, t);

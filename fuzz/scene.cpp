@@ -11,6 +11,7 @@
 #include <cstring>
 #include <span>
 import incidence;
+#include "batches.hpp"
 #include "scenes.hpp"
 
 using namespace incidence;
@@ -20,18 +21,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::memcpy(v, data, size < sizeof v ? size : sizeof v);
     const ray3 r{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
     const segment3 s{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
-    const triangle3 t{{v[6], v[7], v[8]}, {v[9], v[10], v[11]}, {v[12], v[13], v[14]}};
-    const triangle3 u{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}, {v[15], v[16], v[17]}};
+    const auto ts = nine_triangles(v);
+    const triangle3 &t = ts[0], &u = ts[1];
     const point3 p{v[18], v[19], v[20]}, q{v[21], v[22], v[23]}, w{v[24], v[25], v[26]}, x{v[27], v[28], v[29]};
-    const triangle3 ts[9] = {t,
-                             u,
-                             {t.b, t.c, t.a},
-                             {t.a, t.c, t.b},
-                             {p, q, w},
-                             {t.a, t.b, x},
-                             {t.b, t.c, p},
-                             {r.origin, q, t.c},
-                             {{v[30], v[31], v[0]}, t.a, w}};
     const triangle3 pair[2] = {t, u};
     scene_contracts(r, std::span<const triangle3>(ts));
     scene_contracts(s, std::span<const triangle3>(ts));

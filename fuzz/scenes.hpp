@@ -17,6 +17,7 @@
 #include <utility>
 #include <span>
 #include <vector>
+#include "testkit/scene_cases.hpp"
 
 template <class Tier, class S>
 bool brute_any(const S& x, std::span<const incidence::triangle3> ts) {
@@ -71,19 +72,6 @@ void scene_contracts(const S& x, std::span<const incidence::triangle3> ts) {
         if (!hi || hi->triangle != h->triangle || hi->exists != certainty::yes || !(hi->t.lo <= above && below <= hi->t.hi)) std::abort();
 }
 
-// The set a tier lists against the brute force's: exact and aggressive equal, conservative between the
-// exact set and the brute force's, approximate within the brute force's.
-template <class Tier, class T>
-void set_contract(const std::set<T>& listed, const std::set<T>& brute, const std::set<T>& truth) {
-    for (const T& x : listed)
-        if (!brute.contains(x)) std::abort();
-    if constexpr (std::is_same_v<Tier, incidence::exact> || std::is_same_v<Tier, incidence::aggressive>)
-        if (listed != brute) std::abort();
-    if constexpr (std::is_same_v<Tier, incidence::conservative>)
-        for (const T& x : truth)
-            if (!listed.contains(x)) std::abort();
-}
-
 template <class Tier, class S>
 void solid_scene_tier(const S& shape, const incidence::scene3& sc, std::span<const incidence::triangle3> ts,
                       const std::set<std::size_t>& truth) {
@@ -94,7 +82,7 @@ void solid_scene_tier(const S& shape, const incidence::scene3& sc, std::span<con
     const std::size_t n = incidence::intersecting<Tier>(shape, sc, out);
     const std::set<std::size_t> listed(out.begin(), out.end());
     if (n != out.size() || listed.size() != n || incidence::intersects<Tier>(shape, sc) != (n > 0)) std::abort();
-    set_contract<Tier>(listed, brute, truth);
+    if (!support::set_contract<Tier>(listed, brute, truth, {})) std::abort();
 }
 template <class Tier>
 void scene_pairs_tier(const incidence::scene3& a, const incidence::scene3& b, std::span<const incidence::triangle3> ta,
@@ -107,7 +95,7 @@ void scene_pairs_tier(const incidence::scene3& a, const incidence::scene3& b, st
     const std::size_t n = incidence::intersecting<Tier>(a, b, out);
     const std::set<std::pair<std::size_t, std::size_t>> listed(out.begin(), out.end());
     if (n != out.size() || listed.size() != n || incidence::intersects<Tier>(a, b) != (n > 0)) std::abort();
-    set_contract<Tier>(listed, brute, truth);
+    if (!support::set_contract<Tier>(listed, brute, truth, {})) std::abort();
 }
 
 template <class S>

@@ -1,8 +1,11 @@
 // Triangle sets for the scene tests (tests/scene/): random soups at one random scale, and grids
-// that objects pass exactly through vertices and edges. Include after `import incidence;` and
-// testing.hpp.
+// that objects pass exactly through vertices and edges; the set contract the scene tests and the
+// scene harness check. Include after `import incidence;`.
 #pragma once
+#include "testing.hpp"
 #include <algorithm>
+#include <set>
+#include <type_traits>
 #include <vector>
 
 namespace support {
@@ -14,6 +17,23 @@ using incidence::triangle3;
 inline aabb3 box_of(const triangle3& t) {
     return {{std::min({t.a.x, t.b.x, t.c.x}), std::min({t.a.y, t.b.y, t.c.y}), std::min({t.a.z, t.b.z, t.c.z})},
             {std::max({t.a.x, t.b.x, t.c.x}), std::max({t.a.y, t.b.y, t.c.y}), std::max({t.a.z, t.b.z, t.c.z})}};
+}
+
+inline bool boxes_meet(const aabb3& a, const aabb3& b) {
+    return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y && a.min.z <= b.max.z && b.min.z <= a.max.z;
+}
+
+// Whether the set a tier lists against a scene (triangles, or pairs of them) keeps its promise: in
+// the brute force's set (the scalar tier over everything), equal to it in the exact and aggressive
+// tiers, holding the exact set (truth) in the conservative tier, and in the approximate tier
+// holding `near` (the plain-double hits whose boxes meet, which the hierarchy never rules out).
+template <class Tier, class T>
+bool set_contract(const std::set<T>& listed, const std::set<T>& brute, const std::set<T>& truth, const std::set<T>& near) {
+    auto within = [](const std::set<T>& a, const std::set<T>& b) { return std::includes(b.begin(), b.end(), a.begin(), a.end()); };
+    if (!within(listed, brute)) return false;
+    if constexpr (std::is_same_v<Tier, incidence::exact> || std::is_same_v<Tier, incidence::aggressive>) return listed == brute;
+    else if constexpr (std::is_same_v<Tier, incidence::conservative>) return within(truth, listed);
+    else return within(near, listed);
 }
 
 // Random triangles, large ones crossing each other or small ones spread out, at one random scale.

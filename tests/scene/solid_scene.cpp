@@ -45,11 +45,7 @@ bool boxes_may_meet(const S& s, const triangle3& t) {
              {std::max(a.max.x, s.d.x), std::max(a.max.y, s.d.y), std::max(a.max.z, s.d.z)}};
     if constexpr (std::is_same_v<S, ray3> || std::is_same_v<S, segment3> || std::is_same_v<S, line3>)
         return intersects<exact>(s, support::box_of(t));
-    else {
-        const aabb3 b = support::box_of(t);
-        return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y && a.min.z <= b.max.z &&
-               b.min.z <= a.max.z;
-    }
+    else return support::boxes_meet(a, support::box_of(t));
 }
 
 // One tier: the set intersecting lists and the yes/no answer, against the brute force's set.
@@ -64,15 +60,8 @@ void check_tier(const std::vector<triangle3>& ts, const scene3& sc, const S& s, 
     std::vector<std::size_t> out{99};
     const std::size_t n = intersecting<Tier>(s, sc, out);
     const std::set<std::size_t> listed(out.begin() + 1, out.end());
-    bool ok = out.front() == 99 && n == out.size() - 1 && listed.size() == n;
-    const bool subset = std::includes(brute.begin(), brute.end(), listed.begin(), listed.end());
-    if constexpr (std::is_same_v<Tier, exact> || std::is_same_v<Tier, aggressive>) ok = ok && listed == brute;
-    else if constexpr (std::is_same_v<Tier, conservative>)
-        ok = ok && subset && std::includes(listed.begin(), listed.end(), truth.begin(), truth.end());
-    else {
-        ok = ok && subset && std::includes(listed.begin(), listed.end(), near.begin(), near.end());
-        c.approximate_other += listed != brute;
-    }
+    bool ok = out.front() == 99 && n == out.size() - 1 && listed.size() == n && support::set_contract<Tier>(listed, brute, truth, near);
+    if constexpr (std::is_same_v<Tier, approximate>) c.approximate_other += listed != brute;
     if constexpr (!(std::is_same_v<S, ray3> || std::is_same_v<S, segment3> || std::is_same_v<S, line3>)) {
         const bool any = intersects<Tier>(s, sc);
         ok = ok && any == intersects<Tier>(sc, s) && any == !listed.empty();
