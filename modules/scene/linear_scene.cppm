@@ -41,9 +41,9 @@ template <class V = double>
 struct scene_hit {
     V t;
     point_of<V> point;
-    vec_of<V> normal; // of the triangle hit, (b - a) x (c - a)
-    V u, v, w;        // its barycentrics (0 for a degenerate triangle)
-    std::size_t triangle;
+    vec_of<V> normal;     // of the triangle hit, (b - a) x (c - a)
+    V u, v, w;            // its barycentrics (0 for a degenerate triangle)
+    std::size_t triangle; // the caller's index; std::size_t(-1) only in a conservative hit that may exist (exists uncertain)
     certainty exists = certainty::yes;
 };
 

@@ -1,4 +1,4 @@
-// A box, an oriented box, a triangle or a tetrahedron against a scene of triangles
+// A box, an oriented box, a triangle, a tetrahedron or a frustum against a scene of triangles
 // (scene3), either argument order, and every triangle a shape meets:
 // - intersects<Tier>(s, scene): does s meet some triangle? The scalar intersects<Tier>(s, triangle)
 //   of the triangles the hierarchy cannot rule out: in the exact and aggressive tiers the brute
@@ -10,7 +10,8 @@
 //   order; how many. For a line, a ray or a segment as well (linear_scene.cppm's shapes).
 // Method: depth-first traversal; a node is skipped where its box (exact bounds of its vertices)
 // and s's box do not meet, by comparisons: s's box is exact for a box, a triangle and a
-// tetrahedron, rounded outward (interval arithmetic) for an oriented box, so no node
+// tetrahedron, rounded outward (interval arithmetic) for an oriented box; a frustum (culling) is
+// tested against the node's box itself by the conservative tier of the frustum-box pair. So no node
 // whose triangles s meets is skipped (Ericson, Real-Time Collision Detection, 2005, section 6.3.2:
 // a hierarchy's descent by bounding-volume overlap). Non-finite input meets nothing.
 module;
@@ -26,8 +27,8 @@ import :linear_scene;
 export namespace incidence {
 
 template <class S>
-concept scene_solid =
-    std::is_same_v<S, aabb3> || std::is_same_v<S, obb3> || std::is_same_v<S, triangle3> || std::is_same_v<S, tetrahedron3>;
+concept scene_solid = std::is_same_v<S, aabb3> || std::is_same_v<S, obb3> || std::is_same_v<S, triangle3> ||
+                      std::is_same_v<S, tetrahedron3> || std::is_same_v<S, frustum3>;
 
 } // namespace incidence
 

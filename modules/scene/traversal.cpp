@@ -217,12 +217,18 @@ std::optional<scene_hit<scene_value_t<Tier>>> scene_first_hit(const S& x, const 
         std::conditional_t<std::is_same_v<Tier, exact>, arith::rounding_kernel<deciding_kernel>, deciding_kernel> k;
         const auto h = first_contact(k, x, scene);
         if (!k.failed()) return h;
-        // Not reached for finite inputs (the exact stages decide every sign); the exact kernel, or
-        // for an interval tier no hit that it could vouch for, as a filter pass left open says.
+        // Not reached for finite inputs (the exact stages decide every sign). Were it reached: the
+        // exact kernel; for conservative a hit that may exist with every value enclosed whatever it
+        // is (t over the object's range, the triangle unknown), as the scalar pairs say; none for
+        // aggressive.
         if constexpr (std::is_same_v<Tier, exact>) {
             arith::exact_kernel e;
             const auto he = first_contact(e, x, scene);
             return e.valid ? he : std::nullopt;
+        } else if constexpr (std::is_same_v<Tier, conservative>) {
+            constexpr interval unit{0.0, 1.0};
+            return scene_hit<interval>{range_of(as_linear(x)),       everywhere,          everywhere, unit, unit, unit,
+                                       static_cast<std::size_t>(-1), certainty::uncertain};
         } else {
             return std::nullopt;
         }
@@ -246,16 +252,27 @@ bool finite_shape(const S& s) {
     else if constexpr (std::is_same_v<S, obb3>)
         return finite(s.center) && finite(s.axes[0]) && finite(s.axes[1]) && finite(s.axes[2]) && finite(s.half_extents[0]) &&
                finite(s.half_extents[1]) && finite(s.half_extents[2]);
-    else return finite(s);
+    else if constexpr (std::is_same_v<S, frustum3>) {
+        for (const plane3& p : s.planes)
+            if (!finite(p.normal) || !finite(p.offset)) return false;
+        return true;
+    } else return finite(s);
 }
 
-// Visits the triangles of the leaves whose boxes meet `box`; visit(i) returns false to stop.
-template <class Visit>
-void overlapping(const scene3& scene, const aabb3& box, Visit&& visit) {
+// Visits the triangles of the leaves whose boxes may meet s (by its box, or for a frustum by the
+// frustum-box pair's conservative tier); visit(i) returns false to stop.
+template <class S, class Visit>
+void overlapping(const scene3& scene, const S& s, Visit&& visit) {
+    aabb3 box{};
+    if constexpr (!std::is_same_v<S, frustum3>) box = box_around(s);
+    auto may_meet = [&](const aabb3& b) {
+        if constexpr (std::is_same_v<S, frustum3>) return incidence::intersects<conservative>(s, b);
+        else return boxes_meet(b, box);
+    };
     const auto nodes = scene.nodes();
     std::uint32_t stack[2 * scene3::max_depth + 4];
     int top = 0;
-    if (boxes_meet(nodes[0].box, box)) stack[top++] = 0;
+    if (may_meet(nodes[0].box)) stack[top++] = 0;
     while (top > 0) {
         const scene3::node& n = nodes[stack[--top]];
         if (n.leaf()) {
@@ -263,8 +280,8 @@ void overlapping(const scene3& scene, const aabb3& box, Visit&& visit) {
                 if (!visit(i)) return;
             continue;
         }
-        if (boxes_meet(nodes[n.first + 1].box, box)) stack[top++] = n.first + 1;
-        if (boxes_meet(nodes[n.first].box, box)) stack[top++] = n.first;
+        if (may_meet(nodes[n.first + 1].box)) stack[top++] = n.first + 1;
+        if (may_meet(nodes[n.first].box)) stack[top++] = n.first;
     }
 }
 
@@ -275,7 +292,7 @@ bool scene_solid_any(const S& s, const scene3& scene) {
     if (scene.empty() || !finite_shape(s)) return false;
     const auto triangles = scene.triangles();
     bool met = false;
-    overlapping(scene, box_around(s), [&](std::uint32_t i) {
+    overlapping(scene, s, [&](std::uint32_t i) {
         met = incidence::intersects<Tier>(s, triangles[i]);
         return !met;
     });
@@ -295,7 +312,7 @@ std::size_t scene_every_hit(const S& s, const scene3& scene, std::vector<std::si
         const node_slabs<S> sl(s, as_linear(s), scene);
         traverse(scene, sl, visit, [] { return inf; });
     } else {
-        overlapping(scene, box_around(s), visit);
+        overlapping(scene, s, visit);
     }
     return met;
 }
@@ -351,7 +368,8 @@ bool scene_pairs(const scene3& a, const scene3& b, std::vector<std::pair<std::si
     INCIDENCE_SCENE_SOLID(TIER, aabb3)                                                                                                     \
     INCIDENCE_SCENE_SOLID(TIER, obb3)                                                                                                      \
     INCIDENCE_SCENE_SOLID(TIER, triangle3)                                                                                                 \
-    INCIDENCE_SCENE_SOLID(TIER, tetrahedron3)
+    INCIDENCE_SCENE_SOLID(TIER, tetrahedron3)                                                                                              \
+    INCIDENCE_SCENE_SOLID(TIER, frustum3)
 INCIDENCE_SCENE_TIER(exact)
 INCIDENCE_SCENE_TIER(conservative)
 INCIDENCE_SCENE_TIER(aggressive)

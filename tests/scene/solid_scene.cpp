@@ -1,4 +1,5 @@
-// intersects<Tier>(solid, scene) for a box, an oriented box, a triangle and a tetrahedron, and
+// intersects<Tier>(solid, scene) for a box, an oriented box, a triangle, a tetrahedron and a
+// frustum (from a camera), and
 // intersecting<Tier>(shape, scene, out) (every triangle met, for those and a ray, a segment and a
 // line), in the four tiers against the brute force (the scalar query of the same tier over every
 // triangle, whose exact tier the pairs' own tests check against CGAL): on random soups at scales
@@ -35,7 +36,7 @@ aabb3 exact_box(const S& s) {
     if constexpr (std::is_same_v<S, aabb3>) return s;
     else if constexpr (std::is_same_v<S, triangle3>) return support::box_of(s);
     else if constexpr (std::is_same_v<S, tetrahedron3>) return support::box_of({s.a, s.b, s.c}); // with d below
-    else return {{NAN, NAN, NAN}, {NAN, NAN, NAN}}; // an OBB: no lower bound on the approximate set
+    else return {{NAN, NAN, NAN}, {NAN, NAN, NAN}}; // an OBB, a frustum: no lower bound on the approximate set
 }
 template <class S>
 bool boxes_may_meet(const S& s, const triangle3& t) {
@@ -97,7 +98,7 @@ void random_shape(support::rng& r, support::transform& tr, int k, F&& f) {
                       m.z + tr.scale_only(0.3 * r.uniform(-1, 1))};
     };
     const point3 m = p();
-    switch (k % 7) {
+    switch (k % 8) {
     case 0: {
         const point3 a = q(m);
         f(aabb3{{std::min(a.x, m.x), std::min(a.y, m.y), std::min(a.z, m.z)},
@@ -109,13 +110,21 @@ void random_shape(support::rng& r, support::transform& tr, int k, F&& f) {
     case 3: f(tetrahedron3{m, q(m), q(m), q(m)}); break;
     case 4: f(ray3{m, vec3{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)}}); break;
     case 5: f(segment3{m, q(m)}); break;
+    case 6: { // a camera at m looking at a random point
+        const point3 at = p();
+        const auto fr = frustum3::from_camera(m, at - m, r.coin() ? vec3{0, 0, 1} : vec3{0, 1, 0}, r.uniform(0.2, 2.0), r.uniform(0.5, 2.0),
+                                              tr.scale_only(0.01), tr.scale_only(r.uniform(0.5, 3.0)));
+        if (fr) f(fr.value());
+        break;
+    }
     default: f(line3{m, vec3{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)}}); break;
     }
 }
 
 } // namespace
 
-TEST_CASE("scene: boxes, oriented boxes, triangles, tetrahedra, and every triangle met, against the brute force: random soups", "[scene]") {
+TEST_CASE("scene: boxes, oriented boxes, triangles, tetrahedra, frusta, and every triangle met, against the brute force: random soups",
+          "[scene]") {
     support::rng r(support::seed());
     counts c;
     const long sets = support::cases(2000);
@@ -124,7 +133,7 @@ TEST_CASE("scene: boxes, oriented boxes, triangles, tetrahedra, and every triang
         const std::vector<triangle3> ts = support::random_soup(r, tr, r.integer(1, 120));
         const auto sc = scene3::make(ts);
         REQUIRE(sc.has_value());
-        for (int j = 0; j < 7; ++j) random_shape(r, tr, j, [&](const auto& s) { check(ts, sc.value(), s, c); });
+        for (int j = 0; j < 8; ++j) random_shape(r, tr, j, [&](const auto& s) { check(ts, sc.value(), s, c); });
     }
     std::printf("[cases] scene solids, soups: %ld shapes (%ld meeting the soup); %ld wrong; approximate sets unlike the brute force %ld\n",
                 c.cases, c.met, c.wrong, c.approximate_other);
@@ -166,7 +175,7 @@ TEST_CASE("scene: boxes, triangles, tetrahedra touching a grid exactly, against 
     CHECK(c.met * 2 > c.cases);
 }
 
-TEST_CASE("scene: boxes and tetrahedra at the real meshes' vertices (libcgal-demo), against the brute force", "[scene]") {
+TEST_CASE("scene: boxes, tetrahedra and narrow frusta at the real meshes' vertices (libcgal-demo), against the brute force", "[scene]") {
     if (support::real_meshes().empty() && support::meshes_required()) FAIL("the real meshes are missing (run.sh unpacks them)");
     support::rng r(support::seed());
     const std::filesystem::path dir = std::filesystem::path(INCIDENCE_SOURCE_DIR) / "build/data/meshes";
@@ -182,8 +191,10 @@ TEST_CASE("scene: boxes and tetrahedra at the real meshes' vertices (libcgal-dem
     for (long k = 0; k < shapes; ++k) {
         const point3 v = m.vertices[static_cast<std::size_t>(r.integer(0, static_cast<int>(m.vertices.size()) - 1))];
         const double h = 0.01 * r.uniform(0.1, 1);
-        if (k % 2 == 0) check(ts, sc.value(), aabb3{v, {v.x + h, v.y + h, v.z + h}}, c); // a corner at a vertex
-        else check(ts, sc.value(), tetrahedron3{v, {v.x + h, v.y, v.z}, {v.x, v.y + h, v.z}, {v.x, v.y, v.z - h}}, c);
+        if (k % 3 == 0) check(ts, sc.value(), aabb3{v, {v.x + h, v.y + h, v.z + h}}, c); // a corner at a vertex
+        else if (k % 3 == 1) check(ts, sc.value(), tetrahedron3{v, {v.x + h, v.y, v.z}, {v.x, v.y + h, v.z}, {v.x, v.y, v.z - h}}, c);
+        else if (const auto fr = frustum3::from_camera({v.x + 1, v.y + 0.5, v.z + 2}, {-1, -0.5, -2}, {0, 1, 0}, 0.05, 1.0, 0.1, 10.0))
+            check(ts, sc.value(), fr.value(), c); // a narrow view centred on the vertex
     }
     std::printf("[cases] scene solids, fandisk (%zu triangles): %ld shapes (%ld meeting it); %ld wrong\n", ts.size(), c.cases, c.met,
                 c.wrong);
