@@ -1,6 +1,9 @@
-// Benchmarks: batches. One ray against a set of triangles, and a box or a ball against a set of
-// points (batch::intersects: <tier>/batch_intersects/{aabb,sphere}_points[_soa]/<dist> beside
-// <tier>/scalar_loop/{aabb,sphere}_points/<dist>). The triangles in every tier,
+// Benchmarks: batches. One ray against a set of triangles; a box, a ball or a tetrahedron against a
+// set of points (batch::intersects: <tier>/batch_intersects/{aabb,sphere}_points[_soa]/<dist> and
+// tetrahedron_points beside <tier>/scalar_loop/...); a box or a ball against a set of boxes or
+// balls (aabb_aabbs, aabb_spheres, sphere_aabbs, sphere_spheres, the same way); a set of rays
+// against one triangle, box or ball (rays_triangle, rays_aabb, rays_sphere) and one ray against
+// boxes or balls (ray_aabbs, ray_spheres). The triangles in every tier,
 // beside the loop over the scalar query that it replaces, on each SIMD target the processor has:
 //   <tier>/batch_intersects/ray_triangles/<dist>              the dispatched (best) target
 //   <tier>/batch_intersects/ray_triangles_<TARGET>/<dist>     one target (AVX3 = AVX-512, AVX2, SSE4)
@@ -13,7 +16,9 @@
 // the scalar query of its tier (and the exact tier against the oracle).
 #include "bench.hpp"
 #include <hwy/targets.h>
+#include <algorithm>
 #include <span>
+#include <utility>
 
 // The filter kernel itself (modules/batch/ray_triangles.cppm declares it; not exported): the
 // benchmarks report the share of lanes it leaves to the scalar query.
@@ -253,6 +258,210 @@ void reg_points_tier(const std::string& tier, const std::string& dist, const std
     reg_points<Tier, true>(tier + "/scalar_loop/sphere_points/" + dist, set, 2);
 }
 
+// One shape against many, for the families without a packet bench above: a tetrahedron against
+// points, and a box or a ball against boxes or balls. 16 sets; each iteration one shape against
+// its set; before timing every lane is checked against the scalar answer. entry 0: the batch,
+// 1: the loop over the scalar query.
+// The batch and the scalar query with the arguments in the library's order (rays first).
+template <class Tier, class One, class Many>
+auto batch_of(const One& one, const std::vector<Many>& many, std::span<std::uint8_t> out) {
+    if constexpr (std::is_same_v<Many, ray3>) return batch::intersects<Tier>(std::span<const Many>(many), one, out);
+    else return batch::intersects<Tier>(one, std::span<const Many>(many), out);
+}
+template <class Tier, class One, class Many>
+bool scalar_of(const One& one, const Many& m) {
+    if constexpr (std::is_same_v<Many, ray3>) return intersects<Tier>(m, one);
+    else return intersects<Tier>(one, m);
+}
+// A set's structure-of-arrays copy (boxes, balls, rays, points), for the packet entries.
+template <class Many>
+struct soa_of_set {
+    std::vector<double> f[6];
+    explicit soa_of_set(const std::vector<Many>& many) {
+        for (const Many& m : many) {
+            double v[6] = {};
+            if constexpr (std::is_same_v<Many, aabb3>)
+                v[0] = m.min.x, v[1] = m.min.y, v[2] = m.min.z, v[3] = m.max.x, v[4] = m.max.y, v[5] = m.max.z;
+            else if constexpr (std::is_same_v<Many, sphere3>) v[0] = m.center.x, v[1] = m.center.y, v[2] = m.center.z, v[3] = m.radius;
+            else if constexpr (std::is_same_v<Many, ray3>)
+                v[0] = m.origin.x, v[1] = m.origin.y, v[2] = m.origin.z, v[3] = m.direction.x, v[4] = m.direction.y, v[5] = m.direction.z;
+            else v[0] = m.x, v[1] = m.y, v[2] = m.z;
+            for (int k = 0; k < 6; ++k) f[k].push_back(v[k]);
+        }
+    }
+    auto view() const {
+        if constexpr (std::is_same_v<Many, aabb3>) return batch::boxes_soa{f[0], f[1], f[2], f[3], f[4], f[5]};
+        else if constexpr (std::is_same_v<Many, sphere3>) return batch::spheres_soa{f[0], f[1], f[2], f[3]};
+        else if constexpr (std::is_same_v<Many, ray3>) return batch::rays_soa{f[0], f[1], f[2], f[3], f[4], f[5]};
+        else return batch::points_soa{f[0], f[1], f[2]};
+    }
+};
+template <class Tier, class One, class Many>
+auto packet_of(const One& one, const soa_of_set<Many>& many, std::span<std::uint8_t> out) {
+    if constexpr (std::is_same_v<Many, ray3>) return batch::intersects<Tier>(many.view(), one, out);
+    else return batch::intersects<Tier>(one, many.view(), out);
+}
+// entry 0: the batch on an array; 1: the loop over the scalar query; 2: the batch on a packet.
+template <class Tier, class One, class Many>
+void reg_one_many(const std::string& name, const std::vector<std::pair<One, std::vector<Many>>>& sets, int entry) {
+    benchmark::RegisterBenchmark(name.c_str(), [sets, entry](benchmark::State& st) {
+        std::vector<std::uint8_t> out(sets.front().second.size());
+        for (const auto& [one, many] : sets) {
+            if (!batch_of<Tier>(one, many, out)) return st.SkipWithError("refused");
+            for (std::size_t i = 0; i < out.size(); ++i)
+                if ((out[i] == 1) != scalar_of<Tier>(one, many[i])) return st.SkipWithError("a lane differs from the scalar answer");
+        }
+        std::vector<soa_of_set<Many>> packets;
+        for (const auto& set : sets) packets.emplace_back(set.second);
+        std::size_t k = 0;
+        for (auto _ : st) {
+            const auto& [one, many] = sets[k];
+            if (entry == 0) benchmark::DoNotOptimize(batch_of<Tier>(one, many, out));
+            else if (entry == 2) benchmark::DoNotOptimize(packet_of<Tier>(one, packets[k], out));
+            else
+                for (std::size_t i = 0; i < out.size(); ++i) out[i] = scalar_of<Tier>(one, many[i]) ? 1 : 0;
+            benchmark::ClobberMemory();
+            if (++k == sets.size()) k = 0;
+        }
+        st.counters["s_per_test"] = benchmark::Counter(static_cast<double>(out.size()),
+                                                       benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+    });
+}
+template <class Tier, class One, class Many>
+void reg_one_many_tier(const std::string& tier, const std::string& pair, const std::string& dist,
+                       const std::vector<std::pair<One, std::vector<Many>>>& sets) {
+    reg_one_many<Tier>(tier + "/batch_intersects/" + pair + "/" + dist, sets, 0);
+    reg_one_many<Tier>(tier + "/batch_intersects/" + pair + "_soa/" + dist, sets, 2);
+    reg_one_many<Tier>(tier + "/scalar_loop/" + pair + "/" + dist, sets, 1);
+}
+template <class One, class Many>
+void reg_one_many_tiers(const std::string& pair, const std::string& dist, const std::vector<std::pair<One, std::vector<Many>>>& sets) {
+    reg_one_many_tier<exact>("exact", pair, dist, sets);
+    reg_one_many_tier<conservative>("conservative", pair, dist, sets);
+    reg_one_many_tier<aggressive>("aggressive", pair, dist, sets);
+    reg_one_many_tier<approximate>("approximate", pair, dist, sets);
+}
+
+// A tetrahedron and points (random: the unit cube; near_degenerate: on its faces, nudged).
+std::vector<std::pair<tetrahedron3, std::vector<point3>>> tetrahedron_points_set(bool near) {
+    std::vector<std::pair<tetrahedron3, std::vector<point3>>> out;
+    for (int k = 0; k < 16; ++k) {
+        const tetrahedron3 t{rp(), rp(), rp(), rp()};
+        std::vector<point3> points;
+        for (std::size_t i = 0; i < set_size; ++i) {
+            if (!near) {
+                points.push_back(rp());
+                continue;
+            }
+            const triangle3 f = t.face(static_cast<int>(i % 4));
+            const double u = uni(0, 1), v = uni(0, 1 - u);
+            points.push_back(np(f.a.x + u * (f.b.x - f.a.x) + v * (f.c.x - f.a.x), f.a.y + u * (f.b.y - f.a.y) + v * (f.c.y - f.a.y),
+                                f.a.z + u * (f.b.z - f.a.z) + v * (f.c.z - f.a.z)));
+        }
+        out.emplace_back(t, std::move(points));
+    }
+    return out;
+}
+// Boxes (half-extents up to 0.25) and balls (radii up to 0.25) around one box or ball (random:
+// in the unit cube; near_degenerate: touching it, a rounded tangent ball or a face-sharing box,
+// nudged).
+template <class One, class Many>
+std::vector<std::pair<One, std::vector<Many>>> solids_set(bool near) {
+    std::vector<std::pair<One, std::vector<Many>>> out;
+    for (int k = 0; k < 16; ++k) {
+        const point3 c = rp();
+        const One one = [&] {
+            if constexpr (std::is_same_v<One, aabb3>) return box(rp(), rp());
+            else return sphere3{c, uni(0.25, 1.0)};
+        }();
+        std::vector<Many> many;
+        for (std::size_t i = 0; i < set_size; ++i) {
+            point3 m = rp();
+            const double e = uni(0, 0.25);
+            if (near) { // the nearest point of one's boundary to m, and m moved e beyond it (rounded)
+                if constexpr (std::is_same_v<One, aabb3>) {
+                    m = {std::clamp(m.x, one.min.x, one.max.x), std::clamp(m.y, one.min.y, one.max.y),
+                         std::clamp(m.z, one.min.z, one.max.z)};
+                    m.x = irand(0, 1) == 0 ? one.min.x - e : one.max.x + e;
+                } else {
+                    const vec3 d = m - one.center;
+                    const double l = std::sqrt(dot(d, d)), s = (one.radius + e) / l;
+                    m = {one.center.x + d.x * s, one.center.y + d.y * s, one.center.z + d.z * s};
+                }
+            }
+            if constexpr (std::is_same_v<Many, aabb3>) many.push_back(aabb3{np(m.x - e, m.y - e, m.z - e), np(m.x + e, m.y + e, m.z + e)});
+            else many.push_back(sphere3{np(m.x, m.y, m.z), near ? e : uni(0, 0.25)});
+        }
+        out.emplace_back(one, std::move(many));
+    }
+    return out;
+}
+
+// Rays against one shape, and one ray against shapes (random: the unit cube; near_degenerate:
+// rays aimed at a point of the shape's boundary, nudged; shapes placed so the ray grazes them).
+template <class Solid>
+Solid solid_around(point3 c, double e) {
+    if constexpr (std::is_same_v<Solid, aabb3>) return aabb3{{c.x - e, c.y - e, c.z - e}, {c.x + e, c.y + e, c.z + e}};
+    else if constexpr (std::is_same_v<Solid, sphere3>) return sphere3{c, e};
+    else return triangle3{{c.x - e, c.y - e, c.z}, {c.x + e, c.y - e, c.z + e}, {c.x, c.y + e, c.z - e}};
+}
+// A point of s's boundary near p (rounded).
+point3 on_boundary(const aabb3& b, point3 p) {
+    p = {std::clamp(p.x, b.min.x, b.max.x), std::clamp(p.y, b.min.y, b.max.y), std::clamp(p.z, b.min.z, b.max.z)};
+    p.x = irand(0, 1) == 0 ? b.min.x : b.max.x;
+    return p;
+}
+point3 on_boundary(const sphere3& s, point3 p) {
+    const vec3 d = p - s.center;
+    const double k = s.radius / std::sqrt(dot(d, d));
+    return {s.center.x + d.x * k, s.center.y + d.y * k, s.center.z + d.z * k};
+}
+point3 on_boundary(const triangle3& t, point3) { // a point of an edge
+    const double u = uni(0, 1);
+    return {t.a.x + u * (t.b.x - t.a.x), t.a.y + u * (t.b.y - t.a.y), t.a.z + u * (t.b.z - t.a.z)};
+}
+template <class Solid>
+std::vector<std::pair<Solid, std::vector<ray3>>> rays_set(bool near) {
+    std::vector<std::pair<Solid, std::vector<ray3>>> out;
+    for (int k = 0; k < 16; ++k) {
+        const Solid one = solid_around<Solid>(rp(), uni(0.25, 0.75));
+        std::vector<ray3> rays;
+        for (std::size_t i = 0; i < set_size; ++i) {
+            const point3 o{uni(-2, 2), uni(-2, 2), uni(-2, 2)};
+            const point3 target = near ? on_boundary(one, rp()) : rp();
+            rays.push_back(ray3{np(o.x, o.y, o.z), target - o});
+        }
+        out.emplace_back(one, std::move(rays));
+    }
+    return out;
+}
+template <class Solid>
+std::vector<std::pair<ray3, std::vector<Solid>>> ray_solids_set(bool near) {
+    std::vector<std::pair<ray3, std::vector<Solid>>> out;
+    for (int k = 0; k < 16; ++k) {
+        const point3 o = rp(), aim = rp();
+        const ray3 ray{o, aim - o};
+        std::vector<Solid> many;
+        for (std::size_t i = 0; i < set_size; ++i) {
+            const double e = uni(0.01, 0.25);
+            Solid s = solid_around<Solid>(rp(), e);
+            if (near) { // touching the ray at one of its points p: a box with a corner at p, a ball tangent at p (rounded)
+                const point3 p = ray.at(uni(0, 2));
+                if constexpr (std::is_same_v<Solid, aabb3>) {
+                    s = aabb3{np(p.x, p.y, p.z), np(p.x + e, p.y + e, p.z + e)};
+                } else {
+                    const vec3 side = cross(ray.direction, rp() - point3{0, 0, 0});
+                    const double scale = e / std::sqrt(dot(side, side));
+                    s = sphere3{np(p.x + side.x * scale, p.y + side.y * scale, p.z + side.z * scale), e};
+                }
+            }
+            many.push_back(s);
+        }
+        out.emplace_back(ray, std::move(many));
+    }
+    return out;
+}
+
 } // namespace
 
 void register_batch(bool near) {
@@ -272,6 +481,16 @@ void register_batch(bool near) {
     reg_points_tier<conservative>("conservative", dist, points);
     reg_points_tier<aggressive>("aggressive", dist, points);
     reg_points_tier<approximate>("approximate", dist, points);
+    reg_one_many_tiers("tetrahedron_points", dist, tetrahedron_points_set(near));
+    reg_one_many_tiers("aabb_aabbs", dist, solids_set<aabb3, aabb3>(near));
+    reg_one_many_tiers("aabb_spheres", dist, solids_set<aabb3, sphere3>(near));
+    reg_one_many_tiers("sphere_aabbs", dist, solids_set<sphere3, aabb3>(near));
+    reg_one_many_tiers("sphere_spheres", dist, solids_set<sphere3, sphere3>(near));
+    reg_one_many_tiers("rays_triangle", dist, rays_set<triangle3>(near));
+    reg_one_many_tiers("rays_aabb", dist, rays_set<aabb3>(near));
+    reg_one_many_tiers("rays_sphere", dist, rays_set<sphere3>(near));
+    reg_one_many_tiers("ray_aabbs", dist, ray_solids_set<aabb3>(near));
+    reg_one_many_tiers("ray_spheres", dist, ray_solids_set<sphere3>(near));
 }
 
 } // namespace bench

@@ -1,5 +1,5 @@
 // The batches' contract in the harnesses: every lane of batch::intersects<Tier>(one, many) equals the
-// scalar intersects<Tier>(one, many[i]) in the four tiers, and the count is theirs, on the SIMD
+// scalar intersects<Tier>(one, many[i]) in the four tiers (rays first: (rays, one) and (ray, one)), and the count is theirs, on the SIMD
 // target `pick` chooses among those the processor has (Highway). Any difference aborts. Include
 // after `import incidence;`. And the nine triangles two harnesses share.
 #pragma once
@@ -8,17 +8,25 @@
 #include <cstdint>
 #include <cstdlib>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 template <class Tier, class One, class Many>
 void batch_is_scalar(const One& one, std::span<const Many> many) {
     std::uint8_t out[16];
     if (many.size() > sizeof out) std::abort();
-    const auto met = incidence::batch::intersects<Tier>(one, many, std::span<std::uint8_t>(out, many.size()));
+    constexpr bool rays = std::is_same_v<Many, incidence::ray3>; // rays come first, as in the scalar query
+    const auto met = [&] {
+        if constexpr (rays) return incidence::batch::intersects<Tier>(many, one, std::span<std::uint8_t>(out, many.size()));
+        else return incidence::batch::intersects<Tier>(one, many, std::span<std::uint8_t>(out, many.size()));
+    }();
     if (!met) std::abort();
     std::size_t count = 0;
     for (std::size_t i = 0; i < many.size(); ++i) {
-        const std::uint8_t scalar = incidence::intersects<Tier>(one, many[i]) ? 1 : 0;
+        bool yes;
+        if constexpr (rays) yes = incidence::intersects<Tier>(many[i], one);
+        else yes = incidence::intersects<Tier>(one, many[i]);
+        const std::uint8_t scalar = yes ? 1 : 0;
         if (out[i] != scalar) std::abort();
         count += scalar;
     }

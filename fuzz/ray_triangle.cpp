@@ -5,8 +5,8 @@
 // wrong; both argument orders agree; every tier and intersection() survive raw bit patterns
 // (NaN, infinities, subnormals, zero directions, degenerate triangles). And the batch: the ray
 // against nine triangles from the same bytes (t, u, t's vertices permuted, t's edges with other
-// apexes, doubles 18..31), on a SIMD target the first byte picks, every lane equal to the scalar
-// answer in every tier. Any finding aborts.
+// apexes, doubles 18..31), and six rays of the same bytes against t, on a SIMD target the first
+// (second) byte picks, every lane equal to the scalar answer in every tier. Any finding aborts.
 #include "testkit/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <cmath>
@@ -28,6 +28,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const triangle3 u{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}, {v[15], v[16], v[17]}};
     const auto ts = nine_triangles(v);
     batch_contracts(r, std::span<const triangle3>(ts), size > 0 ? data[0] : 0);
+    // many rays against one triangle: the ray, its reverse, rays from the other doubles, one from a vertex of t
+    const ray3 rays[6] = {r,
+                          {r.origin, vec3{-v[3], -v[4], -v[5]}},
+                          {{v[18], v[19], v[20]}, {v[21], v[22], v[23]}},
+                          {{v[24], v[25], v[26]}, t.a - point3{v[24], v[25], v[26]}},
+                          {t.b, {v[27], v[28], v[29]}},
+                          {{v[30], v[31], v[0]}, t.c - point3{v[30], v[31], v[0]}}};
+    batch_contracts(t, std::span<const ray3>(rays), size > 1 ? data[1] : 0);
     // Every tier and every find must finish on any bits.
     (void)intersects<approximate>(r, t);
     (void)intersects<conservative>(r, t);

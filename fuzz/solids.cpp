@@ -17,8 +17,9 @@
 // traces' vertices, the box against the cells of each plane through it); with bit 0x40 of byte 0 too, against a second such mesh (18 doubles;
 // CGAL::Polygon_mesh_processing::do_intersect) or, for byte 0 % 8 == 7, an OBB (the LP per
 // triangle), or for 6, 5, 4 a convex polyhedron of 1 to 4 planes, a frustum or a 14-DOP from 18
-// doubles (the LP per triangle, then crossing parity from the LP's exact point of the set). Any
-// finding aborts.
+// doubles (the LP per triangle, then crossing parity from the LP's exact point of the set). And
+// without that bit, the point batch against the tetrahedron (batches.hpp: every lane the scalar
+// answer in every tier, on a SIMD target byte 0 picks). Any finding aborts.
 #include "testkit/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <cmath>
@@ -29,6 +30,7 @@
 import incidence;
 import incidence.detail;
 #include "contracts.hpp"
+#include "batches.hpp"
 #include "partners.hpp"
 #include "testkit/testing.hpp"
 #include "testkit/flat_cases.hpp"
@@ -259,5 +261,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (int i = 0; i < used[kb]; ++i) finite = finite && std::isfinite(v[12 + i]);
     const tetrahedron3 a{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}, {v[6], v[7], v[8]}, {v[9], v[10], v[11]}};
     with_shape(kb, v + 12, [&](const auto& b) { check(a, b, finite); });
+    // the point batch: the five points of the other doubles, the vertices, an ulp off one, and
+    // the rounded midpoints of two edges, every lane equal to the scalar answer in every tier
+    const point3 ps[12] = {{v[12], v[13], v[14]},
+                           {v[15], v[16], v[17]},
+                           {v[18], v[19], v[20]},
+                           {v[21], v[22], v[23]},
+                           {v[24], v[25], v[26]},
+                           a.a,
+                           a.b,
+                           a.c,
+                           a.d,
+                           {std::nextafter(a.a.x, 0.0), a.a.y, a.a.z},
+                           {0.5 * a.a.x + 0.5 * a.b.x, 0.5 * a.a.y + 0.5 * a.b.y, 0.5 * a.a.z + 0.5 * a.b.z},
+                           {0.5 * a.c.x + 0.5 * a.d.x, 0.5 * a.c.y + 0.5 * a.d.y, 0.5 * a.c.z + 0.5 * a.d.z}};
+    batch_contracts(a, std::span<const point3>(ps), data[0]);
     return 0;
 }

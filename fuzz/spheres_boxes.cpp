@@ -2,10 +2,11 @@
 // aabb_aabb (intersects, contains, covers), aabb_ray, aabb_segment, aabb_line, aabb_plane and ray_sphere,
 // differential against CGAL Epeck (the line against exact rational slabs) on raw bit patterns. Exact answers must match; conservative/aggressive/classify keep
 // their contracts; both argument orders agree; exact t values of ray hits are correctly
-// rounded. Every call must survive NaN, infinities and subnormals. And the point batches: both
-// boxes' and both spheres' points (the 16 doubles' points and their ulp neighbours), on a SIMD
-// target the first byte picks, every lane equal to the scalar answer in every tier. Any finding
-// aborts.
+// rounded. Every call must survive NaN, infinities and subnormals. And the batches: both
+// boxes' and both spheres' points (the 16 doubles' points and their ulp neighbours), both boxes
+// and both spheres against five boxes and five balls of the same doubles, the ray against those,
+// and six rays of the same doubles against each box and ball, on a SIMD target the first byte
+// picks, every lane equal to the scalar answer in every tier. Any finding aborts.
 #include "testkit/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <cmath>
@@ -55,6 +56,23 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         batch_contracts(b2, std::span<const point3>(ps), pick);
         batch_contracts(s1, std::span<const point3>(ps), pick);
         batch_contracts(s2, std::span<const point3>(ps), pick);
+        // the solid batches: both boxes and both balls against boxes and balls built from the same doubles
+        const aabb3 boxes[5] = {b1, b2, ordered(p, q), ordered(c, e), ordered(p, c)};
+        const sphere3 balls[5] = {s1, s2, {p, r2}, {q, r1}, {c, std::fabs(r1) + std::fabs(r2)}};
+        for (const aabb3& one : {b1, b2}) {
+            batch_contracts(one, std::span<const aabb3>(boxes), pick);
+            batch_contracts(one, std::span<const sphere3>(balls), pick);
+        }
+        for (const sphere3& one : {s1, s2}) {
+            batch_contracts(one, std::span<const aabb3>(boxes), pick);
+            batch_contracts(one, std::span<const sphere3>(balls), pick);
+        }
+        // the ray batches: the ray against the boxes and balls, and rays of the same doubles against each box and ball
+        batch_contracts(ray, std::span<const aabb3>(boxes), pick);
+        batch_contracts(ray, std::span<const sphere3>(balls), pick);
+        const ray3 rays[6] = {ray, {q, vec3{v[0], v[1], v[2]}}, {c, e - c}, {e, c - e}, {p, vec3{0, 0, 0}}, {q, vec3{v[12], v[13], v[14]}}};
+        for (const aabb3& one : {b1, b2}) batch_contracts(one, std::span<const ray3>(rays), pick);
+        for (const sphere3& one : {s1, s2}) batch_contracts(one, std::span<const ray3>(rays), pick);
     }
     // Every tier and every find must finish on any bits.
     (void)intersects<approximate>(ray, s1);

@@ -5,3 +5,5 @@
 export module incidence.batch;
 export import :ray_triangles;
 export import :points;
+export import :solids;
+export import :ray_solids;

@@ -1,12 +1,14 @@
-// Many points against one solid, the inside tests: batch::intersects<Tier>(box, points, out) and
-// batch::intersects<Tier>(sphere, points, out), for points as an array of point3 or as a
+// Many points against one solid, the inside tests: batch::intersects<Tier>(solid, points, out) for
+// a box, a sphere or a tetrahedron, for points as an array of point3 or as a
 // structure-of-arrays packet (points_soa). out[i] is 1 where point i lies in the closed box or
-// ball, else 0: the answer of the scalar intersects<Tier>(box, point) or (point, sphere), bit for
+// ball or solid tetrahedron, else 0: the answer of the scalar intersects<Tier>(solid, point), bit for
 // bit, in every tier (tests/batch/points.cpp checks it on every SIMD target).
 // Method (points_simd.cpp): the box by the scalar body's six comparisons, exact in every tier;
 // the ball by the sign of r r - |p - c|^2 (degree 2), in plain double for the approximate tier,
 // and in the filtered tiers in the semi-static filter against a static bound per block of 64
-// points, then each lane's own bound, then the scalar query for a lane still open.
+// points, then each lane's own bound, then the scalar query for a lane still open; the
+// tetrahedron by its bounding box, then the signs of the four volumes with the point in place of
+// one vertex (degree 3; Ericson, Real-Time Collision Detection, 2005, section 3.4), the same way.
 module;
 #include <cstddef>
 #include <cstdint>
@@ -29,6 +31,9 @@ void sphere_points_approximate(const double* center, double radius, const double
                                std::uint8_t* out);
 void sphere_points_filter(const double* center, double radius, const double* const* coords, const double* xyz, std::size_t n,
                           std::uint8_t* out);
+// t: the vertices a, b, c, d, three coordinates each. Both write 2 where the scalar query decides.
+void tetrahedron_points_approximate(const double* t, const double* const* coords, const double* xyz, std::size_t n, std::uint8_t* out);
+void tetrahedron_points_filter(const double* t, const double* const* coords, const double* xyz, std::size_t n, std::uint8_t* out);
 } // namespace incidence::batch::simd
 }
 
@@ -68,6 +73,20 @@ std::size_t sphere_points_block(const sphere3& s, const double* const* coords, c
         simd::sphere_points_filter(c, s.radius, coords, xyz, n, out);
         return settle_open(out, n, [&](std::size_t i) { return incidence::intersects<Tier>(at(i), s); });
     }
+}
+
+template <tier Tier, class At>
+std::size_t tetrahedron_points_block(const tetrahedron3& t, const double* const* coords, const double* xyz, std::size_t n,
+                                     std::uint8_t* out, const At& at) {
+    if (!is_finite(t.a) || !is_finite(t.b) || !is_finite(t.c) ||
+        !is_finite(t.d)) { // no point is in it, in every tier (the scalar query's first test)
+        std::memset(out, 0, n);
+        return 0;
+    }
+    const double v[12] = {t.a.x, t.a.y, t.a.z, t.b.x, t.b.y, t.b.z, t.c.x, t.c.y, t.c.z, t.d.x, t.d.y, t.d.z};
+    if constexpr (std::is_same_v<Tier, approximate>) simd::tetrahedron_points_approximate(v, coords, xyz, n, out);
+    else simd::tetrahedron_points_filter(v, coords, xyz, n, out);
+    return settle_open(out, n, [&](std::size_t i) { return incidence::intersects<Tier>(at(i), t); });
 }
 
 // A solid against an array of points, copied 64 at a time into doubles on the stack (a point3 is
@@ -121,6 +140,19 @@ template <tier Tier = exact>
 [[nodiscard]] result<std::size_t> intersects(const sphere3& s, const points_soa& points, std::span<std::uint8_t> out) {
     return detail::over_points(points, out, [&](const double* const* c, const double* xyz, std::size_t n, std::uint8_t* o, const auto& at) {
         return detail::sphere_points_block<Tier>(s, c, xyz, n, o, at);
+    });
+}
+
+template <tier Tier = exact>
+[[nodiscard]] result<std::size_t> intersects(const tetrahedron3& t, std::span<const point3> points, std::span<std::uint8_t> out) {
+    return detail::over_points(points, out, [&](const double* const* c, const double* xyz, std::size_t n, std::uint8_t* o, const auto& at) {
+        return detail::tetrahedron_points_block<Tier>(t, c, xyz, n, o, at);
+    });
+}
+template <tier Tier = exact>
+[[nodiscard]] result<std::size_t> intersects(const tetrahedron3& t, const points_soa& points, std::span<std::uint8_t> out) {
+    return detail::over_points(points, out, [&](const double* const* c, const double* xyz, std::size_t n, std::uint8_t* o, const auto& at) {
+        return detail::tetrahedron_points_block<Tier>(t, c, xyz, n, o, at);
     });
 }
 

@@ -13,6 +13,16 @@
 //   first tried against a static bound, the permanent r r + |p - c|^2 on the block's largest
 //   |p_k - c_k| (rounding is monotone, so what it proves the lane's own bound proves; a NaN makes
 //   the block's bound infinite), then a vector it leaves open against each lane's own.
+// - tetrahedron_points: the scalar point_in_closed (modules/engines/tetrahedron.cppm): a point
+//   beyond the tetrahedron's bounding box is outside (comparisons: a non-finite point is beyond
+//   it), else the four volumes with the point in place of one vertex, as triple products around
+//   the cross products c = d0 x d1 and e = d2 x d3 (d_i = v_i - p): c.d2, -(c.d3), d0.e, -(d1.e).
+//   Two of opposite nonzero signs: outside; nonzero ones of one sign: inside; all four zero (a
+//   flat tetrahedron): 2, for the scalar query. Plain double in the approximate tier; in the
+//   filter (eight operations per sign) a vector's lanes are decided where the signs the scalar
+//   filter reads are proven (c.d2 and c.d3 opposite, or all four), against the block's static
+//   bound (the permanents on the block's largest |d_i| per vertex and axis) and then the lanes'
+//   own; else 2.
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -137,6 +147,139 @@ void sphere_points_filter(const double* center, double radius, const double* con
     }
 }
 
+// The four volumes' values (w3 = c.d2, w2 = c.d3, w1 = d0.e, w0 = d1.e; the signs v3 = sgn w3,
+// v2 = -sgn w2, v1 = sgn w1, v0 = -sgn w0) over any number type, from d_i = v_i - p.
+template <class T>
+struct four {
+    T w3, w2, w1, w0;
+};
+template <class T>
+HWY_INLINE four<T> volumes(const vec<T>* dv) {
+    const vec<T> c = cross(dv[0], dv[1]), e = cross(dv[2], dv[3]);
+    return {dot(c, dv[2]), dot(c, dv[3]), dot(dv[0], e), dot(dv[1], e)};
+}
+// Whether the point is inside from the four signs' masks (positive / negative: proven or plain
+// signs of w_k): decided where c.d2 and -(c.d3) are opposite nonzero (outside), or where all four
+// are nonzero (`known`); the answer where decided.
+struct verdict {
+    M decided, inside;
+};
+template <class Pos, class Neg>
+HWY_INLINE verdict from_volumes(const Pos& pos, const Neg& neg, M known) {
+    // v_k positive / negative: w3 and w1 as they are, w2 and w0 negated
+    const M up[4] = {neg(0), pos(1), neg(2), pos(3)}, down[4] = {pos(0), neg(1), pos(2), neg(3)};
+    const M early = hn::Or(hn::And(up[3], down[2]), hn::And(down[3], up[2]));
+    const M all_up = hn::And(hn::And(up[0], up[1]), hn::And(up[2], up[3]));
+    const M all_down = hn::And(hn::And(down[0], down[1]), hn::And(down[2], down[3]));
+    return {hn::Or(early, known), hn::And(hn::Not(early), hn::Or(all_up, all_down))};
+}
+HWY_INLINE M within(D d, const V* lo, const V* hi, V x, V y, V z) {
+    (void)d;
+    return hn::And(hn::And(hn::And(hn::Le(lo[0], x), hn::Le(x, hi[0])), hn::And(hn::Le(lo[1], y), hn::Le(y, hi[1]))),
+                   hn::And(hn::Le(lo[2], z), hn::Le(z, hi[2])));
+}
+// The tetrahedron's vertices t[3 i + k] and its bounding box, broadcast.
+struct tetrahedron_lanes {
+    V v[4][3], lo[3], hi[3];
+    tetrahedron_lanes(D d, const double* t) {
+        for (int k = 0; k < 3; ++k) {
+            double a = t[k], b = t[k];
+            for (int i = 0; i < 4; ++i) {
+                v[i][k] = hn::Set(d, t[3 * i + k]);
+                a = t[3 * i + k] < a ? t[3 * i + k] : a;
+                b = t[3 * i + k] > b ? t[3 * i + k] : b;
+            }
+            lo[k] = hn::Set(d, a), hi[k] = hn::Set(d, b);
+        }
+    }
+    // d_i = v_i - p, differences of inputs
+    void differences(V x, V y, V z, vec<fv>* dv) const {
+        for (int i = 0; i < 4; ++i) dv[i] = {exact_difference(v[i][0], x), exact_difference(v[i][1], y), exact_difference(v[i][2], z)};
+    }
+};
+
+void tetrahedron_points_approximate(const double* t, const double* const* coords, const double* xyz, std::size_t n, std::uint8_t* out) {
+    const D d;
+    const points_at at{{coords[0], coords[1], coords[2]}, xyz};
+    const tetrahedron_lanes tl(d, t);
+    const V zero = hn::Zero(d);
+    over_points(d, at, n, [&](V x, V y, V z, std::size_t lane, std::size_t count) {
+        const M in_box = within(d, tl.lo, tl.hi, x, y, z);
+        vec<fv> df[4];
+        tl.differences(x, y, z, df);
+        const vec<pv> dv[4] = {values(df[0]), values(df[1]), values(df[2]), values(df[3])};
+        const four<pv> w = volumes(dv);
+        const V ws[4] = {w.w0.v, w.w1.v, w.w2.v, w.w3.v};
+        auto pos = [&](int k) { return hn::Gt(ws[k], zero); };
+        auto neg = [&](int k) { return hn::Lt(ws[k], zero); };
+        // the scalar reads the signs as they are, zeros skipped: some nonzero one decides
+        const M some =
+            hn::Or(hn::Or(hn::Or(pos(0), neg(0)), hn::Or(pos(1), neg(1))), hn::Or(hn::Or(pos(2), neg(2)), hn::Or(pos(3), neg(3))));
+        const M up_seen = hn::Or(hn::Or(neg(0), pos(1)), hn::Or(neg(2), pos(3)));
+        const M down_seen = hn::Or(hn::Or(pos(0), neg(1)), hn::Or(pos(2), neg(3)));
+        const M inside = hn::And(hn::And(in_box, some), hn::Not(hn::And(up_seen, down_seen)));
+        store_answers(d, inside, hn::AndNot(some, in_box), out + lane, count);
+    });
+}
+
+void tetrahedron_points_filter(const double* t, const double* const* coords, const double* xyz, std::size_t n, std::uint8_t* out) {
+    const D d;
+    const points_at all{{coords[0], coords[1], coords[2]}, xyz};
+    const tetrahedron_lanes tl(d, t);
+    constexpr double gamma = gamma_of(8); // d_i: one operation; a product adds its operands' counts and one, a sum one
+    constexpr std::size_t block = 64;
+    for (std::size_t start = 0; start < n; start += block) {
+        const std::size_t m = n - start < block ? n - start : block;
+        const points_at at = all.from(start);
+        // the block's largest |d_i| per vertex and axis, over its points in the box (NaN: infinite)
+        V most[4][3];
+        for (auto& row : most)
+            for (V& x : row) x = hn::Zero(d);
+        over_points(d, at, m, [&](V x, V y, V z, std::size_t, std::size_t) {
+            const M in_box = within(d, tl.lo, tl.hi, x, y, z);
+            vec<fv> df[4];
+            tl.differences(x, y, z, df);
+            for (int i = 0; i < 4; ++i) {
+                most[i][0] = max_counting_nan(d, most[i][0], hn::IfThenElseZero(in_box, df[i].x.p));
+                most[i][1] = max_counting_nan(d, most[i][1], hn::IfThenElseZero(in_box, df[i].y.p));
+                most[i][2] = max_counting_nan(d, most[i][2], hn::IfThenElseZero(in_box, df[i].z.p));
+            }
+        });
+        vec<pp> largest[4];
+        for (int i = 0; i < 4; ++i)
+            largest[i] = {{hn::GetLane(hn::MaxOfLanes(d, most[i][0]))},
+                          {hn::GetLane(hn::MaxOfLanes(d, most[i][1]))},
+                          {hn::GetLane(hn::MaxOfLanes(d, most[i][2]))}};
+        const four<pp> permanent = volumes(largest);
+        const V bound[4] = {static_bound(d, gamma, permanent.w0.p), static_bound(d, gamma, permanent.w1.p),
+                            static_bound(d, gamma, permanent.w2.p), static_bound(d, gamma, permanent.w3.p)};
+        over_points(d, at, m, [&](V x, V y, V z, std::size_t lane, std::size_t count) {
+            const M in_box = within(d, tl.lo, tl.hi, x, y, z);
+            const M counted = hn::And(in_box, hn::FirstN(d, count));
+            vec<fv> df[4];
+            tl.differences(x, y, z, df);
+            const vec<pv> dv[4] = {values(df[0]), values(df[1]), values(df[2]), values(df[3])};
+            const four<pv> w = volumes(dv);
+            const V ws[4] = {w.w0.v, w.w1.v, w.w2.v, w.w3.v};
+            auto pos = [&](int k) { return hn::Gt(ws[k], bound[k]); };
+            auto neg = [&](int k) { return hn::Lt(ws[k], hn::Neg(bound[k])); };
+            auto proven = [&](int k) { return hn::Or(pos(k), neg(k)); };
+            const M known = hn::And(hn::And(proven(0), proven(1)), hn::And(proven(2), proven(3)));
+            verdict v = from_volumes(pos, neg, known);
+            if (!hn::AllTrue(d, hn::Or(v.decided, hn::Not(counted)))) { // the lanes' own bounds
+                const four<fv> f = volumes(df);
+                const fv fs[4] = {f.w0, f.w1, f.w2, f.w3};
+                auto own_pos = [&](int k) { return own_positive(d, gamma, fs[k]); };
+                auto own_neg = [&](int k) { return own_negative(d, gamma, fs[k]); };
+                auto own_proven = [&](int k) { return hn::Or(own_pos(k), own_neg(k)); };
+                v = from_volumes(own_pos, own_neg, hn::And(hn::And(own_proven(0), own_proven(1)), hn::And(own_proven(2), own_proven(3))));
+            }
+            // beyond the box: 0; in it: the verdict, or 2 where undecided
+            store_answers(d, hn::And(in_box, v.inside), hn::AndNot(v.decided, in_box), out + start + lane, count);
+        });
+    }
+}
+
 } // namespace incidence::batch::simd::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 
@@ -145,6 +288,8 @@ namespace incidence::batch::simd {
 HWY_EXPORT(box_points);
 HWY_EXPORT(sphere_points_approximate);
 HWY_EXPORT(sphere_points_filter);
+HWY_EXPORT(tetrahedron_points_approximate);
+HWY_EXPORT(tetrahedron_points_filter);
 
 // The entry points (declared extern "C++" in modules/batch/points.cppm).
 void box_points(const double* box, const double* const* coords, const double* xyz, std::size_t n, std::uint8_t* out) {
@@ -157,6 +302,12 @@ void sphere_points_approximate(const double* center, double radius, const double
 void sphere_points_filter(const double* center, double radius, const double* const* coords, const double* xyz, std::size_t n,
                           std::uint8_t* out) {
     HWY_DYNAMIC_DISPATCH(sphere_points_filter)(center, radius, coords, xyz, n, out);
+}
+void tetrahedron_points_approximate(const double* t, const double* const* coords, const double* xyz, std::size_t n, std::uint8_t* out) {
+    HWY_DYNAMIC_DISPATCH(tetrahedron_points_approximate)(t, coords, xyz, n, out);
+}
+void tetrahedron_points_filter(const double* t, const double* const* coords, const double* xyz, std::size_t n, std::uint8_t* out) {
+    HWY_DYNAMIC_DISPATCH(tetrahedron_points_filter)(t, coords, xyz, n, out);
 }
 } // namespace incidence::batch::simd
 #endif

@@ -1,7 +1,9 @@
 // One ray against many triangles: batch::intersects<Tier>(ray, triangles, out), for triangles as
-// an array of triangle3 or as a structure-of-arrays packet (triangles_soa). out[i] is 1 where the
-// ray meets triangle i, else 0: the answer of the scalar intersects<Tier>(ray, triangle), bit for
-// bit, in every tier (tests/batch/ray_triangles.cpp checks it on every SIMD target).
+// an array of triangle3 or as a structure-of-arrays packet (triangles_soa); and many rays against
+// one triangle: batch::intersects<Tier>(rays, triangle, out), rays as an array of ray3 or a packet
+// (rays_soa). out[i] is 1 where the ray meets triangle i (ray i meets the triangle), else 0: the
+// answer of the scalar intersects<Tier>(ray, triangle), bit for bit, in every tier
+// (tests/batch/ray_triangles.cpp checks it on every SIMD target).
 // Method: the lanes run the scalar algorithm's operations in SIMD (ray_triangles_simd.cpp):
 // - approximate: the watertight test (Woop, Benthin and Wald, JCGT 2(1), 2013), the scalar
 //   approximate tier's, with its bound (catalog: ray_triangle);
@@ -29,6 +31,10 @@ extern "C++" {
 namespace incidence::batch::simd {
 void ray_triangles_watertight(const double* origin, const double* direction, const double* const* coords, std::size_t n, std::uint8_t* out);
 void ray_triangles_filter(const double* origin, const double* direction, const double* const* coords, std::size_t n, std::uint8_t* out);
+// rays: six arrays of n coordinates (origin x, y, z, direction x, y, z); triangle: nine fields of
+// one value each (a.x, ..., c.z).
+void rays_triangle_watertight(const double* const* rays, const double* const* triangle, std::size_t n, std::uint8_t* out);
+void rays_triangle_filter(const double* const* rays, const double* const* triangle, std::size_t n, std::uint8_t* out);
 const char* target_name();
 } // namespace incidence::batch::simd
 }
@@ -48,6 +54,18 @@ struct triangles_soa {
     [[nodiscard]] constexpr triangle3 operator[](std::size_t i) const {
         return {{ax[i], ay[i], az[i]}, {bx[i], by[i], bz[i]}, {cx[i], cy[i], cz[i]}};
     }
+};
+
+// Rays kept as structure of arrays: six arrays of one length, ray i being
+// {{ox[i], oy[i], oz[i]}, {dx[i], dy[i], dz[i]}}.
+struct rays_soa {
+    std::span<const double> ox, oy, oz, dx, dy, dz;
+    [[nodiscard]] constexpr std::size_t size() const { return ox.size(); }
+    [[nodiscard]] constexpr bool consistent() const {
+        const std::size_t n = ox.size();
+        return oy.size() == n && oz.size() == n && dx.size() == n && dy.size() == n && dz.size() == n;
+    }
+    [[nodiscard]] constexpr ray3 operator[](std::size_t i) const { return {{ox[i], oy[i], oz[i]}, {dx[i], dy[i], dz[i]}}; }
 };
 
 // The name of the SIMD target the batches run on here ("AVX3" for AVX-512, "AVX2", "SSE4", ...).
@@ -71,6 +89,22 @@ std::size_t ray_triangles_block(const ray3& r, const double* const* coords, std:
     } else {
         simd::ray_triangles_filter(o, d, coords, n, out);
         return settle_open(out, n, [&](std::size_t i) { return incidence::intersects<Tier>(r, at(i)); });
+    }
+}
+
+// n rays (six SoA arrays) against one triangle, the same way.
+template <tier Tier, class At>
+std::size_t rays_triangle_block(const double* const* rays, const triangle3& t, std::size_t n, std::uint8_t* out, const At& at) {
+    const double v[9] = {t.a.x, t.a.y, t.a.z, t.b.x, t.b.y, t.b.z, t.c.x, t.c.y, t.c.z};
+    const double* fields[9] = {v, v + 1, v + 2, v + 3, v + 4, v + 5, v + 6, v + 7, v + 8};
+    if constexpr (std::is_same_v<Tier, approximate>) {
+        simd::rays_triangle_watertight(rays, fields, n, out);
+        std::size_t met = 0;
+        for (std::size_t i = 0; i < n; ++i) met += out[i];
+        return met;
+    } else {
+        simd::rays_triangle_filter(rays, fields, n, out);
+        return settle_open(out, n, [&](std::size_t i) { return incidence::intersects<Tier>(at(i), t); });
     }
 }
 
@@ -99,6 +133,27 @@ template <tier Tier = exact>
     const double* coords[9] = {triangles.ax.data(), triangles.ay.data(), triangles.az.data(), triangles.bx.data(), triangles.by.data(),
                                triangles.bz.data(), triangles.cx.data(), triangles.cy.data(), triangles.cz.data()};
     return detail::ray_triangles_block<Tier>(r, coords, triangles.size(), out.data(), [&](std::size_t i) { return triangles[i]; });
+}
+
+// Does each ray meet the triangle? out[i] for rays[i] (out as long as rays); the number of rays
+// that meet it. Tiers as the scalar intersects(ray, triangle): the same answer, lane by lane.
+template <tier Tier = exact>
+[[nodiscard]] result<std::size_t> intersects(std::span<const ray3> rays, const triangle3& t, std::span<std::uint8_t> out) {
+    if (out.size() != rays.size()) return error{errc::size_mismatch};
+    auto unpack = [](const ray3& r, double* f) {
+        const double v[6] = {r.origin.x, r.origin.y, r.origin.z, r.direction.x, r.direction.y, r.direction.z};
+        for (int k = 0; k < 6; ++k) f[k] = v[k];
+    };
+    return detail::by_blocks<6>(
+        rays, out.data(), unpack, [&](const double* const* coords, std::size_t n, std::uint8_t* o, std::size_t start) {
+            return detail::rays_triangle_block<Tier>(coords, t, n, o, [&](std::size_t i) { return rays[start + i]; });
+        });
+}
+template <tier Tier = exact>
+[[nodiscard]] result<std::size_t> intersects(const rays_soa& rays, const triangle3& t, std::span<std::uint8_t> out) {
+    if (!rays.consistent() || out.size() != rays.size()) return error{errc::size_mismatch};
+    const double* coords[6] = {rays.ox.data(), rays.oy.data(), rays.oz.data(), rays.dx.data(), rays.dy.data(), rays.dz.data()};
+    return detail::rays_triangle_block<Tier>(coords, t, rays.size(), out.data(), [&](std::size_t i) { return rays[i]; });
 }
 
 } // namespace incidence::batch

@@ -1,8 +1,9 @@
-// batch::intersects(box, points) and batch::intersects(sphere, points): on every SIMD target this
+// batch::intersects(solid, points) for a box, a sphere and a tetrahedron: on every SIMD target this
 // processor has, each lane's answer equals the scalar intersects<Tier> in all four tiers, for the
 // array and the structure-of-arrays entry points, on random points, on points exactly on the
 // boundary and a few ulps off it (box faces, edges and corners; points of the sphere with integer
-// coordinates, from Pythagorean quadruples), at scales 2^-500..2^500, and on special values. The
+// coordinates, from Pythagorean quadruples; tetrahedron faces, edges and vertices in eighths, flat
+// tetrahedra among them), at scales 2^-500..2^500, and on special values. The
 // exact lanes on the boundary are checked against the known truth (on the boundary: inside).
 #include <catch2/catch_test_macros.hpp>
 #include <hwy/targets.h>
@@ -23,8 +24,9 @@ namespace {
 struct point_set {
     aabb3 box;
     sphere3 ball;
+    tetrahedron3 tet;
     std::vector<point3> points;
-    std::vector<int> on_boundary; // 1: exactly on the box's boundary, 2: exactly on the sphere, 0: neither known
+    std::vector<int> on_boundary; // 1: exactly on the box's boundary, 2: on the sphere, 3: on the tetrahedron's, 0: none known
 };
 
 // Integer points of the sphere of radius 9 around the origin: (1, 4, 8), (4, 4, 7), (0, 0, 9)
@@ -50,6 +52,12 @@ point_set make_set(support::rng& r, int kind) {
     };
     s.box = aabb3{at(-4, -3, -2), at(5, 6, 7)};
     s.ball = sphere3{at(0, 0, 0), std::ldexp(9.0, k)};
+    // vertices in quarters, either orientation; flat (four coplanar vertices) once in eight
+    const bool flat = r.integer(0, 7) == 0; // the fourth vertex (a + 2 b + c) / 4, in the plane of the others
+    const double tv[4][3] = {{-4, -3, -2}, {6, -1, 0}, {-1, 7, 1}, {flat ? 1.75 : 0.0, flat ? 0.5 : 1.0, flat ? -0.25 : 8.0}};
+    const int swap = r.integer(0, 1);
+    s.tet = tetrahedron3{at(tv[0][0], tv[0][1], tv[0][2]), at(tv[1 + swap][0], tv[1 + swap][1], tv[1 + swap][2]),
+                         at(tv[2 - swap][0], tv[2 - swap][1], tv[2 - swap][2]), at(tv[3][0], tv[3][1], tv[3][2])};
     const auto on_sphere = sphere_points();
     const int n = 2 * r.integer(20, 80) + 1;
     for (int i = 0; i < n; ++i) {
@@ -64,6 +72,16 @@ point_set make_set(support::rng& r, int kind) {
                 if (a == 0 || r.coin()) c[a] = r.coin() ? lo[a] : hi[a];
             p = at(c[0], c[1], c[2]);
             known = 1;
+        } else if (kind == 3) { // on the tetrahedron's boundary: weights in eighths on a face, an edge or a vertex
+            int w[4] = {r.integer(0, 8), 0, 0, 0};
+            w[1] = r.integer(0, 8 - w[0]);
+            w[2] = 8 - w[0] - w[1];
+            const int skip = r.integer(0, 3); // the vertex the face leaves out
+            double c[3] = {};
+            for (int a = 0; a < 3; ++a)
+                for (int j = 0; j < 3; ++j) c[a] += w[j] * tv[(skip + 1 + j) % 4][a] / 8.0;
+            p = at(c[0], c[1], c[2]);
+            known = 3;
         } else { // on the sphere
             const auto& q = on_sphere[static_cast<std::size_t>(r.integer(0, static_cast<int>(on_sphere.size()) - 1))];
             p = at(q[0], q[1], q[2]);
@@ -85,6 +103,8 @@ point_set special_set(support::rng& r) {
     point_set s;
     s.box = aabb3{point(), point()};
     s.ball = sphere3{point(), pick()};
+    s.tet = tetrahedron3{point(), point(), point(), point()};
+    if (r.coin()) s.tet = tetrahedron3{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     for (int i = 0; i < 37; ++i) s.points.push_back(point()), s.on_boundary.push_back(0);
     return s;
 }
@@ -119,14 +139,14 @@ void compare(const Solid& solid, const point_set& s, int boundary_kind, counts& 
 
 template <class Make>
 void every_tier_on_every_target(const char* name, long sets, Make make) {
-    counts box[4], ball[4];
+    counts box[4], ball[4], tet[4];
     int targets = 0;
     for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
         hwy::SetSupportedTargetsForTest(target);
         ++targets;
         support::rng r(support::seed());
         for (long k = 0; k < sets; ++k) {
-            const point_set s = make(r, static_cast<int>(k % 3));
+            const point_set s = make(r, static_cast<int>(k % 4));
             const std::string where = std::string(name) + " on " + hwy::TargetName(target);
             compare<exact>(s.box, s, 1, box[0], where + ", box, exact");
             compare<conservative>(s.box, s, 1, box[1], where + ", box, conservative");
@@ -136,19 +156,25 @@ void every_tier_on_every_target(const char* name, long sets, Make make) {
             compare<conservative>(s.ball, s, 2, ball[1], where + ", ball, conservative");
             compare<aggressive>(s.ball, s, 2, ball[2], where + ", ball, aggressive");
             compare<approximate>(s.ball, s, 2, ball[3], where + ", ball, approximate");
+            compare<exact>(s.tet, s, 3, tet[0], where + ", tetrahedron, exact");
+            compare<conservative>(s.tet, s, 3, tet[1], where + ", tetrahedron, conservative");
+            compare<aggressive>(s.tet, s, 3, tet[2], where + ", tetrahedron, aggressive");
+            compare<approximate>(s.tet, s, 3, tet[3], where + ", tetrahedron, approximate");
         }
     }
     hwy::SetSupportedTargetsForTest(0);
     std::printf(
         "[cases] batch points %s: %d SIMD targets, %ld lanes per tier and solid; lanes unlike the scalar answer: box %ld %ld %ld %ld, "
-        "ball %ld %ld %ld %ld (exact, conservative, aggressive, approximate); exact lanes on the boundary not inside: box %ld, "
-        "ball %ld\n",
+        "ball %ld %ld %ld %ld, tetrahedron %ld %ld %ld %ld (exact, conservative, aggressive, approximate); exact lanes on the "
+        "boundary not inside: box %ld, ball %ld, tetrahedron %ld\n",
         name, targets, box[0].lanes, box[0].wrong, box[1].wrong, box[2].wrong, box[3].wrong, ball[0].wrong, ball[1].wrong, ball[2].wrong,
-        ball[3].wrong, box[0].boundary_wrong, ball[0].boundary_wrong);
+        ball[3].wrong, tet[0].wrong, tet[1].wrong, tet[2].wrong, tet[3].wrong, box[0].boundary_wrong, ball[0].boundary_wrong,
+        tet[0].boundary_wrong);
     CHECK(targets >= 2);
-    for (int t = 0; t < 4; ++t) CHECK((box[t].wrong == 0 && ball[t].wrong == 0));
+    for (int t = 0; t < 4; ++t) CHECK((box[t].wrong == 0 && ball[t].wrong == 0 && tet[t].wrong == 0));
     CHECK(box[0].boundary_wrong == 0);
     CHECK(ball[0].boundary_wrong == 0);
+    CHECK(tet[0].boundary_wrong == 0);
 }
 
 } // namespace

@@ -1,9 +1,11 @@
-// batch::intersects(ray3, triangles): on every SIMD target this processor has (Highway lets a test
-// choose it), each lane's answer equals the scalar intersects<Tier>(ray, triangle) in all four
-// tiers, for the array and the structure-of-arrays entry points, on random triangles, on meshes
-// whose edges and vertices the rays pass exactly (with coplanar rays, degenerate triangles, ulp
-// nudges and scales 2^-500..2^500), and on special values (NaN, infinities, huge and subnormal
-// coordinates). The exact lanes are also checked against the CGAL Epeck oracle on the meshes.
+// batch::intersects(ray3, triangles) and batch::intersects(rays, triangle3): on every SIMD target
+// this processor has (Highway lets a test choose it), each lane's answer equals the scalar
+// intersects<Tier>(ray, triangle) in all four tiers, for the array and the structure-of-arrays
+// entry points, on random triangles, on meshes whose edges and vertices the rays pass exactly
+// (with coplanar rays, degenerate triangles, ulp nudges and scales 2^-500..2^500), and on special
+// values (NaN, infinities, huge and subnormal coordinates); many rays at one triangle's vertices,
+// edges, inside and outside points, in its plane and not. The exact lanes are also checked
+// against the CGAL Epeck oracle on the meshes and the rays.
 #include <catch2/catch_test_macros.hpp>
 #include <hwy/targets.h>
 #include <cmath>
@@ -105,6 +107,84 @@ struct counts {
     long lanes = 0, wrong = 0;
 };
 
+// Many rays against one triangle: the triangle (0,0,0), (4,0,0), (0,4,0) in a random frame (axes
+// permuted, scaled, translated; collinear once in eight), and 2 n + 1 rays aimed exactly at a
+// vertex, an edge point, an inside or an outside point, lying in the plane once in four, pointing
+// away once in eight, nudged or with a zero direction now and then; or, for `special`, rays and a
+// triangle of special values.
+struct rays_set {
+    triangle3 triangle;
+    std::vector<ray3> rays;
+};
+rays_set rays_at_one(support::rng& r, bool special) {
+    rays_set s;
+    if (special) {
+        auto pick = [&] { return support::special_or_uniform(r); };
+        auto point = [&] { return point3{pick(), pick(), pick()}; };
+        s.triangle = r.coin() ? triangle3{point(), point(), point()} : triangle3{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+        for (int i = 0; i < 37; ++i) s.rays.push_back(ray3{point(), vec3{pick(), pick(), pick()}});
+        return s;
+    }
+    using support::small;
+    const int perm = r.integer(0, 2);
+    auto axes = [perm](double x, double y, double z) {
+        return perm == 0 ? std::array<double, 3>{x, y, z} : (perm == 1 ? std::array<double, 3>{z, x, y} : std::array<double, 3>{y, z, x});
+    };
+    support::transform tr = support::random_transform(r, r.coin());
+    auto at = [&](double x, double y, double z) {
+        const auto q = axes(x, y, z);
+        return P(tr, q[0], q[1], q[2]);
+    };
+    s.triangle = r.integer(0, 7) == 0 ? triangle3{at(0, 0, 0), at(2, 2, 0), at(4, 4, 0)} : triangle3{at(0, 0, 0), at(4, 0, 0), at(0, 4, 0)};
+    const int n = 2 * r.integer(20, 80) + 1;
+    for (int i = 0; i < n; ++i) {
+        const int kind = r.integer(0, 3);
+        double tx = r.integer(0, 4), ty = 0;                                     // an edge point (or a vertex) of the first edge
+        if (kind == 1) tx = r.integer(0, 4), ty = 4 - tx;                        // the hypotenuse
+        else if (kind == 2) tx = r.integer(1, 2), ty = r.integer(1, 2) - 0.5;    // inside
+        else if (kind == 3) tx = r.integer(-2, 6), ty = r.integer(-2, 6) + 0.25; // anywhere, mostly outside
+        const bool coplanar = r.integer(0, 3) == 0;
+        const double ox = small(r), oy = small(r), oz = coplanar ? 0.0 : small(r);
+        double dx = tx - ox, dy = ty - oy, dz = -oz;
+        if (r.integer(0, 7) == 0) dx = -dx, dy = -dy, dz = -dz; // pointing away
+        if (r.integer(0, 31) == 0) dx = dy = dz = 0;            // a point
+        const auto d = axes(dx, dy, dz);
+        ray3 ray{at(ox, oy, oz), vec3{tr.dir(d[0]), tr.dir(d[1]), tr.dir(d[2])}};
+        if (r.integer(0, 7) == 0)
+            ray.origin = {support::nudge(ray.origin.x, r.integer(-2, 2)), support::nudge(ray.origin.y, r.integer(-2, 2)), ray.origin.z};
+        s.rays.push_back(ray);
+    }
+    return s;
+}
+
+// Every lane of both entry points of many rays against one triangle, against the scalar query.
+template <class Tier>
+void compare_rays(const rays_set& s, counts& c, const std::string& where) {
+    const std::size_t n = s.rays.size();
+    std::vector<std::uint8_t> aos(n, 7), soa(n, 7);
+    const auto ra = batch::intersects<Tier>(std::span<const ray3>(s.rays), s.triangle, aos);
+    std::vector<double> f[6];
+    for (const ray3& ray : s.rays) {
+        const double v[6] = {ray.origin.x, ray.origin.y, ray.origin.z, ray.direction.x, ray.direction.y, ray.direction.z};
+        for (int k = 0; k < 6; ++k) f[k].push_back(v[k]);
+    }
+    const auto rs = batch::intersects<Tier>(batch::rays_soa{f[0], f[1], f[2], f[3], f[4], f[5]}, s.triangle, soa);
+    REQUIRE(ra.has_value());
+    REQUIRE(rs.has_value());
+    std::size_t met = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint8_t scalar = intersects<Tier>(s.rays[i], s.triangle) ? 1 : 0;
+        met += scalar;
+        ++c.lanes;
+        if (aos[i] != scalar || soa[i] != scalar) {
+            if (++c.wrong <= 5)
+                std::printf("  %s lane %zu: scalar %d, batch %d (array) %d (soa); ray %s dir %s\n", where.c_str(), i, scalar, aos[i],
+                            soa[i], str(s.rays[i].origin).c_str(), str(s.rays[i].direction).c_str());
+        }
+    }
+    if (ra.value() != met || rs.value() != met) ++c.wrong;
+}
+
 // Every lane of both entry points against the scalar query of the tier.
 template <class Tier>
 void compare(const ray_set& s, counts& c, const std::string& where) {
@@ -169,6 +249,67 @@ TEST_CASE("batch ray_triangles: every lane is the scalar answer, special values,
     every_tier_on_every_target("special", support::cases(400), special_set);
 }
 
+TEST_CASE("batch rays_triangle: every lane is the scalar answer, rays at one triangle's vertices and edges, every target", "[batch]") {
+    counts c[4], sc[4];
+    int targets = 0;
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        ++targets;
+        support::rng r(support::seed());
+        const std::string where = std::string("rays on ") + hwy::TargetName(target);
+        for (long k = 0; k < support::cases(300); ++k) {
+            const rays_set s = rays_at_one(r, false), sp = rays_at_one(r, true);
+            compare_rays<exact>(s, c[0], where + ", exact");
+            compare_rays<conservative>(s, c[1], where + ", conservative");
+            compare_rays<aggressive>(s, c[2], where + ", aggressive");
+            compare_rays<approximate>(s, c[3], where + ", approximate");
+            compare_rays<exact>(sp, sc[0], where + ", special, exact");
+            compare_rays<conservative>(sp, sc[1], where + ", special, conservative");
+            compare_rays<aggressive>(sp, sc[2], where + ", special, aggressive");
+            compare_rays<approximate>(sp, sc[3], where + ", special, approximate");
+        }
+    }
+    hwy::SetSupportedTargetsForTest(0);
+    std::printf("[cases] batch rays_triangle: %d SIMD targets, %ld lanes per tier (and %ld of special values); lanes unlike the scalar "
+                "answer: %ld %ld %ld %ld, special %ld %ld %ld %ld (exact, conservative, aggressive, approximate)\n",
+                targets, c[0].lanes, sc[0].lanes, c[0].wrong, c[1].wrong, c[2].wrong, c[3].wrong, sc[0].wrong, sc[1].wrong, sc[2].wrong,
+                sc[3].wrong);
+    CHECK(targets >= 2);
+    for (int t = 0; t < 4; ++t) CHECK((c[t].wrong == 0 && sc[t].wrong == 0));
+}
+
+TEST_CASE("batch rays_triangle: the exact lanes against the CGAL Epeck oracle", "[batch]") {
+    support::rng r(support::seed());
+    long lanes = 0, wrong = 0, skipped = 0, met = 0;
+    for (long k = 0; k < support::cases(1000); ++k) {
+        const rays_set s = rays_at_one(r, false);
+        std::vector<std::uint8_t> out(s.rays.size());
+        REQUIRE(batch::intersects<exact>(std::span<const ray3>(s.rays), s.triangle, out).has_value());
+        double a[3], b[3], c[3];
+        support::arr(s.triangle.a, a);
+        support::arr(s.triangle.b, b);
+        support::arr(s.triangle.c, c);
+        for (std::size_t i = 0; i < s.rays.size(); ++i) {
+            if (s.rays[i].direction == vec3{0, 0, 0} || oracle::triangle_is_degenerate(a, b, c)) {
+                ++skipped;
+                continue;
+            }
+            double o[3], d[3];
+            support::arr(s.rays[i].origin, o);
+            support::arr(s.rays[i].direction, d);
+            ++lanes;
+            met += out[i];
+            if ((out[i] == 1) != oracle::ray_triangle(o, d, a, b, c)) ++wrong;
+        }
+    }
+    std::printf("[cases] batch rays_triangle exact against the oracle: %ld lanes (%ld met), %ld wrong; %ld lanes with a zero direction "
+                "or a collinear triangle left to the scalar test\n",
+                lanes, met, wrong, skipped);
+    CHECK(wrong == 0);
+    CHECK(met * 5 > lanes); // the rays mostly aim at the triangle
+    CHECK(skipped * 4 < lanes);
+}
+
 TEST_CASE("batch ray_triangles: the exact lanes against the CGAL Epeck oracle, rays through a mesh", "[batch]") {
     support::rng r(support::seed());
     long lanes = 0, wrong = 0, skipped = 0;
@@ -221,6 +362,16 @@ TEST_CASE("batch ray_triangles: sizes", "[batch]") {
     const auto bad = batch::intersects<exact>(ray, uneven, out);
     REQUIRE(bad.has_error());
     CHECK(bad.error().code == errc::size_mismatch);
+    const std::vector<ray3> rays(3, ray);
+    const auto short_out = batch::intersects<exact>(std::span<const ray3>(rays), ts[0], out);
+    REQUIRE(short_out.has_error());
+    CHECK(short_out.error().code == errc::size_mismatch);
+    out.resize(3);
+    const auto three = batch::intersects<exact>(std::span<const ray3>(rays), ts[0], out);
+    REQUIRE(three.has_value());
+    CHECK(three.value() == 3);
+    const auto uneven_rays = batch::intersects<exact>(batch::rays_soa{x, x, x, x, x, y}, ts[0], std::span<std::uint8_t>(out.data(), 2));
+    REQUIRE(uneven_rays.has_error());
 }
 
 } // namespace test_batch_ray_triangles

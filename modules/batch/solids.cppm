@@ -1,0 +1,163 @@
+// Many boxes or balls against one box or one ball: batch::intersects<Tier>(one, many, out) for one
+// and many among aabb3 and sphere3 (the broad phase's and the culling's tests), for many as an
+// array of shapes or as a structure-of-arrays packet (boxes_soa, spheres_soa). out[i] is 1 where
+// many[i] meets the closed box or ball `one`, else 0: the answer of the scalar
+// intersects<Tier>(one, many[i]), bit for bit, in every tier (tests/batch/solids.cpp checks it on
+// every SIMD target).
+// Method (solids_simd.cpp): box against box by the scalar body's six comparisons, exact in every
+// tier; a ball against a box or a ball by the sign of r r - |g|^2 (degree 2; Ericson, Real-Time
+// Collision Detection, 2005, sections 4.3.1 and 5.2.5: g the centre's gap to the box or the other
+// centre), in plain double for the approximate tier, and in the filtered tiers in the semi-static
+// filter against a static bound per block of 64 lanes, then each lane's own bound, then the
+// scalar query for a lane still open.
+module;
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <type_traits>
+export module incidence.batch:solids;
+import incidence.core;
+import incidence.shapes;
+import incidence.query;
+import :lanes;
+
+// The SIMD kernels (solids_simd.cpp). A box is six fields (min.x, min.y, min.z, max.x, max.y,
+// max.z), a ball four (centre x, y, z, radius): for the one shape each field points at one value,
+// for the many at an array of n. box_balls: `boxes` says which side is the many. The filter
+// (filter = true) writes 2 where it could not prove the sign.
+extern "C++" {
+namespace incidence::batch::simd {
+void box_boxes(const double* const* box, const double* const* boxes, std::size_t n, std::uint8_t* out);
+void box_balls(const double* const* box, const double* const* ball, bool boxes, std::size_t n, bool filter, std::uint8_t* out);
+void ball_balls(const double* const* ball, const double* const* balls, std::size_t n, bool filter, std::uint8_t* out);
+} // namespace incidence::batch::simd
+}
+
+export namespace incidence::batch {
+
+// Boxes kept as structure of arrays: six arrays of one length, box i being
+// {{min_x[i], min_y[i], min_z[i]}, {max_x[i], max_y[i], max_z[i]}}.
+struct boxes_soa {
+    std::span<const double> min_x, min_y, min_z, max_x, max_y, max_z;
+    [[nodiscard]] constexpr std::size_t size() const { return min_x.size(); }
+    [[nodiscard]] constexpr bool consistent() const {
+        const std::size_t n = min_x.size();
+        return min_y.size() == n && min_z.size() == n && max_x.size() == n && max_y.size() == n && max_z.size() == n;
+    }
+    [[nodiscard]] constexpr aabb3 operator[](std::size_t i) const {
+        return {{min_x[i], min_y[i], min_z[i]}, {max_x[i], max_y[i], max_z[i]}};
+    }
+};
+// Balls kept as structure of arrays: ball i has centre {x[i], y[i], z[i]} and radius radius[i].
+struct spheres_soa {
+    std::span<const double> x, y, z, radius;
+    [[nodiscard]] constexpr std::size_t size() const { return x.size(); }
+    [[nodiscard]] constexpr bool consistent() const { return y.size() == x.size() && z.size() == x.size() && radius.size() == x.size(); }
+    [[nodiscard]] constexpr sphere3 operator[](std::size_t i) const { return {{x[i], y[i], z[i]}, radius[i]}; }
+};
+
+} // namespace incidence::batch
+
+namespace incidence::batch::detail {
+
+template <class S>
+inline constexpr std::size_t fields_of = std::is_same_v<S, aabb3> ? 6 : 4;
+template <class S>
+using soa_of = std::conditional_t<std::is_same_v<S, aabb3>, boxes_soa, spheres_soa>;
+inline void unpack(const aabb3& b, double* f) {
+    const double v[6] = {b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z};
+    for (int k = 0; k < 6; ++k) f[k] = v[k];
+}
+inline void unpack(const sphere3& s, double* f) {
+    const double v[4] = {s.center.x, s.center.y, s.center.z, s.radius};
+    for (int k = 0; k < 4; ++k) f[k] = v[k];
+}
+inline void arrays(const boxes_soa& b, const double** p) {
+    const double* v[6] = {b.min_x.data(), b.min_y.data(), b.min_z.data(), b.max_x.data(), b.max_y.data(), b.max_z.data()};
+    for (int k = 0; k < 6; ++k) p[k] = v[k];
+}
+inline void arrays(const spheres_soa& s, const double** p) {
+    const double* v[4] = {s.x.data(), s.y.data(), s.z.data(), s.radius.data()};
+    for (int k = 0; k < 4; ++k) p[k] = v[k];
+}
+
+// n lanes of `Many` (its fields' arrays) against `one`: the kernel of the tier, then the scalar
+// query where the filter left a lane open. The number of lanes met.
+template <tier Tier, class One, class Many, class At>
+std::size_t solids_block(const One& one, const double* const* many, std::size_t n, std::uint8_t* out, const At& at) {
+    double values[6];
+    unpack(one, values);
+    const double* fields[6] = {values, values + 1, values + 2, values + 3, values + 4, values + 5};
+    constexpr bool filter = !std::is_same_v<Tier, approximate>;
+    if constexpr (std::is_same_v<One, aabb3> && std::is_same_v<Many, aabb3>) simd::box_boxes(fields, many, n, out);
+    else if constexpr (std::is_same_v<One, aabb3>) simd::box_balls(fields, many, false, n, filter, out);
+    else if constexpr (std::is_same_v<Many, aabb3>) simd::box_balls(many, fields, true, n, filter, out);
+    else simd::ball_balls(fields, many, n, filter, out);
+    return settle_open(out, n, [&](std::size_t i) { return incidence::intersects<Tier>(one, at(i)); });
+}
+
+template <tier Tier, class One, class Many>
+result<std::size_t> solids(const One& one, std::span<const Many> many, std::span<std::uint8_t> out) {
+    if (out.size() != many.size()) return error{errc::size_mismatch};
+    if constexpr (std::is_same_v<One, aabb3> && std::is_same_v<Many, aabb3>) {
+        // six comparisons read in place: transposing an array of boxes into lanes measured slower
+        // than the comparisons themselves (bench/NOTES.md, "Batches"); the packet entry runs in lanes
+        std::size_t met = 0;
+        for (std::size_t i = 0; i < many.size(); ++i) met += out[i] = incidence::intersects<Tier>(one, many[i]) ? 1 : 0;
+        return met;
+    }
+    return by_blocks<fields_of<Many>>(
+        many, out.data(), [](const Many& s, double* f) { unpack(s, f); },
+        [&](const double* const* coords, std::size_t n, std::uint8_t* o, std::size_t start) {
+            return solids_block<Tier, One, Many>(one, coords, n, o, [&](std::size_t i) { return many[start + i]; });
+        });
+}
+template <tier Tier, class One, class Soa>
+result<std::size_t> solids(const One& one, const Soa& many, std::span<std::uint8_t> out) {
+    if (!many.consistent() || out.size() != many.size()) return error{errc::size_mismatch};
+    const double* p[6] = {};
+    arrays(many, p);
+    using Many = std::remove_cvref_t<decltype(many[0])>;
+    return solids_block<Tier, One, Many>(one, p, many.size(), out.data(), [&](std::size_t i) { return many[i]; });
+}
+
+} // namespace incidence::batch::detail
+
+export namespace incidence::batch {
+
+// Does each box (or ball) of `many` meet `one`? out[i] for many[i] (out as long as many); the
+// number met. Tiers as the scalar intersects: the same answer, lane by lane.
+template <tier Tier = exact>
+[[nodiscard]] result<std::size_t> intersects(const aabb3& one, std::span<const aabb3> many, std::span<std::uint8_t> out) {
+    return detail::solids<Tier>(one, many, out);
+}
+template <tier Tier = exact>
+[[nodiscard]] result<std::size_t> intersects(const aabb3& one, std::span<const sphere3> many, std::span<std::uint8_t> out) {
+    return detail::solids<Tier>(one, many, out);
+}
+template <tier Tier = exact>
+[[nodiscard]] result<std::size_t> intersects(const sphere3& one, std::span<const aabb3> many, std::span<std::uint8_t> out) {
+    return detail::solids<Tier>(one, many, out);
+}
+template <tier Tier = exact>
+[[nodiscard]] result<std::size_t> intersects(const sphere3& one, std::span<const sphere3> many, std::span<std::uint8_t> out) {
+    return detail::solids<Tier>(one, many, out);
+}
+template <tier Tier = exact>
+[[nodiscard]] result<std::size_t> intersects(const aabb3& one, const boxes_soa& many, std::span<std::uint8_t> out) {
+    return detail::solids<Tier>(one, many, out);
+}
+template <tier Tier = exact>
+[[nodiscard]] result<std::size_t> intersects(const aabb3& one, const spheres_soa& many, std::span<std::uint8_t> out) {
+    return detail::solids<Tier>(one, many, out);
+}
+template <tier Tier = exact>
+[[nodiscard]] result<std::size_t> intersects(const sphere3& one, const boxes_soa& many, std::span<std::uint8_t> out) {
+    return detail::solids<Tier>(one, many, out);
+}
+template <tier Tier = exact>
+[[nodiscard]] result<std::size_t> intersects(const sphere3& one, const spheres_soa& many, std::span<std::uint8_t> out) {
+    return detail::solids<Tier>(one, many, out);
+}
+
+} // namespace incidence::batch
