@@ -1,9 +1,11 @@
-// Benchmarks: batches. One ray against a set of triangles; a box, a ball or a tetrahedron against a
-// set of points (batch::intersects: <tier>/batch_intersects/{aabb,sphere}_points[_soa]/<dist> and
-// tetrahedron_points beside <tier>/scalar_loop/...); a box or a ball against a set of boxes or
-// balls (aabb_aabbs, aabb_spheres, sphere_aabbs, sphere_spheres, the same way); a set of rays
-// against one triangle, box or ball (rays_triangle, rays_aabb, rays_sphere) and one ray against
-// boxes or balls (ray_aabbs, ray_spheres). The triangles in every tier,
+// Benchmarks: batches. One ray against a set of triangles, and its first hit among them
+// (<tier>/batch_intersection/ray_triangles/<dist> beside <tier>/scalar_loop_intersection/...); a
+// box, a ball or a tetrahedron against a set of points (batch::intersects:
+// <tier>/batch_intersects/{aabb,sphere}_points[_soa]/<dist> and tetrahedron_points beside
+// <tier>/scalar_loop/...); a box or a ball against a set of boxes or balls (aabb_aabbs,
+// aabb_spheres, sphere_aabbs, sphere_spheres, the same way); a set of rays against one triangle,
+// box or ball (rays_triangle, rays_aabb, rays_sphere) and one ray against boxes or balls
+// (ray_aabbs, ray_spheres). The triangles in every tier,
 // beside the loop over the scalar query that it replaces, on each SIMD target the processor has:
 //   <tier>/batch_intersects/ray_triangles/<dist>              the dispatched (best) target
 //   <tier>/batch_intersects/ray_triangles_<TARGET>/<dist>     one target (AVX3 = AVX-512, AVX2, SSE4)
@@ -17,6 +19,7 @@
 #include "bench.hpp"
 #include <hwy/targets.h>
 #include <algorithm>
+#include <optional>
 #include <span>
 #include <utility>
 
@@ -168,8 +171,53 @@ void reg_loop(const std::string& name, const std::vector<ray_batch>& set) {
     });
 }
 
+// The first hit of one ray among the set's triangles: the batch (entry 0), and the loop over the
+// scalar intersection keeping the least t (entry 1; ties to the first, plain comparisons of the
+// tier's t, so only a time to compare with). Before timing, the batch against the scene's first
+// hit over the same triangles.
+template <class Tier>
+void reg_first_hit(const std::string& name, const std::vector<ray_batch>& set, int entry) {
+    benchmark::RegisterBenchmark(name.c_str(), [set, entry](benchmark::State& st) {
+        for (const ray_batch& b : set) {
+            const auto h = batch::intersection<Tier>(b.ray, std::span<const triangle3>(b.triangles));
+            const auto scene = scene3::make(std::span<const triangle3>(b.triangles));
+            if (!h || !scene) return st.SkipWithError("refused");
+            const auto truth = intersection<Tier>(b.ray, scene.value());
+            if (h.value().has_value() != truth.has_value() || (truth && h.value()->triangle != truth->triangle))
+                if constexpr (!std::is_same_v<Tier, approximate>) return st.SkipWithError("the first hit differs from the scene's");
+        }
+        std::size_t k = 0, hits = 0;
+        for (auto _ : st) {
+            const ray_batch& b = set[k];
+            if (entry == 0) {
+                const auto h = batch::intersection<Tier>(b.ray, std::span<const triangle3>(b.triangles));
+                hits += h.value().has_value();
+            } else {
+                std::optional<std::size_t> best;
+                double t_best = 0;
+                for (std::size_t i = 0; i < b.triangles.size(); ++i)
+                    if (const auto h = intersection<Tier>(b.ray, b.triangles[i])) {
+                        const double t = [&] {
+                            if constexpr (std::is_same_v<std::decay_t<decltype(h->t)>, double>) return h->t;
+                            else return h->t.lo;
+                        }();
+                        if (!best || t < t_best) best = i, t_best = t;
+                    }
+                hits += best.has_value();
+            }
+            benchmark::ClobberMemory();
+            if (++k == set.size()) k = 0;
+        }
+        benchmark::DoNotOptimize(hits);
+        st.counters["s_per_test"] = benchmark::Counter(static_cast<double>(set.front().triangles.size()),
+                                                       benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+    });
+}
+
 template <class Tier>
 void reg_tier(const std::string& tier, const std::string& dist, const std::vector<ray_batch>& set) {
+    reg_first_hit<Tier>(tier + "/batch_intersection/ray_triangles/" + dist, set, 0);
+    reg_first_hit<Tier>(tier + "/scalar_loop_intersection/ray_triangles/" + dist, set, 1);
     reg_batch<Tier>(tier + "/batch_intersects/ray_triangles/" + dist, set, 0);
     reg_batch<Tier>(tier + "/batch_intersects/ray_triangles_soa/" + dist, set, 0, true);
     for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {

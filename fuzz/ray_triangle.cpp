@@ -6,7 +6,8 @@
 // (NaN, infinities, subnormals, zero directions, degenerate triangles). And the batch: the ray
 // against nine triangles from the same bytes (t, u, t's vertices permuted, t's edges with other
 // apexes, doubles 18..31), and six rays of the same bytes against t, on a SIMD target the first
-// (second) byte picks, every lane equal to the scalar answer in every tier. Any finding aborts.
+// (second) byte picks, every lane equal to the scalar answer in every tier; the ray's first hit
+// among the nine (batch::intersection) is the scene's over them. Any finding aborts.
 #include "testkit/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <cmath>
@@ -36,6 +37,27 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                           {t.b, {v[27], v[28], v[29]}},
                           {{v[30], v[31], v[0]}, t.c - point3{v[30], v[31], v[0]}}};
     batch_contracts(t, std::span<const ray3>(rays), size > 1 ? data[1] : 0);
+    // the first hit among the nine: the scene's over the same triangles (exact, conservative,
+    // aggressive: value for value; without a scene, non-finite input: an exact hit is a triangle met)
+    {
+        const auto first = batch::intersection<exact>(r, std::span<const triangle3>(ts));
+        if (!first) std::abort();
+        const auto& h = first.value();
+        if (const auto scene = scene3::make(std::span<const triangle3>(ts))) {
+            const auto truth = intersection<exact>(r, scene.value());
+            if (h.has_value() != truth.has_value()) std::abort();
+            if (h && (h->triangle != truth->triangle || h->t != truth->t || h->u != truth->u || h->v != truth->v)) std::abort();
+            const auto c = batch::intersection<conservative>(r, std::span<const triangle3>(ts));
+            const auto ct = intersection<conservative>(r, scene.value());
+            if (!c || c.value().has_value() != ct.has_value() || (ct && c.value()->triangle != ct->triangle)) std::abort();
+            const auto a = batch::intersection<aggressive>(r, std::span<const triangle3>(ts));
+            const auto at = intersection<aggressive>(r, scene.value());
+            if (!a || a.value().has_value() != at.has_value() || (at && a.value()->triangle != at->triangle)) std::abort();
+        } else if (h && !intersects<exact>(r, ts[h->triangle])) {
+            std::abort();
+        }
+        (void)batch::intersection<approximate>(r, std::span<const triangle3>(ts));
+    }
     // Every tier and every find must finish on any bits.
     (void)intersects<approximate>(r, t);
     (void)intersects<conservative>(r, t);

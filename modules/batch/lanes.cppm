@@ -32,7 +32,8 @@ std::size_t by_blocks(std::span<const Shape> items, std::uint8_t* out, const Unp
     return met;
 }
 
-// After a filtered kernel: the scalar answer(i) where a lane is open (2); the number of lanes met.
+// After a kernel: the scalar answer(i) where a lane is open (2; only the filtered kernels leave
+// lanes open); the number of lanes met.
 template <class Scalar>
 std::size_t settle_open(std::uint8_t* out, std::size_t n, const Scalar& answer) {
     std::size_t met = 0;

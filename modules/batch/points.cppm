@@ -52,27 +52,20 @@ struct points_soa {
 namespace incidence::batch::detail {
 
 template <tier Tier, class At>
-std::size_t box_points_block(const aabb3& b, const double* const* coords, const double* xyz, std::size_t n, std::uint8_t* out, const At&) {
+std::size_t box_points_block(const aabb3& b, const double* const* coords, const double* xyz, std::size_t n, std::uint8_t* out,
+                             const At& at) {
     const double box[6] = {b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z};
-    simd::box_points(box, coords, xyz, n, out); // comparisons: the same answer in every tier
-    std::size_t met = 0;
-    for (std::size_t i = 0; i < n; ++i) met += out[i];
-    return met;
+    simd::box_points(box, coords, xyz, n, out); // comparisons: the same answer in every tier, no lane open
+    return settle_open(out, n, [&](std::size_t i) { return incidence::intersects<Tier>(b, at(i)); });
 }
 
 template <tier Tier, class At>
 std::size_t sphere_points_block(const sphere3& s, const double* const* coords, const double* xyz, std::size_t n, std::uint8_t* out,
                                 const At& at) {
     const double c[3] = {s.center.x, s.center.y, s.center.z};
-    if constexpr (std::is_same_v<Tier, approximate>) {
-        simd::sphere_points_approximate(c, s.radius, coords, xyz, n, out);
-        std::size_t met = 0;
-        for (std::size_t i = 0; i < n; ++i) met += out[i];
-        return met;
-    } else {
-        simd::sphere_points_filter(c, s.radius, coords, xyz, n, out);
-        return settle_open(out, n, [&](std::size_t i) { return incidence::intersects<Tier>(at(i), s); });
-    }
+    if constexpr (std::is_same_v<Tier, approximate>) simd::sphere_points_approximate(c, s.radius, coords, xyz, n, out);
+    else simd::sphere_points_filter(c, s.radius, coords, xyz, n, out);
+    return settle_open(out, n, [&](std::size_t i) { return incidence::intersects<Tier>(at(i), s); });
 }
 
 template <tier Tier, class At>

@@ -20,9 +20,9 @@
 //   Two of opposite nonzero signs: outside; nonzero ones of one sign: inside; all four zero (a
 //   flat tetrahedron): 2, for the scalar query. Plain double in the approximate tier; in the
 //   filter (eight operations per sign) a vector's lanes are decided where the signs the scalar
-//   filter reads are proven (c.d2 and c.d3 opposite, or all four), against the block's static
-//   bound (the permanents on the block's largest |d_i| per vertex and axis) and then the lanes'
-//   own; else 2.
+//   filter reads are proven (c.d2 and c.d3 opposite, or all four), against one static bound (the
+//   tetrahedron's box bounds every |d_i| of a point in it: computed once per call) and then the
+//   lanes' own; else 2.
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -227,57 +227,47 @@ void tetrahedron_points_filter(const double* t, const double* const* coords, con
     const points_at all{{coords[0], coords[1], coords[2]}, xyz};
     const tetrahedron_lanes tl(d, t);
     constexpr double gamma = gamma_of(8); // d_i: one operation; a product adds its operands' counts and one, a sum one
-    constexpr std::size_t block = 64;
-    for (std::size_t start = 0; start < n; start += block) {
-        const std::size_t m = n - start < block ? n - start : block;
-        const points_at at = all.from(start);
-        // the block's largest |d_i| per vertex and axis, over its points in the box (NaN: infinite)
-        V most[4][3];
-        for (auto& row : most)
-            for (V& x : row) x = hn::Zero(d);
-        over_points(d, at, m, [&](V x, V y, V z, std::size_t, std::size_t) {
-            const M in_box = within(d, tl.lo, tl.hi, x, y, z);
-            vec<fv> df[4];
-            tl.differences(x, y, z, df);
-            for (int i = 0; i < 4; ++i) {
-                most[i][0] = max_counting_nan(d, most[i][0], hn::IfThenElseZero(in_box, df[i].x.p));
-                most[i][1] = max_counting_nan(d, most[i][1], hn::IfThenElseZero(in_box, df[i].y.p));
-                most[i][2] = max_counting_nan(d, most[i][2], hn::IfThenElseZero(in_box, df[i].z.p));
-            }
-        });
-        vec<pp> largest[4];
-        for (int i = 0; i < 4; ++i)
-            largest[i] = {{hn::GetLane(hn::MaxOfLanes(d, most[i][0]))},
-                          {hn::GetLane(hn::MaxOfLanes(d, most[i][1]))},
-                          {hn::GetLane(hn::MaxOfLanes(d, most[i][2]))}};
-        const four<pp> permanent = volumes(largest);
-        const V bound[4] = {static_bound(d, gamma, permanent.w0.p), static_bound(d, gamma, permanent.w1.p),
-                            static_bound(d, gamma, permanent.w2.p), static_bound(d, gamma, permanent.w3.p)};
-        over_points(d, at, m, [&](V x, V y, V z, std::size_t lane, std::size_t count) {
-            const M in_box = within(d, tl.lo, tl.hi, x, y, z);
-            const M counted = hn::And(in_box, hn::FirstN(d, count));
-            vec<fv> df[4];
-            tl.differences(x, y, z, df);
-            const vec<pv> dv[4] = {values(df[0]), values(df[1]), values(df[2]), values(df[3])};
-            const four<pv> w = volumes(dv);
-            const V ws[4] = {w.w0.v, w.w1.v, w.w2.v, w.w3.v};
-            auto pos = [&](int k) { return hn::Gt(ws[k], bound[k]); };
-            auto neg = [&](int k) { return hn::Lt(ws[k], hn::Neg(bound[k])); };
-            auto proven = [&](int k) { return hn::Or(pos(k), neg(k)); };
-            const M known = hn::And(hn::And(proven(0), proven(1)), hn::And(proven(2), proven(3)));
-            verdict v = from_volumes(pos, neg, known);
-            if (!hn::AllTrue(d, hn::Or(v.decided, hn::Not(counted)))) { // the lanes' own bounds
-                const four<fv> f = volumes(df);
-                const fv fs[4] = {f.w0, f.w1, f.w2, f.w3};
-                auto own_pos = [&](int k) { return own_positive(d, gamma, fs[k]); };
-                auto own_neg = [&](int k) { return own_negative(d, gamma, fs[k]); };
-                auto own_proven = [&](int k) { return hn::Or(own_pos(k), own_neg(k)); };
-                v = from_volumes(own_pos, own_neg, hn::And(hn::And(own_proven(0), own_proven(1)), hn::And(own_proven(2), own_proven(3))));
-            }
-            // beyond the box: 0; in it: the verdict, or 2 where undecided
-            store_answers(d, hn::And(in_box, v.inside), hn::AndNot(v.decided, in_box), out + start + lane, count);
-        });
+    // One static bound for every point the signs are evaluated for, those in the tetrahedron's box
+    // [lo, hi]: there |v_ik - p_k| <= max(v_ik - lo_k, hi_k - v_ik), so (rounding being monotone)
+    // each lane's |d_ik| is at most that maximum rounded, and so are its permanents and bounds.
+    vec<pp> largest[4];
+    for (int i = 0; i < 4; ++i) {
+        double e[3];
+        for (int k = 0; k < 3; ++k) {
+            double lo = t[k], hi = t[k];
+            for (int j = 1; j < 4; ++j) lo = t[3 * j + k] < lo ? t[3 * j + k] : lo, hi = t[3 * j + k] > hi ? t[3 * j + k] : hi;
+            const double below = t[3 * i + k] - lo, above = hi - t[3 * i + k];
+            e[k] = below > above ? below : above;
+        }
+        largest[i] = {{e[0]}, {e[1]}, {e[2]}};
     }
+    const four<pp> permanent = volumes(largest);
+    const V bound[4] = {static_bound(d, gamma, permanent.w0.p), static_bound(d, gamma, permanent.w1.p),
+                        static_bound(d, gamma, permanent.w2.p), static_bound(d, gamma, permanent.w3.p)};
+    over_points(d, all, n, [&](V x, V y, V z, std::size_t lane, std::size_t count) {
+        const M in_box = within(d, tl.lo, tl.hi, x, y, z);
+        const M counted = hn::And(in_box, hn::FirstN(d, count));
+        vec<fv> df[4];
+        tl.differences(x, y, z, df);
+        const vec<pv> dv[4] = {values(df[0]), values(df[1]), values(df[2]), values(df[3])};
+        const four<pv> w = volumes(dv);
+        const V ws[4] = {w.w0.v, w.w1.v, w.w2.v, w.w3.v};
+        auto pos = [&](int k) { return hn::Gt(ws[k], bound[k]); };
+        auto neg = [&](int k) { return hn::Lt(ws[k], hn::Neg(bound[k])); };
+        auto proven = [&](int k) { return hn::Or(pos(k), neg(k)); };
+        const M known = hn::And(hn::And(proven(0), proven(1)), hn::And(proven(2), proven(3)));
+        verdict v = from_volumes(pos, neg, known);
+        if (!hn::AllTrue(d, hn::Or(v.decided, hn::Not(counted)))) { // the lanes' own bounds
+            const four<fv> f = volumes(df);
+            const fv fs[4] = {f.w0, f.w1, f.w2, f.w3};
+            auto own_pos = [&](int k) { return own_positive(d, gamma, fs[k]); };
+            auto own_neg = [&](int k) { return own_negative(d, gamma, fs[k]); };
+            auto own_proven = [&](int k) { return hn::Or(own_pos(k), own_neg(k)); };
+            v = from_volumes(own_pos, own_neg, hn::And(hn::And(own_proven(0), own_proven(1)), hn::And(own_proven(2), own_proven(3))));
+        }
+        // beyond the box: 0; in it: the verdict, or 2 where undecided
+        store_answers(d, hn::And(in_box, v.inside), hn::AndNot(v.decided, in_box), out + lane, count);
+    });
 }
 
 } // namespace incidence::batch::simd::HWY_NAMESPACE

@@ -3,7 +3,9 @@
 // one triangle: batch::intersects<Tier>(rays, triangle, out), rays as an array of ray3 or a packet
 // (rays_soa). out[i] is 1 where the ray meets triangle i (ray i meets the triangle), else 0: the
 // answer of the scalar intersects<Tier>(ray, triangle), bit for bit, in every tier
-// (tests/batch/ray_triangles.cpp checks it on every SIMD target).
+// (tests/batch/ray_triangles.cpp checks it on every SIMD target). And the first hit of one ray
+// among many triangles: batch::intersection<Tier>(ray, triangles), the hit intersection<Tier>(ray,
+// scene) finds in a scene of the same triangles (tests/batch/ray_triangles.cpp checks that too).
 // Method: the lanes run the scalar algorithm's operations in SIMD (ray_triangles_simd.cpp):
 // - approximate: the watertight test (Woop, Benthin and Wald, JCGT 2(1), 2013), the scalar
 //   approximate tier's, with its bound (catalog: ray_triangle);
@@ -16,12 +18,14 @@
 module;
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <type_traits>
 export module incidence.batch:ray_triangles;
 import incidence.core;
 import incidence.shapes;
 import incidence.query;
+import incidence.scene;
 import :lanes;
 
 // The SIMD kernels (ray_triangles_simd.cpp, compiled for every target Highway knows; the best one
@@ -81,31 +85,45 @@ template <tier Tier, class At>
 std::size_t ray_triangles_block(const ray3& r, const double* const* coords, std::size_t n, std::uint8_t* out, const At& at) {
     const double o[3] = {r.origin.x, r.origin.y, r.origin.z};
     const double d[3] = {r.direction.x, r.direction.y, r.direction.z};
-    if constexpr (std::is_same_v<Tier, approximate>) {
-        simd::ray_triangles_watertight(o, d, coords, n, out);
-        std::size_t met = 0;
-        for (std::size_t i = 0; i < n; ++i) met += out[i];
-        return met;
-    } else {
-        simd::ray_triangles_filter(o, d, coords, n, out);
-        return settle_open(out, n, [&](std::size_t i) { return incidence::intersects<Tier>(r, at(i)); });
-    }
+    if constexpr (std::is_same_v<Tier, approximate>) simd::ray_triangles_watertight(o, d, coords, n, out);
+    else simd::ray_triangles_filter(o, d, coords, n, out);
+    return settle_open(out, n, [&](std::size_t i) { return incidence::intersects<Tier>(r, at(i)); });
 }
+
+// The first hit's candidates, block by block (detail::triangles_first_hit): the triangles
+// [start, start + n) copied out and the filter's lanes (0: the ray surely misses), from an array
+// or from a packet.
+struct first_hit_context {
+    double origin[3], direction[3];
+    const triangle3* array;
+    const triangles_soa* packet;
+};
+inline void first_hit_candidates(const void* p, std::size_t start, std::size_t n, std::uint8_t* candidate, triangle3* triangles) {
+    const auto& c = *static_cast<const first_hit_context*>(p);
+    double buffer[9][block];
+    const double* coords[9];
+    for (std::size_t i = 0; i < n; ++i) {
+        const triangle3 t = c.array != nullptr ? c.array[start + i] : (*c.packet)[start + i];
+        triangles[i] = t;
+        const double v[9] = {t.a.x, t.a.y, t.a.z, t.b.x, t.b.y, t.b.z, t.c.x, t.c.y, t.c.z};
+        for (int k = 0; k < 9; ++k) buffer[k][i] = v[k];
+    }
+    for (int k = 0; k < 9; ++k) coords[k] = buffer[k];
+    simd::ray_triangles_filter(c.origin, c.direction, coords, n, candidate);
+}
+inline first_hit_context first_hit_of(const ray3& r, const triangle3* array, const triangles_soa* packet) {
+    return {{r.origin.x, r.origin.y, r.origin.z}, {r.direction.x, r.direction.y, r.direction.z}, array, packet};
+}
+static_assert(incidence::detail::candidate_block <= block);
 
 // n rays (six SoA arrays) against one triangle, the same way.
 template <tier Tier, class At>
 std::size_t rays_triangle_block(const double* const* rays, const triangle3& t, std::size_t n, std::uint8_t* out, const At& at) {
     const double v[9] = {t.a.x, t.a.y, t.a.z, t.b.x, t.b.y, t.b.z, t.c.x, t.c.y, t.c.z};
     const double* fields[9] = {v, v + 1, v + 2, v + 3, v + 4, v + 5, v + 6, v + 7, v + 8};
-    if constexpr (std::is_same_v<Tier, approximate>) {
-        simd::rays_triangle_watertight(rays, fields, n, out);
-        std::size_t met = 0;
-        for (std::size_t i = 0; i < n; ++i) met += out[i];
-        return met;
-    } else {
-        simd::rays_triangle_filter(rays, fields, n, out);
-        return settle_open(out, n, [&](std::size_t i) { return incidence::intersects<Tier>(at(i), t); });
-    }
+    if constexpr (std::is_same_v<Tier, approximate>) simd::rays_triangle_watertight(rays, fields, n, out);
+    else simd::rays_triangle_filter(rays, fields, n, out);
+    return settle_open(out, n, [&](std::size_t i) { return incidence::intersects<Tier>(at(i), t); });
 }
 
 } // namespace incidence::batch::detail
@@ -133,6 +151,23 @@ template <tier Tier = exact>
     const double* coords[9] = {triangles.ax.data(), triangles.ay.data(), triangles.az.data(), triangles.bx.data(), triangles.by.data(),
                                triangles.bz.data(), triangles.cx.data(), triangles.cy.data(), triangles.cz.data()};
     return detail::ray_triangles_block<Tier>(r, coords, triangles.size(), out.data(), [&](std::size_t i) { return triangles[i]; });
+}
+
+// The first hit of the ray among the triangles: the least parameter, ties to the least index, as
+// intersection<Tier>(ray, scene) over a scene of the same triangles defines it (t, point, normal,
+// barycentrics and the triangle's index; exact correctly rounded, conservative and aggressive
+// enclosures, approximate plain double with exists uncertain). The filter's lanes rule out the
+// triangles the ray surely misses; the rest are weighed by the scene's search.
+template <tier Tier = exact>
+[[nodiscard]] result<std::optional<scene_hit<scene_value_t<Tier>>>> intersection(const ray3& r, std::span<const triangle3> triangles) {
+    const detail::first_hit_context c = detail::first_hit_of(r, triangles.data(), nullptr);
+    return incidence::detail::triangles_first_hit<Tier>(r, triangles.size(), detail::first_hit_candidates, &c);
+}
+template <tier Tier = exact>
+[[nodiscard]] result<std::optional<scene_hit<scene_value_t<Tier>>>> intersection(const ray3& r, const triangles_soa& triangles) {
+    if (!triangles.consistent()) return error{errc::size_mismatch};
+    const detail::first_hit_context c = detail::first_hit_of(r, nullptr, &triangles);
+    return incidence::detail::triangles_first_hit<Tier>(r, triangles.size(), detail::first_hit_candidates, &c);
 }
 
 // Does each ray meet the triangle? out[i] for rays[i] (out as long as rays); the number of rays

@@ -27,6 +27,7 @@
 // exact sign in place where it cannot decide (filter_kernel::decided_sgn), so one pass decides.
 module;
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <type_traits>
 export module incidence.scene:linear_scene;
@@ -61,6 +62,18 @@ template <class Tier, class S>
 [[nodiscard]] bool scene_any_hit(const S& x, const scene3& s);
 template <class Tier, class S>
 [[nodiscard]] std::optional<scene_hit<scene_value_t<Tier>>> scene_first_hit(const S& x, const scene3& s);
+} // namespace incidence::detail
+
+export namespace incidence::detail {
+// The first hit of a ray among `count` triangles, with the scene's rule (the least parameter,
+// ties to the least index), for the batches (batch::intersection): fill(context, start, n,
+// candidate, triangles) writes triangles start .. start + n - 1 (n <= candidate_block) and marks
+// with candidate[i] == 0 those the ray surely misses. Compiled once (traversal.cpp) per tier.
+inline constexpr std::size_t candidate_block = 64;
+using candidates_fn = void (*)(const void* context, std::size_t start, std::size_t n, std::uint8_t* candidate, triangle3* triangles);
+template <class Tier>
+[[nodiscard]] std::optional<scene_hit<scene_value_t<Tier>>> triangles_first_hit(const ray3& r, std::size_t count, candidates_fn fill,
+                                                                                const void* context);
 } // namespace incidence::detail
 
 export namespace incidence {

@@ -157,34 +157,82 @@ double upper_bound(const contact_end& e, const linear3& s) {
     return hi == hi ? hi : inf;
 }
 
-// The first contact in kernel K: the least end over the triangles, ties to the least source index.
+// The search for the first contact in kernel K: consider(source, t) weighs triangle t (its
+// caller's index `source`); the least end wins, ties to the least source index.
+template <class K>
+struct contact_search {
+    K& k;
+    linear3 s;
+    aabb3 xb;
+    std::optional<contact_end> first{};
+    std::size_t best = 0;
+    triangle3 best_triangle{};
+    double limit = inf; // an upper bound of the best end's parameter
+    void consider(std::size_t source, const triangle3& t) {
+        if (!boxes_meet(xb, bounds(t))) return; // the scalar pair's first step (comparisons)
+        if (const auto r = triangle_span(k, s, t)) {
+            const sign c = first ? compare_ends(k, r->enter, *first, s) : sign::negative;
+            if (c == sign::negative || (c == sign::zero && source < best)) {
+                first = r->enter;
+                best = source;
+                best_triangle = t;
+                limit = upper_bound(*first, s);
+            }
+        }
+    }
+    [[nodiscard]] std::optional<scene_hit<arith::value_t<K>>> hit() const {
+        if (!first) return std::nullopt;
+        const auto h = triangle_values(k, *first, s, best_triangle);
+        return scene_hit<arith::value_t<K>>{h.t, h.point, h.normal, h.u, h.v, h.w, best};
+    }
+};
+
+// The first contact in kernel K over the scene's triangles, through the hierarchy.
 template <class K, class S>
 std::optional<scene_hit<arith::value_t<K>>> first_contact(K& k, const S& x, const scene3& scene) {
     const linear3 s = as_linear(x);
     const node_slabs<S> sl(x, s, scene);
     const auto triangles = scene.triangles();
-    const aabb3 xb = bounds(x);
-    std::optional<contact_end> first;
-    std::uint32_t best = 0;
-    double limit = inf;
+    contact_search<K> search{k, s, bounds(x)};
     traverse(
         scene, sl,
         [&](std::uint32_t i) {
-            if (!boxes_meet(xb, bounds(triangles[i]))) return true; // the scalar pair's first step (comparisons)
-            if (const auto r = triangle_span(k, s, triangles[i])) {
-                const sign c = first ? compare_ends(k, r->enter, *first, s) : sign::negative;
-                if (c == sign::negative || (c == sign::zero && scene.source(i) < scene.source(best))) {
-                    first = r->enter;
-                    best = i;
-                    limit = upper_bound(*first, s);
-                }
-            }
+            search.consider(scene.source(i), triangles[i]);
             return true;
         },
-        [&] { return limit; });
-    if (!first) return std::nullopt;
-    const auto h = triangle_values(k, *first, s, triangles[best]);
-    return scene_hit<arith::value_t<K>>{h.t, h.point, h.normal, h.u, h.v, h.w, scene.source(best)};
+        [&] { return search.limit; });
+    return search.hit();
+}
+
+// A first hit in each tier's contract, from contact(k): the search in kernel k.
+//   approximate   plain double, exists uncertain;
+//   exact, conservative, aggressive: the filter with the exact sign in place where it cannot
+//                 decide (deciding_kernel; exact values correctly rounded); were a sign left open
+//                 (not reached for finite inputs): the exact kernel, the conservative tier's
+//                 enclosing uncertain hit over the object's range, the aggressive tier's none.
+template <class Tier, class S, class Contact>
+std::optional<scene_hit<scene_value_t<Tier>>> first_hit_in_tier(const S& x, const Contact& contact) {
+    if constexpr (std::is_same_v<Tier, approximate>) {
+        arith::approx_kernel k;
+        auto h = contact(k);
+        if (h) h->exists = certainty::uncertain;
+        return h;
+    } else {
+        std::conditional_t<std::is_same_v<Tier, exact>, arith::rounding_kernel<deciding_kernel>, deciding_kernel> k;
+        const auto h = contact(k);
+        if (!k.failed()) return h;
+        if constexpr (std::is_same_v<Tier, exact>) {
+            arith::exact_kernel e;
+            const auto he = contact(e);
+            return e.valid ? he : std::nullopt;
+        } else if constexpr (std::is_same_v<Tier, conservative>) {
+            constexpr interval unit{0.0, 1.0};
+            return scene_hit<interval>{range_of(as_linear(x)),       everywhere,          everywhere, unit, unit, unit,
+                                       static_cast<std::size_t>(-1), certainty::uncertain};
+        } else {
+            return std::nullopt;
+        }
+    }
 }
 
 } // namespace
@@ -208,31 +256,25 @@ bool scene_any_hit(const S& x, const scene3& scene) {
 template <class Tier, class S>
 std::optional<scene_hit<scene_value_t<Tier>>> scene_first_hit(const S& x, const scene3& scene) {
     if (scene.empty() || !finite(x)) return std::nullopt;
-    if constexpr (std::is_same_v<Tier, approximate>) {
-        arith::approx_kernel k;
-        auto h = first_contact(k, x, scene);
-        if (h) h->exists = certainty::uncertain;
-        return h;
-    } else {
-        std::conditional_t<std::is_same_v<Tier, exact>, arith::rounding_kernel<deciding_kernel>, deciding_kernel> k;
-        const auto h = first_contact(k, x, scene);
-        if (!k.failed()) return h;
-        // Not reached for finite inputs (the exact stages decide every sign). Were it reached: the
-        // exact kernel; for conservative a hit that may exist with every value enclosed whatever it
-        // is (t over the object's range, the triangle unknown), as the scalar pairs say; none for
-        // aggressive.
-        if constexpr (std::is_same_v<Tier, exact>) {
-            arith::exact_kernel e;
-            const auto he = first_contact(e, x, scene);
-            return e.valid ? he : std::nullopt;
-        } else if constexpr (std::is_same_v<Tier, conservative>) {
-            constexpr interval unit{0.0, 1.0};
-            return scene_hit<interval>{range_of(as_linear(x)),       everywhere,          everywhere, unit, unit, unit,
-                                       static_cast<std::size_t>(-1), certainty::uncertain};
-        } else {
-            return std::nullopt;
+    return first_hit_in_tier<Tier>(x, [&](auto& k) { return first_contact(k, x, scene); });
+}
+
+template <class Tier>
+std::optional<scene_hit<scene_value_t<Tier>>> triangles_first_hit(const ray3& r, std::size_t count, candidates_fn fill,
+                                                                  const void* context) {
+    if (count == 0 || !finite(r)) return std::nullopt;
+    return first_hit_in_tier<Tier>(r, [&](auto& k) {
+        contact_search<std::remove_reference_t<decltype(k)>> search{k, as_linear(r), bounds(r)};
+        std::uint8_t candidate[candidate_block];
+        triangle3 block[candidate_block];
+        for (std::size_t start = 0; start < count; start += candidate_block) {
+            const std::size_t n = count - start < candidate_block ? count - start : candidate_block;
+            fill(context, start, n, candidate, block);
+            for (std::size_t i = 0; i < n; ++i)
+                if (candidate[i] != 0) search.consider(start + i, block[i]);
         }
-    }
+        return search.hit();
+    });
 }
 
 namespace {
@@ -370,6 +412,13 @@ bool scene_pairs(const scene3& a, const scene3& b, std::vector<std::pair<std::si
     INCIDENCE_SCENE_SOLID(TIER, triangle3)                                                                                                 \
     INCIDENCE_SCENE_SOLID(TIER, tetrahedron3)                                                                                              \
     INCIDENCE_SCENE_SOLID(TIER, frustum3)
+template std::optional<scene_hit<scene_value_t<exact>>> triangles_first_hit<exact>(const ray3&, std::size_t, candidates_fn, const void*);
+template std::optional<scene_hit<scene_value_t<conservative>>> triangles_first_hit<conservative>(const ray3&, std::size_t, candidates_fn,
+                                                                                                 const void*);
+template std::optional<scene_hit<scene_value_t<aggressive>>> triangles_first_hit<aggressive>(const ray3&, std::size_t, candidates_fn,
+                                                                                             const void*);
+template std::optional<scene_hit<scene_value_t<approximate>>> triangles_first_hit<approximate>(const ray3&, std::size_t, candidates_fn,
+                                                                                               const void*);
 INCIDENCE_SCENE_TIER(exact)
 INCIDENCE_SCENE_TIER(conservative)
 INCIDENCE_SCENE_TIER(aggressive)

@@ -10,6 +10,7 @@
 #include <hwy/targets.h>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -308,6 +309,82 @@ TEST_CASE("batch rays_triangle: the exact lanes against the CGAL Epeck oracle", 
     CHECK(wrong == 0);
     CHECK(met * 5 > lanes); // the rays mostly aim at the triangle
     CHECK(skipped * 4 < lanes);
+}
+
+// The first hit: batch::intersection against intersection(ray, scene) over a scene of the same
+// triangles, both entry points, value for value (t, point, normal, barycentrics, index, exists);
+// in the approximate tier the values of the triangle it names against the scalar approximate ones.
+bool same_value(double a, double b) { return a == b || (a != a && b != b); }
+bool same_value(const interval& a, const interval& b) { return same_value(a.lo, b.lo) && same_value(a.hi, b.hi); }
+template <class V>
+bool same_hit(const std::optional<scene_hit<V>>& a, const std::optional<scene_hit<V>>& b) {
+    if (a.has_value() != b.has_value()) return false;
+    if (!a) return true;
+    return same_value(a->t, b->t) && same_value(a->point.x, b->point.x) && same_value(a->point.y, b->point.y) &&
+           same_value(a->point.z, b->point.z) && same_value(a->normal.x, b->normal.x) && same_value(a->normal.y, b->normal.y) &&
+           same_value(a->normal.z, b->normal.z) && same_value(a->u, b->u) && same_value(a->v, b->v) && same_value(a->w, b->w) &&
+           a->triangle == b->triangle && a->exists == b->exists;
+}
+struct first_counts {
+    long sets = 0, hits = 0, wrong = 0, special = 0, special_wrong = 0, existence_unlike = 0;
+};
+template <class Tier>
+void compare_first(const ray_set& s, first_counts& c, const std::string& where) {
+    const auto batch = batch::intersection<Tier>(s.ray, std::span<const triangle3>(s.triangles));
+    const soa_copy copy(s.triangles);
+    const auto packet = batch::intersection<Tier>(s.ray, copy.view());
+    REQUIRE(batch.has_value());
+    REQUIRE(packet.has_value());
+    const auto scene = scene3::make(std::span<const triangle3>(s.triangles));
+    if (!scene) { // non-finite coordinates: no scene to compare with; an exact hit must be a triangle the ray meets
+        ++c.special;
+        const auto& h = batch.value();
+        const bool ok =
+            same_hit(h, packet.value()) && (!h || !std::is_same_v<Tier, exact> || intersects<exact>(s.ray, s.triangles[h->triangle]));
+        if (!ok && ++c.special_wrong <= 3) std::printf("  %s: a special set's first hit\n", where.c_str());
+        return;
+    }
+    ++c.sets;
+    const auto truth = intersection<Tier>(s.ray, scene.value());
+    c.hits += truth.has_value();
+    bool ok = same_hit(batch.value(), packet.value());
+    if constexpr (std::is_same_v<Tier, approximate>) {
+        // plain double decides the comparisons, so the scene's order of visits can change the
+        // winner: the hit's values must be the scalar approximate values of the triangle it names,
+        // and it exists where the exact first hit does (counted apart from `wrong` where not)
+        const auto& h = batch.value();
+        if (h) {
+            const auto scalar = intersection<approximate>(s.ray, s.triangles[h->triangle]);
+            ok = ok && scalar && same_value(scalar->t, h->t) && same_value(scalar->u, h->u) && same_value(scalar->v, h->v) &&
+                 same_value(scalar->w, h->w); // NaN where plain double divides 0 by 0 on a degenerate triangle, as the scalar
+        }
+        if (h.has_value() != intersection<exact>(s.ray, scene.value()).has_value()) ++c.existence_unlike;
+    } else {
+        ok = ok && same_hit(batch.value(), truth);
+    }
+    if (!ok && ++c.wrong <= 5)
+        std::printf("  %s: batch first hit unlike the scene's (%s, %s)\n", where.c_str(), truth ? "hit" : "none",
+                    batch.value() ? "hit" : "none");
+}
+
+TEST_CASE("batch ray_triangles: the first hit is the scene's, every tier", "[batch]") {
+    first_counts c[4];
+    support::rng r(support::seed());
+    for (long k = 0; k < support::cases(400); ++k) {
+        const int kind = static_cast<int>(k % 3);
+        const ray_set s = kind == 0 ? random_set(r, 128) : (kind == 1 ? mesh_set(r) : special_set(r));
+        compare_first<exact>(s, c[0], "exact");
+        compare_first<conservative>(s, c[1], "conservative");
+        compare_first<aggressive>(s, c[2], "aggressive");
+        compare_first<approximate>(s, c[3], "approximate");
+    }
+    std::printf("[cases] batch first hit against the scene's: %ld sets (%ld with a hit), unlike: %ld %ld %ld %ld (exact, conservative, "
+                "aggressive, approximate; approximate: the values of the triangle it names); %ld sets with special values, %ld wrong; "
+                "approximate hits whose existence is unlike the exact tier's: %ld\n",
+                c[0].sets, c[0].hits, c[0].wrong, c[1].wrong, c[2].wrong, c[3].wrong, c[0].special,
+                c[0].special_wrong + c[1].special_wrong + c[2].special_wrong + c[3].special_wrong, c[3].existence_unlike);
+    for (const first_counts& x : c) CHECK((x.wrong == 0 && x.special_wrong == 0));
+    CHECK(c[0].hits * 4 > c[0].sets);
 }
 
 TEST_CASE("batch ray_triangles: the exact lanes against the CGAL Epeck oracle, rays through a mesh", "[batch]") {
