@@ -43,20 +43,32 @@ ray_set random_set(support::rng& r, int n) {
     return s;
 }
 
+// A random frame: the axes permuted cyclically, then support's random transform (scale, translation,
+// ulp nudges): at() places a point, along() a direction.
+struct random_frame {
+    int perm;
+    support::transform tr;
+    explicit random_frame(support::rng& r) : perm(r.integer(0, 2)), tr(support::random_transform(r, r.coin())) {}
+    [[nodiscard]] std::array<double, 3> axes(double x, double y, double z) const {
+        return perm == 0 ? std::array<double, 3>{x, y, z} : (perm == 1 ? std::array<double, 3>{z, x, y} : std::array<double, 3>{y, z, x});
+    }
+    [[nodiscard]] point3 at(double x, double y, double z) {
+        const auto q = axes(x, y, z);
+        return P(tr, q[0], q[1], q[2]);
+    }
+    [[nodiscard]] vec3 along(double x, double y, double z) {
+        const auto d = axes(x, y, z);
+        return {tr.dir(d[0]), tr.dir(d[1]), tr.dir(d[2])};
+    }
+};
+
 // A grid mesh in the plane z = 0 (cells of side 1 from -4 to 4, each split along a diagonal), a
 // ray aimed exactly at a vertex, an edge point or a cell's inside, or lying in the plane, and the
 // whole scaled, translated, nudged and with its axes permuted; some triangles made degenerate.
 ray_set mesh_set(support::rng& r) {
     using support::small;
-    const int perm = r.integer(0, 2);
-    auto axes = [perm](double x, double y, double z) {
-        return perm == 0 ? std::array<double, 3>{x, y, z} : (perm == 1 ? std::array<double, 3>{z, x, y} : std::array<double, 3>{y, z, x});
-    };
-    support::transform tr = support::random_transform(r, r.coin());
-    auto at = [&](double x, double y, double z) {
-        const auto q = axes(x, y, z);
-        return P(tr, q[0], q[1], q[2]);
-    };
+    random_frame f(r);
+    auto at = [&](double x, double y, double z) { return f.at(x, y, z); };
     ray_set s;
     for (int i = -4; i < 4; ++i)
         for (int j = -4; j < 4; ++j) {
@@ -73,8 +85,7 @@ ray_set mesh_set(support::rng& r) {
     const double ox = small(r), oy = small(r), oz = coplanar ? 0.0 : small(r);
     double dx = tx - ox, dy = ty - oy, dz = -oz;
     if (r.integer(0, 7) == 0) dx = -dx, dy = -dy, dz = -dz; // pointing away
-    const auto d = axes(dx, dy, dz);
-    s.ray = ray3{at(ox, oy, oz), vec3{tr.dir(d[0]), tr.dir(d[1]), tr.dir(d[2])}};
+    s.ray = ray3{at(ox, oy, oz), f.along(dx, dy, dz)};
     s.triangles.push_back({s.ray.origin, at(tx, ty, 0), at(tx + 1, ty, 0)});
     return s;
 }
@@ -127,15 +138,8 @@ rays_set rays_at_one(support::rng& r, bool special) {
         return s;
     }
     using support::small;
-    const int perm = r.integer(0, 2);
-    auto axes = [perm](double x, double y, double z) {
-        return perm == 0 ? std::array<double, 3>{x, y, z} : (perm == 1 ? std::array<double, 3>{z, x, y} : std::array<double, 3>{y, z, x});
-    };
-    support::transform tr = support::random_transform(r, r.coin());
-    auto at = [&](double x, double y, double z) {
-        const auto q = axes(x, y, z);
-        return P(tr, q[0], q[1], q[2]);
-    };
+    random_frame f(r);
+    auto at = [&](double x, double y, double z) { return f.at(x, y, z); };
     s.triangle = r.integer(0, 7) == 0 ? triangle3{at(0, 0, 0), at(2, 2, 0), at(4, 4, 0)} : triangle3{at(0, 0, 0), at(4, 0, 0), at(0, 4, 0)};
     const int n = 2 * r.integer(20, 80) + 1;
     for (int i = 0; i < n; ++i) {
@@ -149,8 +153,7 @@ rays_set rays_at_one(support::rng& r, bool special) {
         double dx = tx - ox, dy = ty - oy, dz = -oz;
         if (r.integer(0, 7) == 0) dx = -dx, dy = -dy, dz = -dz; // pointing away
         if (r.integer(0, 31) == 0) dx = dy = dz = 0;            // a point
-        const auto d = axes(dx, dy, dz);
-        ray3 ray{at(ox, oy, oz), vec3{tr.dir(d[0]), tr.dir(d[1]), tr.dir(d[2])}};
+        ray3 ray{at(ox, oy, oz), f.along(dx, dy, dz)};
         if (r.integer(0, 7) == 0)
             ray.origin = {support::nudge(ray.origin.x, r.integer(-2, 2)), support::nudge(ray.origin.y, r.integer(-2, 2)), ray.origin.z};
         s.rays.push_back(ray);
