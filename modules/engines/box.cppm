@@ -121,6 +121,15 @@ struct box_corners {
         for (int i = 0; i < 8; ++i) p[i] = point3{(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z};
     }
 };
+// A point of the box near its middle: each coordinate (min + max) / 2 rounded, clamped into
+// [min, max] (the rounding of a tiny or huge bound may leave it), so exactly a point of the box.
+[[nodiscard]] constexpr point3 middle_in(const aabb3& b) {
+    auto mid = [](double lo, double hi) {
+        const double c = 0.5 * lo + 0.5 * hi;
+        return c < lo ? lo : (c > hi ? hi : c);
+    };
+    return {mid(b.min.x, b.max.x), mid(b.min.y, b.max.y), mid(b.min.z, b.max.z)};
+}
 // The box corner least along n (where a component of n is zero, either bound would do).
 [[nodiscard]] constexpr point3 least_corner(const aabb3& b, const vec3& n) {
     return {n.x > 0 ? b.min.x : b.max.x, n.y > 0 ? b.min.y : b.max.y, n.z > 0 ? b.min.z : b.max.z};

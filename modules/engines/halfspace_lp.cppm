@@ -15,7 +15,13 @@
 // with no three independent normals by their lines or planes, polyq::low_rank_empty); up to three
 // programs, each along its own direction with the rows in its own order (polyq::guess_paths).
 // First, a polyhedron plane with the whole box beyond it (the corner least along n_i outside, a
-// sign of degree 2) says no.
+// sign of degree 2) says no; then a point of the box strictly inside every plane (the box's middle,
+// rounded and clamped into it, or for a plane the middle is not inside, the box's corner least
+// along its normal: signs of degree 2, tried only where the filter proves them) says yes (the
+// culling tests' two outcomes, Assarsson and Moeller, JGT 5(1), 2000, section 3); then, for at
+// most six planes, a plane that two of them imply along an edge-edge axis of the
+// separating-axis test (Gottschalk, Lin and Manocha, SIGGRAPH 1996, section 5) with the box wholly
+// beyond it says no (signs of degree 3, tried only where the filter proves them: edge_planes).
 // Source: vertex enumeration for LP feasibility (Schrijver, Theory of Linear and Integer
 // Programming, 1986, section 8.5: a nonempty pointed polyhedron has a vertex); the guess, Seidel,
 // "Small-dimensional linear programming and convex hulls made easy", Discrete Comput. Geom. 6, 1991.
@@ -543,6 +549,58 @@ template <class K>
     return !low_rank_empty(k, plane_rows{rows, total});
 }
 
+// The planes that two of the half-spaces imply along the separating-axis test's edge-edge axes:
+// for planes i < j and a box axis a where n_i[a] and n_j[a] have strictly opposite signs,
+// g = |n_j[a]| n_i + |n_i[a]| n_j (a multiple of (n_i x n_j) x e_a, so g[a] = 0) bounds the set by
+// g . x <= |n_j[a]| c_i + |n_i[a]| c_j (a sum of its half-spaces with weights >= 0). Kept: the axes
+// whose two other components of g have a proven sign (degree 2), which names the box corner least
+// along g (upper[b]: take max[b]; min on axis a). For at most six planes (a frustum's fifteen pairs).
+struct implied_plane {
+    int i, j;
+    double alpha, beta; // |n_j[a]|, |n_i[a]|
+    bool upper[3];
+};
+struct implied_planes {
+    std::array<implied_plane, 45> at{};
+    int n = 0;
+};
+template <class K>
+[[nodiscard]] constexpr implied_planes edge_planes(K& k, const plane3* planes, int m) {
+    auto at = [](vec3 v, int a) { return a == 0 ? v.x : (a == 1 ? v.y : v.z); };
+    implied_planes out;
+    if (m > 6) return out;
+    for (int i = 0; i < m; ++i)
+        for (int j = i + 1; j < m; ++j)
+            for (int a = 0; a < 3; ++a) {
+                const vec3 ni = planes[i].normal, nj = planes[j].normal;
+                if (!((at(ni, a) > 0 && at(nj, a) < 0) || (at(ni, a) < 0 && at(nj, a) > 0))) continue;
+                implied_plane e{i, j, arith::abs(at(nj, a)), arith::abs(at(ni, a)), {false, false, false}};
+                bool proven = true;
+                for (int b = 0; b < 3 && proven; ++b) {
+                    if (b == a) continue;
+                    const double x = at(ni, b), y = at(nj, b);
+                    const sign s = arith::sgn<arith::hint::optional>(k, [=](auto L) { return L(e.alpha) * L(x) + L(e.beta) * L(y); });
+                    proven = s != sign::zero;
+                    e.upper[b] = s == sign::negative;
+                }
+                if (proven) out.at[static_cast<unsigned>(out.n++)] = e;
+            }
+    return out;
+}
+// The sign of |n_j[a]| (c_i - n_i . q) + |n_i[a]| (c_j - n_j . q) at the box corner q that e names:
+// negative says the box lies wholly beyond the implied plane. Degree 3.
+template <class K>
+[[nodiscard]] constexpr sign implied_side(K& k, const aabb3& b, const plane3* planes, const implied_plane& e) {
+    const point3 q{e.upper[0] ? b.max.x : b.min.x, e.upper[1] ? b.max.y : b.min.y, e.upper[2] ? b.max.z : b.min.z};
+    const plane3 p = planes[e.i], h = planes[e.j];
+    const double alpha = e.alpha, beta = e.beta;
+    return arith::sgn<arith::hint::optional>(k, [=](auto L) {
+        const auto Q = arith::lift(L, q);
+        return L(alpha) * (L(p.offset) * L(1.0) - arith::dot(arith::lift(L, p.normal), Q)) +
+               L(beta) * (L(h.offset) * L(1.0) - arith::dot(arith::lift(L, h.normal), Q));
+    });
+}
+
 // Does the box meet the m half-spaces n_i . x <= c_i (m <= convex_polyhedron3::capacity)?
 template <class K>
 [[nodiscard]] constexpr bool box_meets(K& k, const aabb3& b, const plane3* planes, int m) {
@@ -555,6 +613,27 @@ template <class K>
         if (k.sgn([=](auto L) { return L(p.offset) * L(1.0) - arith::dot(arith::lift(L, p.normal), arith::lift(L, q)); }) == sign::negative)
             return false;
     }
+    // A point of the box strictly inside every plane: checks whose failure decides nothing. The
+    // middle, then for each plane it is not proven inside, the box corner least along that normal.
+    auto inside_from = [&](point3 c, int first) {
+        for (int i = first; i < m; ++i) {
+            const plane3 p = planes[i];
+            if (arith::sgn<arith::hint::optional>(k, [=](auto L) {
+                    return L(p.offset) * L(1.0) - arith::dot(arith::lift(L, p.normal), arith::lift(L, c));
+                }) != sign::positive)
+                return i;
+        }
+        return m;
+    };
+    const point3 c = middle_in(b);
+    int outside = inside_from(c, 0);
+    if (outside == m) return true;
+    for (; outside < m; outside = inside_from(c, outside + 1))
+        if (inside_from(least_corner(b, planes[outside].normal), 0) == m) return true;
+    // A plane two of them imply with the whole box beyond it: checks whose failure decides nothing.
+    const implied_planes implied = edge_planes(k, planes, m);
+    for (int t = 0; t < implied.n; ++t)
+        if (implied_side(k, b, planes, implied.at[static_cast<unsigned>(t)]) == sign::negative) return false;
     // The rows: the polyhedron's planes, then the box's six faces (bounded: the vertex case).
     std::array<plane3, capacity + 6> rows{};
     for (int i = 0; i < m; ++i) rows[static_cast<unsigned>(i)] = planes[i];
