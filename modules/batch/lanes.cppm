@@ -7,10 +7,44 @@ module;
 #include <span>
 export module incidence.batch:lanes;
 import incidence.core;
+import incidence.shapes;
 
 namespace incidence::batch::detail {
 
 inline constexpr std::size_t block = 64;
+
+// A shape's numbers in the order the kernels read them as fields: a ray's origin then direction, a
+// triangle's a, b, c, a box's min then max, a ball's centre then radius.
+inline void unpack(const ray3& r, double* f) {
+    const double v[6] = {r.origin.x, r.origin.y, r.origin.z, r.direction.x, r.direction.y, r.direction.z};
+    for (int k = 0; k < 6; ++k) f[k] = v[k];
+}
+inline void unpack(const triangle3& t, double* f) {
+    const double v[9] = {t.a.x, t.a.y, t.a.z, t.b.x, t.b.y, t.b.z, t.c.x, t.c.y, t.c.z};
+    for (int k = 0; k < 9; ++k) f[k] = v[k];
+}
+inline void unpack(const aabb3& b, double* f) {
+    const double v[6] = {b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z};
+    for (int k = 0; k < 6; ++k) f[k] = v[k];
+}
+inline void unpack(const sphere3& s, double* f) {
+    const double v[4] = {s.center.x, s.center.y, s.center.z, s.radius};
+    for (int k = 0; k < 4; ++k) f[k] = v[k];
+}
+template <class S>
+inline constexpr std::size_t fields_of = sizeof(S) / sizeof(double);
+static_assert(fields_of<ray3> == 6 && fields_of<triangle3> == 9 && fields_of<aabb3> == 6 && fields_of<sphere3> == 4);
+
+// The one shape of a batch as fields, each pointing at its one value (the kernels broadcast it).
+template <class Shape>
+struct one_fields {
+    double values[fields_of<Shape>] = {};
+    const double* p[fields_of<Shape>];
+    explicit one_fields(const Shape& s) {
+        unpack(s, values);
+        for (std::size_t k = 0; k < fields_of<Shape>; ++k) p[k] = values + k;
+    }
+};
 
 // Runs kernel(coords, n, out) over `items` in blocks: coords are the Fields arrays of up to 64
 // numbers that unpack(item, fields) writes for each item. The number of lanes that answered 1.

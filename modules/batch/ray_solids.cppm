@@ -37,10 +37,6 @@ void ray_balls(const double* const* ray, bool rays, const double* const* ball, s
 
 namespace incidence::batch::detail {
 
-inline void unpack(const ray3& r, double* f) {
-    const double v[6] = {r.origin.x, r.origin.y, r.origin.z, r.direction.x, r.direction.y, r.direction.z};
-    for (int k = 0; k < 6; ++k) f[k] = v[k];
-}
 inline void arrays(const rays_soa& r, const double** p) {
     const double* v[6] = {r.ox.data(), r.oy.data(), r.oz.data(), r.dx.data(), r.dy.data(), r.dz.data()};
     for (int k = 0; k < 6; ++k) p[k] = v[k];
@@ -59,17 +55,6 @@ std::size_t ray_solid_block(const double* const* ray, bool rays, const double* c
         return incidence::intersects<Tier>(r, s);
     });
 }
-// The one shape's fields, each pointing at its one value.
-template <class Shape>
-struct one_fields {
-    double values[6] = {};
-    const double* p[6];
-    explicit one_fields(const Shape& s) {
-        unpack(s, values);
-        for (int k = 0; k < 6; ++k) p[k] = values + k;
-    }
-};
-
 template <tier Tier, class Solid>
 result<std::size_t> ray_many(const ray3& r, std::span<const Solid> many, std::span<std::uint8_t> out) {
     if (out.size() != many.size()) return error{errc::size_mismatch};

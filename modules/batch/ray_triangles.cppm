@@ -105,7 +105,8 @@ inline void first_hit_candidates(const void* p, std::size_t start, std::size_t n
     for (std::size_t i = 0; i < n; ++i) {
         const triangle3 t = c.array != nullptr ? c.array[start + i] : (*c.packet)[start + i];
         triangles[i] = t;
-        const double v[9] = {t.a.x, t.a.y, t.a.z, t.b.x, t.b.y, t.b.z, t.c.x, t.c.y, t.c.z};
+        double v[9];
+        unpack(t, v);
         for (int k = 0; k < 9; ++k) buffer[k][i] = v[k];
     }
     for (int k = 0; k < 9; ++k) coords[k] = buffer[k];
@@ -119,10 +120,9 @@ static_assert(incidence::detail::candidate_block <= block);
 // n rays (six SoA arrays) against one triangle, the same way.
 template <tier Tier, class At>
 std::size_t rays_triangle_block(const double* const* rays, const triangle3& t, std::size_t n, std::uint8_t* out, const At& at) {
-    const double v[9] = {t.a.x, t.a.y, t.a.z, t.b.x, t.b.y, t.b.z, t.c.x, t.c.y, t.c.z};
-    const double* fields[9] = {v, v + 1, v + 2, v + 3, v + 4, v + 5, v + 6, v + 7, v + 8};
-    if constexpr (std::is_same_v<Tier, approximate>) simd::rays_triangle_watertight(rays, fields, n, out);
-    else simd::rays_triangle_filter(rays, fields, n, out);
+    const one_fields<triangle3> triangle(t);
+    if constexpr (std::is_same_v<Tier, approximate>) simd::rays_triangle_watertight(rays, triangle.p, n, out);
+    else simd::rays_triangle_filter(rays, triangle.p, n, out);
     return settle_open(out, n, [&](std::size_t i) { return incidence::intersects<Tier>(at(i), t); });
 }
 
@@ -135,12 +135,9 @@ export namespace incidence::batch {
 template <tier Tier = exact>
 [[nodiscard]] result<std::size_t> intersects(const ray3& r, std::span<const triangle3> triangles, std::span<std::uint8_t> out) {
     if (out.size() != triangles.size()) return error{errc::size_mismatch};
-    auto unpack = [](const triangle3& t, double* f) {
-        const double v[9] = {t.a.x, t.a.y, t.a.z, t.b.x, t.b.y, t.b.z, t.c.x, t.c.y, t.c.z};
-        for (int k = 0; k < 9; ++k) f[k] = v[k];
-    };
     return detail::by_blocks<9>(
-        triangles, out.data(), unpack, [&](const double* const* coords, std::size_t n, std::uint8_t* o, std::size_t start) {
+        triangles, out.data(), [](const triangle3& t, double* f) { detail::unpack(t, f); },
+        [&](const double* const* coords, std::size_t n, std::uint8_t* o, std::size_t start) {
             return detail::ray_triangles_block<Tier>(r, coords, n, o, [&](std::size_t i) { return triangles[start + i]; });
         });
 }
@@ -175,12 +172,9 @@ template <tier Tier = exact>
 template <tier Tier = exact>
 [[nodiscard]] result<std::size_t> intersects(std::span<const ray3> rays, const triangle3& t, std::span<std::uint8_t> out) {
     if (out.size() != rays.size()) return error{errc::size_mismatch};
-    auto unpack = [](const ray3& r, double* f) {
-        const double v[6] = {r.origin.x, r.origin.y, r.origin.z, r.direction.x, r.direction.y, r.direction.z};
-        for (int k = 0; k < 6; ++k) f[k] = v[k];
-    };
     return detail::by_blocks<6>(
-        rays, out.data(), unpack, [&](const double* const* coords, std::size_t n, std::uint8_t* o, std::size_t start) {
+        rays, out.data(), [](const ray3& r, double* f) { detail::unpack(r, f); },
+        [&](const double* const* coords, std::size_t n, std::uint8_t* o, std::size_t start) {
             return detail::rays_triangle_block<Tier>(coords, t, n, o, [&](std::size_t i) { return rays[start + i]; });
         });
 }

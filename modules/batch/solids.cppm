@@ -61,17 +61,7 @@ struct spheres_soa {
 namespace incidence::batch::detail {
 
 template <class S>
-inline constexpr std::size_t fields_of = std::is_same_v<S, aabb3> ? 6 : 4;
-template <class S>
 using soa_of = std::conditional_t<std::is_same_v<S, aabb3>, boxes_soa, spheres_soa>;
-inline void unpack(const aabb3& b, double* f) {
-    const double v[6] = {b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z};
-    for (int k = 0; k < 6; ++k) f[k] = v[k];
-}
-inline void unpack(const sphere3& s, double* f) {
-    const double v[4] = {s.center.x, s.center.y, s.center.z, s.radius};
-    for (int k = 0; k < 4; ++k) f[k] = v[k];
-}
 inline void arrays(const boxes_soa& b, const double** p) {
     const double* v[6] = {b.min_x.data(), b.min_y.data(), b.min_z.data(), b.max_x.data(), b.max_y.data(), b.max_z.data()};
     for (int k = 0; k < 6; ++k) p[k] = v[k];
@@ -85,14 +75,12 @@ inline void arrays(const spheres_soa& s, const double** p) {
 // query where the filter left a lane open. The number of lanes met.
 template <tier Tier, class One, class Many, class At>
 std::size_t solids_block(const One& one, const double* const* many, std::size_t n, std::uint8_t* out, const At& at) {
-    double values[6];
-    unpack(one, values);
-    const double* fields[6] = {values, values + 1, values + 2, values + 3, values + 4, values + 5};
+    const one_fields<One> fields(one);
     constexpr bool filter = !std::is_same_v<Tier, approximate>;
-    if constexpr (std::is_same_v<One, aabb3> && std::is_same_v<Many, aabb3>) simd::box_boxes(fields, many, n, out);
-    else if constexpr (std::is_same_v<One, aabb3>) simd::box_balls(fields, many, false, n, filter, out);
-    else if constexpr (std::is_same_v<Many, aabb3>) simd::box_balls(many, fields, true, n, filter, out);
-    else simd::ball_balls(fields, many, n, filter, out);
+    if constexpr (std::is_same_v<One, aabb3> && std::is_same_v<Many, aabb3>) simd::box_boxes(fields.p, many, n, out);
+    else if constexpr (std::is_same_v<One, aabb3>) simd::box_balls(fields.p, many, false, n, filter, out);
+    else if constexpr (std::is_same_v<Many, aabb3>) simd::box_balls(many, fields.p, true, n, filter, out);
+    else simd::ball_balls(fields.p, many, n, filter, out);
     return settle_open(out, n, [&](std::size_t i) { return incidence::intersects<Tier>(one, at(i)); });
 }
 
