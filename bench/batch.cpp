@@ -5,7 +5,8 @@
 // <tier>/scalar_loop/...); a box or a ball against a set of boxes or balls (aabb_aabbs,
 // aabb_spheres, sphere_aabbs, sphere_spheres, the same way); a set of rays against one triangle,
 // box or ball (rays_triangle, rays_aabb, rays_sphere) and one ray against boxes or balls
-// (ray_aabbs, ray_spheres). The triangles in every tier,
+// (ray_aabbs, ray_spheres); boxes against a frustum (frustum_aabbs, and the classic culling test's
+// loop, approximate/method_culling_loop/frustum_aabbs). The triangles in every tier,
 // beside the loop over the scalar query that it replaces, on each SIMD target the processor has:
 //   <tier>/batch_intersects/ray_triangles/<dist>              the dispatched (best) target
 //   <tier>/batch_intersects/ray_triangles_<TARGET>/<dist>     one target (AVX3 = AVX-512, AVX2, SSE4)
@@ -510,6 +511,52 @@ std::vector<std::pair<ray3, std::vector<Solid>>> ray_solids_set(bool near) {
     return out;
 }
 
+// Boxes (half-extents up to 0.25) against a camera frustum (eye in [-2, 2]^3 looking at a point
+// of the unit cube, vertical field of view 0.6..1.4, near 0.1, far 4; random: boxes in the unit
+// cube; near_degenerate: a corner on one of its planes (the nearest point of the plane to a random
+// point), the box on the plane's outer side, nudged).
+std::vector<std::pair<frustum3, std::vector<aabb3>>> frustum_boxes_set(bool near) {
+    std::vector<std::pair<frustum3, std::vector<aabb3>>> out;
+    while (out.size() < 16) {
+        const point3 eye{uni(-2, 2), uni(-2, 2), uni(-2, 2)};
+        const auto f = frustum3::from_camera(eye, rp() - eye, vec3{uni(-1, 1), uni(-1, 1), uni(-1, 1)}, uni(0.6, 1.4), 1.0, 0.1, 4.0);
+        if (!f.has_value()) continue;
+        std::vector<aabb3> boxes;
+        for (std::size_t i = 0; i < set_size; ++i) {
+            point3 m = rp();
+            const double e = uni(0, 0.25);
+            if (near) {
+                const plane3& h = f.value().planes[static_cast<unsigned>(irand(0, 5))];
+                const double t = (dot(h.normal, m - point3{0, 0, 0}) - h.offset) / dot(h.normal, h.normal);
+                const point3 p = m - h.normal * t;
+                const point3 q{p.x + (h.normal.x > 0 ? e : -e), p.y + (h.normal.y > 0 ? e : -e), p.z + (h.normal.z > 0 ? e : -e)};
+                const aabb3 b = box(p, q);
+                boxes.push_back(aabb3{np(b.min.x, b.min.y, b.min.z), np(b.max.x, b.max.y, b.max.z)});
+            } else {
+                boxes.push_back(aabb3{np(m.x - e, m.y - e, m.z - e), np(m.x + e, m.y + e, m.z + e)});
+            }
+        }
+        out.emplace_back(f.value(), std::move(boxes));
+    }
+    return out;
+}
+// The classic culling test in double (method::aabb_frustum_culling: plane rejection alone, not a
+// tier: it says yes for boxes beyond an edge or corner) over the same sets, for comparison.
+void reg_culling_method(const std::string& name, const std::vector<std::pair<frustum3, std::vector<aabb3>>>& sets) {
+    benchmark::RegisterBenchmark(name.c_str(), [sets](benchmark::State& st) {
+        std::vector<std::uint8_t> out(sets.front().second.size());
+        std::size_t k = 0;
+        for (auto _ : st) {
+            const auto& [f, boxes] = sets[k];
+            for (std::size_t i = 0; i < out.size(); ++i) out[i] = method::aabb_frustum_culling(boxes[i], f) ? 1 : 0;
+            benchmark::ClobberMemory();
+            if (++k == sets.size()) k = 0;
+        }
+        st.counters["s_per_test"] = benchmark::Counter(static_cast<double>(out.size()),
+                                                       benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+    });
+}
+
 } // namespace
 
 void register_batch(bool near) {
@@ -539,6 +586,9 @@ void register_batch(bool near) {
     reg_one_many_tiers("rays_sphere", dist, rays_set<sphere3>(near));
     reg_one_many_tiers("ray_aabbs", dist, ray_solids_set<aabb3>(near));
     reg_one_many_tiers("ray_spheres", dist, ray_solids_set<sphere3>(near));
+    const auto culling = frustum_boxes_set(near);
+    reg_one_many_tiers("frustum_aabbs", dist, culling);
+    reg_culling_method("approximate/method_culling_loop/frustum_aabbs/" + dist, culling);
 }
 
 } // namespace bench

@@ -14,8 +14,9 @@
 // convex_polyhedron_triangle, frustum_triangle and kdop_triangle; convex_polyhedron_tetrahedron,
 // frustum_tetrahedron and kdop_tetrahedron; convex_polyhedron_obb, frustum_obb and kdop_obb;
 // contains(., point | segment | triangle | tetrahedron | box | oriented box)), against the LP with the half-spaces as rows
-// (an oriented box's containment: its corners in exact rationals). Any finding
-// aborts.
+// (an oriented box's containment: its corners in exact rationals). And the culling batch: ten
+// boxes from the doubles against the frustum (batches.hpp: every lane the scalar answer in every
+// tier, on a SIMD target byte 0 picks). Any finding aborts.
 #include "testkit/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <array>
@@ -25,6 +26,7 @@
 import incidence;
 import incidence.detail;
 #include "contracts.hpp"
+#include "batches.hpp"
 #include "testkit/lp_shapes.hpp"
 
 using namespace incidence;
@@ -186,6 +188,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     {
         halfspaces(cp);
         halfspaces(fr);
+        // the culling batch: seven boxes of consecutive doubles (maybe inverted), p alone, p q ordered, q p
+        std::array<aabb3, 10> boxes{};
+        for (unsigned i = 0; i < 7; ++i) {
+            const unsigned k = 3 * i;
+            boxes[i] = aabb3{{v[k], v[k + 1], v[k + 2]}, {v[(k + 3) % 24], v[(k + 4) % 24], v[(k + 5) % 24]}};
+        }
+        boxes[7] = aabb3{p, p};
+        boxes[8] = aabb3{{std::fmin(p.x, q.x), std::fmin(p.y, q.y), std::fmin(p.z, q.z)},
+                         {std::fmax(p.x, q.x), std::fmax(p.y, q.y), std::fmax(p.z, q.z)}};
+        boxes[9] = aabb3{q, p};
+        batch_contracts(fr, std::span<const aabb3>(boxes), size == 0 ? 0 : data[0]);
         (void)method::frustum_obb_sat(fr, o);
         (void)method::frustum_obb_decomposition(fr, o);
         // two half-space sets: a second polyhedron of 1 to 6 planes from other doubles (byte 2)

@@ -7,3 +7,4 @@ export import :ray_triangles;
 export import :points;
 export import :solids;
 export import :ray_solids;
+export import :culling;

@@ -1,0 +1,270 @@
+// batch::intersects(frustum, boxes) and (boxes, frustum): on every SIMD target this processor has,
+// each lane's answer equals the scalar intersects<Tier>(frustum, boxes[i]) in all four tiers, for
+// the array and the structure-of-arrays entry points in both argument orders, on camera frustums
+// (frustum3::from_camera) with random boxes, on integer frustums (corners integers) with boxes
+// whose corner lies on a frustum corner, edge or face (touching, crossing, or beyond it) and a few
+// ulps off, at scales 2^-500..2^500, and on special values (NaN, infinities, inverted boxes,
+// non-finite planes). The near-degenerate lanes are counted: those whose filter verdict is
+// uncertain (the batch must leave them to the scalar query).
+#include <catch2/catch_test_macros.hpp>
+#include <hwy/targets.h>
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+import incidence;
+import incidence.detail;
+#include "testkit/testing.hpp"
+#include "testkit/generators.hpp"
+
+namespace test_batch_culling { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
+using namespace incidence;
+
+namespace {
+
+struct culling_set {
+    frustum3 frustum;
+    std::vector<aabb3> boxes;
+};
+
+// A perspective camera anywhere in [-100, 100]^3 and boxes around what it sees.
+culling_set camera_set(support::rng& r) {
+    culling_set s;
+    for (;;) {
+        const point3 eye{r.uniform(-100, 100), r.uniform(-100, 100), r.uniform(-100, 100)};
+        const vec3 forward{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)}, up{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)};
+        const double near = r.uniform(0.1, 5);
+        const auto f = frustum3::from_camera(eye, forward, up, r.uniform(0.2, 2.5), r.uniform(0.5, 2), near, near + r.uniform(5, 200));
+        if (!f.has_value()) continue;
+        s.frustum = f.value();
+        break;
+    }
+    point3 corner[8];
+    REQUIRE(detail::frustum_corners(s.frustum, corner));
+    point3 lo = corner[0], hi = corner[0];
+    for (const point3& c : corner)
+        lo = {std::min(lo.x, c.x), std::min(lo.y, c.y), std::min(lo.z, c.z)},
+        hi = {std::max(hi.x, c.x), std::max(hi.y, c.y), std::max(hi.z, c.z)};
+    const double size = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+    const int n = r.integer(1, 200);
+    for (int i = 0; i < n; ++i) {
+        double a[3], e[3];
+        const double l[3] = {lo.x, lo.y, lo.z}, h[3] = {hi.x, hi.y, hi.z};
+        for (int k = 0; k < 3; ++k) a[k] = r.uniform(l[k] - 0.2 * size, h[k] + 0.2 * size), e[k] = r.uniform(0, 0.1 * size);
+        s.boxes.push_back(aabb3{{a[0], a[1], a[2]}, {a[0] + e[0], a[1] + e[1], a[2] + e[2]}});
+    }
+    return s;
+}
+
+// An integer frustum (audit::touching_frustum: integer corners) and boxes with a corner at one of
+// its corners, edge midpoints or face centres, reaching any way by integer extents (so touching
+// it, crossing it or beyond it), a quarter of them a few ulps off; then the whole set at 2^k. At
+// most 64 boxes: most of them go to the scalar query's linear program, slow in the sanitizer build.
+culling_set touching_set(support::rng& r) {
+    culling_set s;
+    s.frustum = audit::touching_frustum(r).shape;
+    point3 corner[8];
+    REQUIRE(detail::frustum_corners(s.frustum, corner));
+    const int n = r.integer(1, 64);
+    for (int i = 0; i < n; ++i) {
+        // corners on plane P: bit P / 2 of the corner index equal to P % 2
+        const int plane = r.integer(0, 5), bit = plane / 2, value = plane % 2, take = 1 << r.integer(0, 2);
+        int on[4], count = 0;
+        for (int m = 0; m < 8; ++m)
+            if (((m >> bit) & 1) == value) on[count++] = m;
+        const int first = r.integer(0, 3);
+        vec3 sum{0, 0, 0};
+        for (int j = 0; j < take; ++j) sum = sum + (corner[on[(first + j) % 4]] - point3{0, 0, 0});
+        const point3 p = point3{0, 0, 0} + sum * (1.0 / take); // exact: integers over 1, 2 or 4
+        double a[3] = {p.x, p.y, p.z}, b[3] = {p.x, p.y, p.z};
+        for (int k = 0; k < 3; ++k) {
+            const double e = r.integer(0, 3) == 0 ? 0.0 : r.integer(1, 40);
+            if (r.coin()) b[k] += e;
+            else a[k] -= e;
+        }
+        aabb3 box{{a[0], a[1], a[2]}, {b[0], b[1], b[2]}};
+        if (r.integer(0, 3) == 0)
+            box = aabb3{{support::nudge(box.min.x, r.integer(-3, 3)), support::nudge(box.min.y, r.integer(-3, 3)), box.min.z},
+                        {box.max.x, support::nudge(box.max.y, r.integer(-3, 3)), support::nudge(box.max.z, r.integer(-3, 3))}};
+        s.boxes.push_back(box);
+    }
+    if (r.integer(0, 2) == 0) { // scale 2^k: planes by their offsets, boxes by their bounds
+        const int k = r.integer(-500, 500);
+        s.frustum = audit::scaled(s.frustum, k);
+        for (aabb3& b : s.boxes)
+            b = aabb3{{std::ldexp(b.min.x, k), std::ldexp(b.min.y, k), std::ldexp(b.min.z, k)},
+                      {std::ldexp(b.max.x, k), std::ldexp(b.max.y, k), std::ldexp(b.max.z, k)}};
+    }
+    return s;
+}
+
+// Six planes with integer normals (no zero component) and the boxes beyond the line where planes 0
+// and 1 meet (through an integer point X): a corner at X, reaching along the signs of
+// g = |n_1[a]| n_0 + |n_0[a]| n_1 (n_0[a] and n_1[a] of opposite signs), so the plane the two imply
+// touches the box at X (the batch's third stage, halfspaces::edge_planes); the other planes pass X
+// or leave room. A third of the boxes are a few ulps off, some boxes random around X.
+culling_set edge_set(support::rng& r) {
+    auto nonzero = [&] { return (r.coin() ? 1.0 : -1.0) * r.integer(1, 3); };
+    const point3 X = audit::int_point(r, 400);
+    const int a = r.integer(0, 2);
+    culling_set s;
+    for (unsigned i = 0; i < 6; ++i) {
+        vec3 n{nonzero(), nonzero(), nonzero()};
+        if (i == 1) { // opposite to plane 0 on axis a
+            const double v = (a == 0 ? s.frustum.planes[0].normal.x : a == 1 ? s.frustum.planes[0].normal.y : s.frustum.planes[0].normal.z);
+            const double w = -std::copysign(r.integer(1, 3), v);
+            n = a == 0 ? vec3{w, n.y, n.z} : a == 1 ? vec3{n.x, w, n.z} : vec3{n.x, n.y, w};
+        }
+        s.frustum.planes[i] = plane3{n, dot(n, X - point3{0, 0, 0}) + (i < 2 ? 0.0 : r.integer(0, 3) * 40.0)};
+    }
+    const vec3 n0 = s.frustum.planes[0].normal, n1 = s.frustum.planes[1].normal;
+    const double alpha = std::abs(a == 0 ? n1.x : a == 1 ? n1.y : n1.z), beta = std::abs(a == 0 ? n0.x : a == 1 ? n0.y : n0.z);
+    const vec3 g = n0 * alpha + n1 * beta; // exact: small integers
+    const int n = r.integer(1, 64);
+    for (int i = 0; i < n; ++i) {
+        const double gv[3] = {g.x, g.y, g.z}, x[3] = {X.x, X.y, X.z};
+        double lo[3], hi[3];
+        for (int k = 0; k < 3; ++k) {
+            const double e = r.integer(0, 40), sign = gv[k] != 0 ? std::copysign(1.0, gv[k]) : (r.coin() ? 1.0 : -1.0);
+            const double y = r.integer(0, 5) == 0 ? x[k] + r.integer(-60, 60) : x[k];
+            lo[k] = sign > 0 ? y : y - e, hi[k] = sign > 0 ? y + e : y;
+        }
+        aabb3 box{{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
+        if (r.integer(0, 2) == 0)
+            box = aabb3{{support::nudge(box.min.x, r.integer(-3, 3)), support::nudge(box.min.y, r.integer(-3, 3)),
+                         support::nudge(box.min.z, r.integer(-3, 3))},
+                        {support::nudge(box.max.x, r.integer(-3, 3)), support::nudge(box.max.y, r.integer(-3, 3)),
+                         support::nudge(box.max.z, r.integer(-3, 3))}};
+        s.boxes.push_back(box);
+    }
+    return s;
+}
+
+culling_set special_set(support::rng& r) {
+    auto pick = [&] { return support::special_or_uniform(r); };
+    auto point = [&] { return point3{pick(), pick(), pick()}; };
+    culling_set s = r.coin() ? camera_set(r) : touching_set(r);
+    if (r.integer(0, 3) == 0) s.frustum.planes[static_cast<unsigned>(r.integer(0, 5))] = plane3{vec3{pick(), pick(), pick()}, pick()};
+    for (aabb3& b : s.boxes)
+        if (r.coin()) b = r.coin() ? aabb3{point(), point()} : aabb3{b.max, b.min};
+    return s;
+}
+
+struct counts {
+    long lanes = 0, wrong = 0, uncertain = 0, met = 0;
+};
+
+std::vector<double> field(const std::vector<aabb3>& v, int k) {
+    std::vector<double> out;
+    for (const aabb3& b : v)
+        out.push_back(k < 3 ? (k == 0 ? b.min.x : k == 1 ? b.min.y : b.min.z) : (k == 3 ? b.max.x : k == 4 ? b.max.y : b.max.z));
+    return out;
+}
+
+template <class Tier>
+void compare(const culling_set& s, counts& c, const std::string& where) {
+    const std::size_t n = s.boxes.size();
+    std::vector<std::uint8_t> out[4];
+    for (auto& o : out) o.assign(n, 7);
+    std::vector<double> f[6];
+    for (int k = 0; k < 6; ++k) f[k] = field(s.boxes, k);
+    const batch::boxes_soa soa{f[0], f[1], f[2], f[3], f[4], f[5]};
+    const std::span<const aabb3> boxes(s.boxes);
+    const result<std::size_t> r[4] = {batch::intersects<Tier>(s.frustum, boxes, out[0]), batch::intersects<Tier>(s.frustum, soa, out[1]),
+                                      batch::intersects<Tier>(boxes, s.frustum, out[2]), batch::intersects<Tier>(soa, s.frustum, out[3])};
+    std::size_t met = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint8_t scalar = intersects<Tier>(s.frustum, s.boxes[i]) ? 1 : 0;
+        met += scalar;
+        ++c.lanes;
+        if (std::is_same_v<Tier, exact>) c.uncertain += classify(s.frustum, s.boxes[i]) == certainty::uncertain;
+        if (out[0][i] != scalar || out[1][i] != scalar || out[2][i] != scalar || out[3][i] != scalar) {
+            if (++c.wrong <= 5) {
+                std::printf("  %s lane %zu: scalar %d, batch %d %d %d %d\n", where.c_str(), i, scalar, out[0][i], out[1][i], out[2][i],
+                            out[3][i]);
+                for (auto& p : s.frustum.planes) std::printf("    plane %a %a %a %a\n", p.normal.x, p.normal.y, p.normal.z, p.offset);
+                const aabb3& b = s.boxes[i];
+                std::printf("    box %a %a %a  %a %a %a\n", b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z);
+            }
+        }
+    }
+    c.met += static_cast<long>(met);
+    for (const auto& x : r) {
+        REQUIRE(x.has_value());
+        if (x.value() != met) ++c.wrong;
+    }
+}
+
+template <class Make>
+void every_tier_on_every_target(const char* name, long sets, Make make) {
+    counts c[4];
+    int targets = 0;
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        ++targets;
+        support::rng r(support::seed());
+        for (long k = 0; k < sets; ++k) {
+            const culling_set s = make(r, k);
+            const std::string where = std::string(name) + " on " + hwy::TargetName(target);
+            compare<exact>(s, c[0], where + ", exact");
+            compare<conservative>(s, c[1], where + ", conservative");
+            compare<aggressive>(s, c[2], where + ", aggressive");
+            compare<approximate>(s, c[3], where + ", approximate");
+        }
+    }
+    hwy::SetSupportedTargetsForTest(0);
+    std::printf("[cases] batch culling %s: %d SIMD targets, %ld lanes per tier (%ld met, %ld uncertain for the filter); lanes unlike the "
+                "scalar answer %ld %ld %ld %ld (exact, conservative, aggressive, approximate)\n",
+                name, targets, c[0].lanes, c[0].met, c[0].uncertain, c[0].wrong, c[1].wrong, c[2].wrong, c[3].wrong);
+    CHECK(targets >= 2);
+    for (const counts& x : c) CHECK(x.wrong == 0);
+}
+
+} // namespace
+
+TEST_CASE("batch culling: every lane is the scalar answer, camera frustums and random boxes, every target", "[batch]") {
+    every_tier_on_every_target("camera", support::cases(150), [](support::rng& r, long) { return camera_set(r); });
+}
+
+TEST_CASE("batch culling: every lane is the scalar answer, boxes at an integer frustum's boundary, every target", "[batch]") {
+    long uncertain = 0, lanes = 0;
+    support::rng r(support::seed());
+    for (int k = 0; k < 30; ++k) { // the sets are near-degenerate: the filter leaves many lanes open
+        const culling_set s = touching_set(r);
+        for (const aabb3& b : s.boxes) uncertain += classify(s.frustum, b) == certainty::uncertain, ++lanes;
+    }
+    std::printf("[cases] batch culling: %ld of %ld lanes of the touching sets are uncertain for the filter\n", uncertain, lanes);
+    CHECK(uncertain * 10 > lanes);
+    every_tier_on_every_target("touching", support::cases(150), [](support::rng& g, long) { return touching_set(g); });
+}
+
+TEST_CASE("batch culling: every lane is the scalar answer, boxes beyond an edge of six integer planes, every target", "[batch]") {
+    every_tier_on_every_target("edge", support::cases(150), [](support::rng& r, long) { return edge_set(r); });
+}
+
+TEST_CASE("batch culling: every lane is the scalar answer, special values, every target", "[batch]") {
+    every_tier_on_every_target("special", support::cases(100), [](support::rng& r, long) { return special_set(r); });
+}
+
+TEST_CASE("batch culling: sizes", "[batch]") {
+    const frustum3 f = frustum3::from_camera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 1.0, 1.0, 1.0, 10.0).value();
+    const std::vector<aabb3> boxes{aabb3{{-1, -1, -5}, {1, 1, -4}}, aabb3{{-1, -1, 1}, {1, 1, 2}}, aabb3{{50, 50, -5}, {51, 51, -4}}};
+    std::vector<std::uint8_t> out(2);
+    const auto refused = batch::intersects<exact>(f, std::span<const aabb3>(boxes), out);
+    REQUIRE(refused.has_error());
+    CHECK(refused.error().code == errc::size_mismatch);
+    out.resize(3);
+    const auto met = batch::intersects<exact>(std::span<const aabb3>(boxes), f, out);
+    REQUIRE(met.has_value());
+    CHECK(met.value() == 1);
+    CHECK(out == std::vector<std::uint8_t>{1, 0, 0});
+    const std::vector<double> x{0.0, 1.0}, y{0.0};
+    const auto bad = batch::intersects<exact>(f, batch::boxes_soa{x, x, x, x, x, y}, std::span<std::uint8_t>(out.data(), 2));
+    REQUIRE(bad.has_error());
+    CHECK(bad.error().code == errc::size_mismatch);
+}
+
+} // namespace test_batch_culling
