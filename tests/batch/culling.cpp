@@ -7,7 +7,6 @@
 // non-finite planes). The near-degenerate lanes are counted: those whose filter verdict is
 // uncertain (the batch must leave them to the scalar query).
 #include <catch2/catch_test_macros.hpp>
-#include <hwy/targets.h>
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -18,6 +17,7 @@ import incidence;
 import incidence.detail;
 #include "testkit/testing.hpp"
 #include "testkit/generators.hpp"
+#include "testkit/simd_targets.hpp"
 
 namespace test_batch_culling { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 
@@ -201,21 +201,15 @@ void compare(const culling_set& s, counts& c, const std::string& where) {
 template <class Make>
 void every_tier_on_every_target(const char* name, long sets, Make make) {
     counts c[4];
-    int targets = 0;
-    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        hwy::SetSupportedTargetsForTest(target);
-        ++targets;
-        support::rng r(support::seed());
+    const int targets = support::on_every_target(name, [&](support::rng& r, const std::string& where, const char*) {
         for (long k = 0; k < sets; ++k) {
             const culling_set s = make(r, k);
-            const std::string where = std::string(name) + " on " + hwy::TargetName(target);
             compare<exact>(s, c[0], where + ", exact");
             compare<conservative>(s, c[1], where + ", conservative");
             compare<aggressive>(s, c[2], where + ", aggressive");
             compare<approximate>(s, c[3], where + ", approximate");
         }
-    }
-    hwy::SetSupportedTargetsForTest(0);
+    });
     std::printf("[cases] batch culling %s: %d SIMD targets, %ld lanes per tier (%ld met, %ld uncertain for the filter); lanes unlike the "
                 "scalar answer %ld %ld %ld %ld (exact, conservative, aggressive, approximate)\n",
                 name, targets, c[0].lanes, c[0].met, c[0].uncertain, c[0].wrong, c[1].wrong, c[2].wrong, c[3].wrong);

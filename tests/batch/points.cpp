@@ -6,7 +6,6 @@
 // tetrahedra among them), at scales 2^-500..2^500, and on special values. The
 // exact lanes on the boundary are checked against the known truth (on the boundary: inside).
 #include <catch2/catch_test_macros.hpp>
-#include <hwy/targets.h>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -14,6 +13,7 @@
 #include <vector>
 import incidence;
 #include "testkit/testing.hpp"
+#include "testkit/simd_targets.hpp"
 
 namespace test_batch_points { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 
@@ -140,14 +140,9 @@ void compare(const Solid& solid, const point_set& s, int boundary_kind, counts& 
 template <class Make>
 void every_tier_on_every_target(const char* name, long sets, Make make) {
     counts box[4], ball[4], tet[4];
-    int targets = 0;
-    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        hwy::SetSupportedTargetsForTest(target);
-        ++targets;
-        support::rng r(support::seed());
+    const int targets = support::on_every_target(name, [&](support::rng& r, const std::string& where, const char*) {
         for (long k = 0; k < sets; ++k) {
             const point_set s = make(r, static_cast<int>(k % 4));
-            const std::string where = std::string(name) + " on " + hwy::TargetName(target);
             compare<exact>(s.box, s, 1, box[0], where + ", box, exact");
             compare<conservative>(s.box, s, 1, box[1], where + ", box, conservative");
             compare<aggressive>(s.box, s, 1, box[2], where + ", box, aggressive");
@@ -161,8 +156,7 @@ void every_tier_on_every_target(const char* name, long sets, Make make) {
             compare<aggressive>(s.tet, s, 3, tet[2], where + ", tetrahedron, aggressive");
             compare<approximate>(s.tet, s, 3, tet[3], where + ", tetrahedron, approximate");
         }
-    }
-    hwy::SetSupportedTargetsForTest(0);
+    });
     std::printf(
         "[cases] batch points %s: %d SIMD targets, %ld lanes per tier and solid; lanes unlike the scalar answer: box %ld %ld %ld %ld, "
         "ball %ld %ld %ld %ld, tetrahedron %ld %ld %ld %ld (exact, conservative, aggressive, approximate); exact lanes on the "

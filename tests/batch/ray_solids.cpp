@@ -6,7 +6,6 @@
 // scales 2^-500..2^500, and on special values (NaN, infinities, zero directions, inverted boxes,
 // negative radii). The exact lanes are checked against the CGAL Epeck oracle.
 #include <catch2/catch_test_macros.hpp>
-#include <hwy/targets.h>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -16,6 +15,7 @@
 #include "testkit/oracle/cgal_oracle.hpp"
 import incidence;
 #include "testkit/testing.hpp"
+#include "testkit/simd_targets.hpp"
 #include "testkit/sphere_points.hpp"
 
 namespace test_batch_ray_solids { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
@@ -205,21 +205,15 @@ void every_tier(const One& one, const std::vector<Many>& many, counts* c, const 
 template <class Make>
 void every_pair_on_every_target(const char* name, long sets, Make make) {
     counts pairs[4][4]; // ray-boxes, ray-balls, rays-box, rays-ball; per tier
-    int targets = 0;
-    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        hwy::SetSupportedTargetsForTest(target);
-        ++targets;
-        support::rng r(support::seed());
+    const int targets = support::on_every_target(name, [&](support::rng& r, const std::string& where, const char*) {
         for (long k = 0; k < sets; ++k) {
             const ray_solid_set s = make(r);
-            const std::string where = std::string(name) + " on " + hwy::TargetName(target);
             every_tier(s.ray, s.boxes, pairs[0], where + ", ray against boxes");
             every_tier(s.ray, s.balls, pairs[1], where + ", ray against balls");
             every_tier(s.box, s.rays, pairs[2], where + ", rays against a box");
             every_tier(s.ball, s.rays, pairs[3], where + ", rays against a ball");
         }
-    }
-    hwy::SetSupportedTargetsForTest(0);
+    });
     const char* names[4] = {"ray-boxes", "ray-balls", "rays-box", "rays-ball"};
     for (int p = 0; p < 4; ++p)
         std::printf("[cases] batch ray_solids %s, %s: %d SIMD targets, %ld lanes per tier; lanes unlike the scalar answer %ld %ld %ld %ld "

@@ -7,7 +7,6 @@
 // edges, inside and outside points, in its plane and not. The exact lanes are also checked
 // against the CGAL Epeck oracle on the meshes and the rays.
 #include <catch2/catch_test_macros.hpp>
-#include <hwy/targets.h>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -17,6 +16,7 @@
 #include "testkit/oracle/cgal_oracle.hpp"
 import incidence;
 #include "testkit/testing.hpp"
+#include "testkit/simd_targets.hpp"
 
 namespace test_batch_ray_triangles { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 
@@ -216,22 +216,16 @@ void compare(const ray_set& s, counts& c, const std::string& where) {
 template <class Make>
 void every_tier_on_every_target(const char* name, long sets, Make make) {
     counts c[4];
-    int targets = 0;
-    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        hwy::SetSupportedTargetsForTest(target);
-        REQUIRE(std::string(batch::simd_target()) == hwy::TargetName(target));
-        ++targets;
-        support::rng r(support::seed());
+    const int targets = support::on_every_target(name, [&](support::rng& r, const std::string& where, const char* target) {
+        REQUIRE(std::string(batch::simd_target()) == target);
         for (long k = 0; k < sets; ++k) {
             const ray_set s = make(r);
-            const std::string where = std::string(name) + " on " + hwy::TargetName(target);
             compare<exact>(s, c[0], where + ", exact");
             compare<conservative>(s, c[1], where + ", conservative");
             compare<aggressive>(s, c[2], where + ", aggressive");
             compare<approximate>(s, c[3], where + ", approximate");
         }
-    }
-    hwy::SetSupportedTargetsForTest(0);
+    });
     std::printf("[cases] batch ray_triangles %s: %d SIMD targets, %ld lanes per tier; lanes unlike the scalar answer: exact %ld, "
                 "conservative %ld, aggressive %ld, approximate %ld\n",
                 name, targets, c[0].lanes, c[0].wrong, c[1].wrong, c[2].wrong, c[3].wrong);
@@ -255,12 +249,7 @@ TEST_CASE("batch ray_triangles: every lane is the scalar answer, special values,
 
 TEST_CASE("batch rays_triangle: every lane is the scalar answer, rays at one triangle's vertices and edges, every target", "[batch]") {
     counts c[4], sc[4];
-    int targets = 0;
-    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        hwy::SetSupportedTargetsForTest(target);
-        ++targets;
-        support::rng r(support::seed());
-        const std::string where = std::string("rays on ") + hwy::TargetName(target);
+    const int targets = support::on_every_target("rays", [&](support::rng& r, const std::string& where, const char*) {
         for (long k = 0; k < support::cases(300); ++k) {
             const rays_set s = rays_at_one(r, false), sp = rays_at_one(r, true);
             compare_rays<exact>(s, c[0], where + ", exact");
@@ -272,8 +261,7 @@ TEST_CASE("batch rays_triangle: every lane is the scalar answer, rays at one tri
             compare_rays<aggressive>(sp, sc[2], where + ", special, aggressive");
             compare_rays<approximate>(sp, sc[3], where + ", special, approximate");
         }
-    }
-    hwy::SetSupportedTargetsForTest(0);
+    });
     std::printf("[cases] batch rays_triangle: %d SIMD targets, %ld lanes per tier (and %ld of special values); lanes unlike the scalar "
                 "answer: %ld %ld %ld %ld, special %ld %ld %ld %ld (exact, conservative, aggressive, approximate)\n",
                 targets, c[0].lanes, sc[0].lanes, c[0].wrong, c[1].wrong, c[2].wrong, c[3].wrong, sc[0].wrong, sc[1].wrong, sc[2].wrong,

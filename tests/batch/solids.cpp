@@ -6,7 +6,6 @@
 // 2^-500..2^500, and on special values (NaN, infinities, inverted boxes, negative radii). The exact
 // lanes that touch are checked against the known truth (touching meets).
 #include <catch2/catch_test_macros.hpp>
-#include <hwy/targets.h>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -16,6 +15,7 @@
 #include <vector>
 import incidence;
 #include "testkit/testing.hpp"
+#include "testkit/simd_targets.hpp"
 
 namespace test_batch_solids { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 
@@ -199,22 +199,15 @@ void every_tier(const One& one, const std::vector<Many>& many, const std::vector
 template <class Make>
 void every_pair_on_every_target(const char* name, long sets, Make make) {
     counts pairs[4][4]; // box-boxes, box-balls, ball-boxes, ball-balls; per tier
-    int targets = 0;
-    const std::vector<int> none;
-    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        hwy::SetSupportedTargetsForTest(target);
-        ++targets;
-        support::rng r(support::seed());
+    const int targets = support::on_every_target(name, [&](support::rng& r, const std::string& where, const char*) {
         for (long k = 0; k < sets; ++k) {
             const solid_set s = make(r, static_cast<int>(k % 3));
-            const std::string where = std::string(name) + " on " + hwy::TargetName(target);
             every_tier(s.box, s.boxes, s.touching_box, 1, pairs[0], where + ", box against boxes");
             every_tier(s.box, s.balls, s.touching_ball, 1, pairs[1], where + ", box against balls");
             every_tier(s.ball, s.boxes, s.touching_box, -1, pairs[2], where + ", ball against boxes");
             every_tier(s.ball, s.balls, s.touching_ball, 2, pairs[3], where + ", ball against balls");
         }
-    }
-    hwy::SetSupportedTargetsForTest(0);
+    });
     const char* names[4] = {"box-boxes", "box-balls", "ball-boxes", "ball-balls"};
     for (int p = 0; p < 4; ++p)
         std::printf("[cases] batch solids %s, %s: %d SIMD targets, %ld lanes per tier; lanes unlike the scalar answer %ld %ld %ld %ld "
