@@ -2,9 +2,9 @@
 // batch::intersects(frustum, boxes) (modules/batch/culling.cppm declares it). Highway compiles this
 // file once per target and dispatches at run time, as ray_triangles_simd.cpp.
 //
-// A lane does the first two stages of the scalar query (halfspaces::box_meets in
-// modules/engines/halfspace_lp.cppm), operation for operation, so that what it decides is the
-// scalar answer bit for bit:
+// A lane does the three stages of the scalar query (halfspaces::box_meets in
+// modules/engines/halfspace_lp.cppm) that come before its linear program, operation for
+// operation, so that what it decides is the scalar answer bit for bit:
 // 1. for each plane in order, c - n . q with q the box corner least along n: negative says no;
 // 2. then, with every plane passed, c - n . m at the box's clamped middle m: positive at every
 //    plane says yes; so does the same at the box corner least along n_i, for a plane i the middle
@@ -15,10 +15,12 @@
 //    q the list names: negative says no.
 // A lane no stage decides is left to the scalar query (its linear program): the boxes near the
 // frustum's edges and corners. approximate: plain double. The filtered tiers: each sign of the
-// scalar filter (degree 2, gamma_4; stage 3 degree 3, gamma_6) against the lane's own permanent;
-// a lane whose plane sign is unproven before a negative one is left open too, as the scalar
-// filter pass fails there. A box with a non-finite bound or an inverted box meets nothing. The caller passes finite
-// planes only (a frustum with a non-finite number is no set: the scalar query's answer).
+// scalar filter (degree 2, gamma_4; stage 3 degree 3, gamma_6), stages 1 and 2 against a static
+// bound per plane and block of 64 lanes and then, where that leaves a lane undecided, the lane's
+// own permanent, stage 3 against the lane's own; a lane whose plane sign is unproven before a
+// negative one is left open too, as the scalar filter pass fails there. A box with a non-finite
+// bound or an inverted box meets nothing. The caller passes finite planes only (a frustum with a
+// non-finite number is no set: the scalar query's answer).
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -94,6 +96,10 @@ void frustum_box(const double* planes, const double* edges, int edge_count, cons
             }
         }
         // plane p's sign at x for the lanes in `care`: the static bound, then each lane's own
+        // the box corner least along plane p's normal (halfspaces' least_corner: min where n_k > 0)
+        auto least_corner = [&](int p, const V* mn, const V* mx, V* q) {
+            for (int k = 0; k < 3; ++k) q[k] = planes[4 * p + k] > 0 ? mn[k] : mx[k];
+        };
         auto test = [&](int p, const V* x, M care) {
             const double* plane = planes + 4 * p;
             const V v = plane_value_alone(d, plane, x);
@@ -112,7 +118,7 @@ void frustum_box(const double* planes, const double* edges, int edge_count, cons
             M alive = usable, open = none;
             for (int p = 0; p < 6 && !hn::AllFalse(d, alive); ++p) {
                 V q[3];
-                for (int k = 0; k < 3; ++k) q[k] = planes[4 * p + k] > 0 ? mn[k] : mx[k];
+                least_corner(p, mn, mx, q);
                 const sign_masks s = test(p, q, alive);
                 if (filter) open = hn::Or(open, hn::AndNot(hn::Or(s.pos, s.neg), alive));
                 alive = filter ? hn::And(alive, s.pos) : hn::AndNot(s.neg, alive);
@@ -136,7 +142,7 @@ void frustum_box(const double* planes, const double* edges, int edge_count, cons
                     const M tried = hn::AndNot(yes, hn::And(alive, middle_outside[p]));
                     if (hn::AllFalse(d, hn::AndNot(corner_inside, tried))) continue;
                     V q[3];
-                    for (int k = 0; k < 3; ++k) q[k] = planes[4 * p + k] > 0 ? mn[k] : mx[k];
+                    least_corner(p, mn, mx, q);
                     M inside = tried;
                     for (int j = 0; j < 6; ++j) inside = hn::And(inside, test(j, q, tried).pos);
                     corner_inside = hn::Or(corner_inside, inside);
