@@ -12,6 +12,8 @@
 //   <tier>/batch_intersects/ray_triangles_<TARGET>/<dist>     one target (AVX3 = AVX-512, AVX2, SSE4)
 //   <tier>/scalar_loop/ray_triangles/<dist>                   intersects<Tier>(ray, t) for each t
 //   <tier>/batch_intersects/ray_triangles_soa/<dist>          the packet entry (batch::triangles_soa)
+//   <tier>/batch_intersects/ray_triangles_soa_float/<dist>    the float packet (batch::triangles_soa_f;
+//                                                             the set rounded to float)
 // Each iteration is one ray against the whole set; the counter s_per_test is the time per
 // ray-triangle test, in seconds. Sets: random (triangles and rays in the unit cube, as the other random sets)
 // and mesh (a grid mesh whose edges and vertices the rays pass exactly, and rays in its plane: the
@@ -155,6 +157,49 @@ void reg_batch(const std::string& name, const std::vector<ray_batch>& set, std::
                                                        benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
     });
 }
+// The set in floats (each number rounded to float; the ray too, so that the approximate tier runs
+// in float lanes): the packet entry for triangles_soa_f. Before timing, the filtered tiers' lanes
+// against the scalar query on the widened triangles.
+struct float_set {
+    ray3 ray;
+    std::vector<float> c[9];
+    batch::triangles_soa_f view() const { return {c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8]}; }
+};
+double to_float(double x) { return static_cast<float>(x); }
+float_set as_float(const ray_batch& b) {
+    float_set s;
+    s.ray = ray3{{to_float(b.ray.origin.x), to_float(b.ray.origin.y), to_float(b.ray.origin.z)},
+                 {to_float(b.ray.direction.x), to_float(b.ray.direction.y), to_float(b.ray.direction.z)}};
+    for (const triangle3& t : b.triangles) {
+        const double v[9] = {t.a.x, t.a.y, t.a.z, t.b.x, t.b.y, t.b.z, t.c.x, t.c.y, t.c.z};
+        for (int k = 0; k < 9; ++k) s.c[k].push_back(static_cast<float>(v[k]));
+    }
+    return s;
+}
+template <class Tier>
+void reg_float_batch(const std::string& name, const std::vector<ray_batch>& set) {
+    benchmark::RegisterBenchmark(name.c_str(), [set](benchmark::State& st) {
+        std::vector<float_set> packets;
+        for (const ray_batch& b : set) packets.push_back(as_float(b));
+        std::vector<std::uint8_t> out(set.front().triangles.size());
+        if constexpr (!std::is_same_v<Tier, approximate>)
+            for (const float_set& f : packets) {
+                if (!batch::intersects<Tier>(f.ray, f.view(), out)) return st.SkipWithError("refused");
+                for (std::size_t i = 0; i < out.size(); ++i)
+                    if ((out[i] == 1) != intersects<Tier>(f.ray, f.view()[i]))
+                        return st.SkipWithError("a lane differs from the scalar answer");
+            }
+        std::size_t k = 0;
+        for (auto _ : st) {
+            benchmark::DoNotOptimize(batch::intersects<Tier>(packets[k].ray, packets[k].view(), out));
+            benchmark::ClobberMemory();
+            if (++k == packets.size()) k = 0;
+        }
+        st.counters["s_per_test"] = benchmark::Counter(static_cast<double>(out.size()),
+                                                       benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+    });
+}
+
 template <class Tier>
 void reg_loop(const std::string& name, const std::vector<ray_batch>& set) {
     benchmark::RegisterBenchmark(name.c_str(), [set](benchmark::State& st) {
@@ -221,6 +266,7 @@ void reg_tier(const std::string& tier, const std::string& dist, const std::vecto
     reg_first_hit<Tier>(tier + "/scalar_loop_intersection/ray_triangles/" + dist, set, 1);
     reg_batch<Tier>(tier + "/batch_intersects/ray_triangles/" + dist, set, 0);
     reg_batch<Tier>(tier + "/batch_intersects/ray_triangles_soa/" + dist, set, 0, true);
+    reg_float_batch<Tier>(tier + "/batch_intersects/ray_triangles_soa_float/" + dist, set);
     for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
         const std::string t = hwy::TargetName(target);
         if (t == "AVX3" || t == "AVX2" || t == "SSE4")

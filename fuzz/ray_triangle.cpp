@@ -7,13 +7,17 @@
 // against nine triangles from the same bytes (t, u, t's vertices permuted, t's edges with other
 // apexes, doubles 18..31), and six rays of the same bytes against t, on a SIMD target the first
 // (second) byte picks, every lane equal to the scalar answer in every tier; the ray's first hit
-// among the nine (batch::intersection) is the scene's over them. Any finding aborts.
+// among the nine (batch::intersection) is the scene's over them; the nine and the ray rounded to
+// float as a float packet (batch::triangles_soa_f), the filtered tiers' lanes the scalar answers.
+// Any finding aborts.
 #include "testkit/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <span>
+#include <type_traits>
+#include <vector>
 import incidence;
 #include "contracts.hpp"
 #include "batches.hpp"
@@ -37,6 +41,42 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                           {t.b, {v[27], v[28], v[29]}},
                           {{v[30], v[31], v[0]}, t.c - point3{v[30], v[31], v[0]}}};
     batch_contracts(t, std::span<const ray3>(rays), size > 1 ? data[1] : 0);
+    // the nine rounded to floats (a float packet) and the ray too: the filtered tiers' lanes are the
+    // scalar answers on the widened triangles; the float approximate tier answers 0 or 1 and counts them
+    {
+        auto to_float = [](double x) { // no double outside float's range is converted
+            if (x > 0x1.fffffep127) return __builtin_huge_valf();
+            if (x < -0x1.fffffep127) return -__builtin_huge_valf();
+            return static_cast<float>(x);
+        };
+        std::vector<float> c[9];
+        for (const triangle3& x : ts) {
+            const double w[9] = {x.a.x, x.a.y, x.a.z, x.b.x, x.b.y, x.b.z, x.c.x, x.c.y, x.c.z};
+            for (int k = 0; k < 9; ++k) c[k].push_back(to_float(w[k]));
+        }
+        const batch::triangles_soa_f packet{c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8]};
+        const ray3 fr{{to_float(v[0]), to_float(v[1]), to_float(v[2])}, {to_float(v[3]), to_float(v[4]), to_float(v[5])}};
+        std::uint8_t out[9];
+        auto same = [&](auto tier, const ray3& ray) {
+            using Tier = decltype(tier);
+            const auto met = batch::intersects<Tier>(ray, packet, out);
+            if (!met) std::abort();
+            std::size_t count = 0;
+            for (std::size_t i = 0; i < 9; ++i) {
+                if (out[i] > 1) std::abort();
+                if constexpr (!std::is_same_v<Tier, approximate>)
+                    if ((out[i] == 1) != intersects<Tier>(ray, packet[i])) std::abort();
+                count += out[i];
+            }
+            if (met.value() != count) std::abort();
+        };
+        for (const ray3& ray : {fr, r}) {
+            same(exact{}, ray);
+            same(conservative{}, ray);
+            same(aggressive{}, ray);
+            same(approximate{}, ray);
+        }
+    }
     // the first hit among the nine: the scene's over the same triangles (exact, conservative,
     // aggressive: value for value; without a scene, non-finite input: an exact hit is a triangle met)
     {

@@ -2,8 +2,10 @@
 // the stack (no heap allocation), each block handed to a SIMD kernel, and the lanes a filtered
 // kernel left open (2) answered by the scalar query of the tier.
 module;
+#include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 export module incidence.batch:lanes;
 import incidence.core;
@@ -64,6 +66,40 @@ std::size_t by_blocks(std::span<const Shape> items, std::uint8_t* out, const Unp
         met += kernel(coords, n, out + start, start);
     }
     return met;
+}
+
+// The same over Fields arrays of n floats, widened to double (exactly) 64 at a time.
+template <std::size_t Fields, class Kernel>
+std::size_t widened_blocks(const float* const* arrays, std::size_t n, std::uint8_t* out, const Kernel& kernel) {
+    double buffer[Fields][block];
+    const double* coords[Fields];
+    for (std::size_t k = 0; k < Fields; ++k) coords[k] = buffer[k];
+    std::size_t met = 0;
+    for (std::size_t start = 0; start < n; start += block) {
+        const std::size_t m = n - start < block ? n - start : block;
+        for (std::size_t k = 0; k < Fields; ++k)
+            for (std::size_t i = 0; i < m; ++i) buffer[k][i] = arrays[k][start + i];
+        met += kernel(coords, m, out + start, start);
+    }
+    return met;
+}
+
+// Is x a float (a NaN is not)? Compared in double, so that no double out of float's range is
+// converted.
+constexpr bool is_float(double x) {
+    if (!(x == x)) return false;
+    if (x > 0x1.fffffep127 || x < -0x1.fffffep127) return x == __builtin_huge_val() || x == -__builtin_huge_val();
+    return static_cast<double>(static_cast<float>(x)) == x;
+}
+// A ray's origin and direction as six floats, where all six are floats.
+constexpr std::optional<std::array<float, 6>> floats_of(const ray3& r) {
+    const double v[6] = {r.origin.x, r.origin.y, r.origin.z, r.direction.x, r.direction.y, r.direction.z};
+    std::array<float, 6> f{};
+    for (std::size_t k = 0; k < 6; ++k) {
+        if (!is_float(v[k])) return std::nullopt;
+        f[k] = static_cast<float>(v[k]);
+    }
+    return f;
 }
 
 // After a kernel: the scalar answer(i) where a lane is open (2; only the filtered kernels leave

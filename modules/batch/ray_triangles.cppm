@@ -6,6 +6,8 @@
 // (tests/batch/ray_triangles.cpp checks it on every SIMD target). And the first hit of one ray
 // among many triangles: batch::intersection<Tier>(ray, triangles), the hit intersection<Tier>(ray,
 // scene) finds in a scene of the same triangles (tests/batch/ray_triangles.cpp checks that too).
+// Triangles kept in floats (triangles_soa_f): the same answers in the filtered tiers, and an
+// approximate tier in float lanes with its own stated bound (float_approximate_bound, below).
 // Method: the lanes run the scalar algorithm's operations in SIMD (ray_triangles_simd.cpp):
 // - approximate: the watertight test (Woop, Benthin and Wald, JCGT 2(1), 2013), the scalar
 //   approximate tier's, with its bound (catalog: ray_triangle);
@@ -16,6 +18,7 @@
 //   (bench/NOTES.md, "Batches", has the measured shares and times).
 // No heap allocation: an array of triangles is transposed 64 at a time into the stack (lanes.cppm).
 module;
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -38,6 +41,9 @@ void ray_triangles_filter(const double* origin, const double* direction, const d
 // rays: six arrays of n coordinates (origin x, y, z, direction x, y, z); triangle: nine fields of
 // one value each (a.x, ..., c.z).
 void rays_triangle_watertight(const double* const* rays, const double* const* triangle, std::size_t n, std::uint8_t* out);
+// The watertight test in float lanes: one ray (floats) against n triangles (nine arrays of floats).
+void ray_triangles_watertight_float(const float* origin, const float* direction, const float* const* coords, std::size_t n,
+                                    std::uint8_t* out);
 void rays_triangle_filter(const double* const* rays, const double* const* triangle, std::size_t n, std::uint8_t* out);
 const char* target_name();
 } // namespace incidence::batch::simd
@@ -46,9 +52,11 @@ const char* target_name();
 export namespace incidence::batch {
 
 // Triangles kept as structure of arrays: nine arrays of one length, triangle i being
-// {ax[i], ay[i], az[i]}, {bx[i], ...}, {cx[i], ...}.
-struct triangles_soa {
-    std::span<const double> ax, ay, az, bx, by, bz, cx, cy, cz;
+// {ax[i], ay[i], az[i]}, {bx[i], ...}, {cx[i], ...}; of doubles (triangles_soa) or of floats
+// (triangles_soa_f, whose coordinates widen to double exactly).
+template <class T>
+struct basic_triangles_soa {
+    std::span<const T> ax, ay, az, bx, by, bz, cx, cy, cz;
     [[nodiscard]] constexpr std::size_t size() const { return ax.size(); }
     [[nodiscard]] constexpr bool consistent() const {
         const std::size_t n = ax.size();
@@ -58,7 +66,12 @@ struct triangles_soa {
     [[nodiscard]] constexpr triangle3 operator[](std::size_t i) const {
         return {{ax[i], ay[i], az[i]}, {bx[i], by[i], bz[i]}, {cx[i], cy[i], cz[i]}};
     }
+    [[nodiscard]] constexpr std::array<const T*, 9> arrays() const {
+        return {ax.data(), ay.data(), az.data(), bx.data(), by.data(), bz.data(), cx.data(), cy.data(), cz.data()};
+    }
 };
+using triangles_soa = basic_triangles_soa<double>;
+using triangles_soa_f = basic_triangles_soa<float>;
 
 // Rays kept as structure of arrays: six arrays of one length, ray i being
 // {{ox[i], oy[i], oz[i]}, {dx[i], dy[i], dz[i]}}.
@@ -145,9 +158,34 @@ template <tier Tier = exact>
 template <tier Tier = exact>
 [[nodiscard]] result<std::size_t> intersects(const ray3& r, const triangles_soa& triangles, std::span<std::uint8_t> out) {
     if (!triangles.consistent() || out.size() != triangles.size()) return error{errc::size_mismatch};
-    const double* coords[9] = {triangles.ax.data(), triangles.ay.data(), triangles.az.data(), triangles.bx.data(), triangles.by.data(),
-                               triangles.bz.data(), triangles.cx.data(), triangles.cy.data(), triangles.cz.data()};
-    return detail::ray_triangles_block<Tier>(r, coords, triangles.size(), out.data(), [&](std::size_t i) { return triangles[i]; });
+    const auto coords = triangles.arrays();
+    return detail::ray_triangles_block<Tier>(r, coords.data(), triangles.size(), out.data(), [&](std::size_t i) { return triangles[i]; });
+}
+
+// The same for triangles kept in floats. The filtered tiers widen the coordinates to double (no
+// rounding) and answer as for triangles_soa: the scalar answer, lane by lane. The approximate tier
+// runs the watertight test in float lanes (twice as many per vector as double) where the ray's six
+// numbers are floats too, and in double otherwise (then the scalar approximate answer). In float it
+// is wrong only where one of the filter's deciding signs (the five of modules/engines/triangle.cppm's
+// linear_triangle) lies within float_approximate_bound of its permanent, for inputs whose nonzero
+// differences (a vertex minus the origin, an edge, the direction) have magnitudes in [2^-40, 2^40]
+// (so that no product of three overflows or underflows float); tests/batch/ray_triangles.cpp
+// checks it against the exact tier.
+inline constexpr double float_approximate_bound = 0x1p-16;
+template <tier Tier = exact>
+[[nodiscard]] result<std::size_t> intersects(const ray3& r, const triangles_soa_f& triangles, std::span<std::uint8_t> out) {
+    if (!triangles.consistent() || out.size() != triangles.size()) return error{errc::size_mismatch};
+    const auto arrays = triangles.arrays();
+    if constexpr (std::is_same_v<Tier, approximate>) {
+        if (const auto ray = detail::floats_of(r)) {
+            simd::ray_triangles_watertight_float(ray->data(), ray->data() + 3, arrays.data(), triangles.size(), out.data());
+            return detail::settle_open(out.data(), triangles.size(), [](std::size_t) { return false; });
+        }
+    }
+    return detail::widened_blocks<9>(
+        arrays.data(), triangles.size(), out.data(), [&](const double* const* coords, std::size_t n, std::uint8_t* o, std::size_t start) {
+            return detail::ray_triangles_block<Tier>(r, coords, n, o, [&](std::size_t i) { return triangles[start + i]; });
+        });
 }
 
 // The first hit of the ray among the triangles: the least parameter, ties to the least index, as

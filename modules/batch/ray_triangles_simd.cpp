@@ -12,7 +12,8 @@
 // - watertight: the approximate tier, the watertight test of Woop, Benthin and Wald (JCGT 2(1),
 //   2013) as modules/engines/triangle.cppm's ray_triangle_watertight writes it. 1 hit, 0 miss.
 //   One ray: its frame (the axis permutation and shear) once; many rays: each lane's own, by
-//   selecting components lane by lane.
+//   selecting components lane by lane. And the same in float lanes for triangles kept in floats
+//   (batch::triangles_soa_f): the approximate tier there, with its own bound (ray_triangles.cppm).
 // - filter: the five signs of the filtered tiers' first decision (modules/engines/triangle.cppm's
 //   linear_triangle: the normal against the direction, the three Pluecker edge values, the
 //   origin's side) in the semi-static filter of modules/arith/filtered.cppm. 1 or 0 where all five
@@ -45,48 +46,66 @@ HWY_INLINE fields ray_triangle_fields(const double* const* ray, bool rays, const
     return f;
 }
 
-// The watertight test's miss in lanes, from the vertices relative to the origin in the ray's frame
-// (x, y, z = kx, ky, kz) and the shear s: the scalar code's operations in its order.
+// The watertight test's miss in lanes (doubles, or floats for float packets), from the vertices
+// relative to the origin in the ray's frame (x, y, z = kx, ky, kz) and the shear s: the scalar
+// code's operations in its order.
+template <class DT>
 struct sheared {
-    V sx, sy, sz;
+    hn::Vec<DT> sx, sy, sz;
 };
-HWY_INLINE M watertight_miss(D d, const sheared& s, const V* A, const V* B, const V* C) {
-    const V zero = hn::Zero(d);
-    const V ax = hn::Sub(A[0], hn::Mul(s.sx, A[2])), ay = hn::Sub(A[1], hn::Mul(s.sy, A[2]));
-    const V bx = hn::Sub(B[0], hn::Mul(s.sx, B[2])), by = hn::Sub(B[1], hn::Mul(s.sy, B[2]));
-    const V cx = hn::Sub(C[0], hn::Mul(s.sx, C[2])), cy = hn::Sub(C[1], hn::Mul(s.sy, C[2]));
-    const V U = hn::Sub(hn::Mul(cx, by), hn::Mul(cy, bx));
-    const V Vv = hn::Sub(hn::Mul(ax, cy), hn::Mul(ay, cx));
-    const V W = hn::Sub(hn::Mul(bx, ay), hn::Mul(by, ax));
-    const M negative = hn::Or(hn::Or(hn::Lt(U, zero), hn::Lt(Vv, zero)), hn::Lt(W, zero));
-    const M positive = hn::Or(hn::Or(hn::Gt(U, zero), hn::Gt(Vv, zero)), hn::Gt(W, zero));
-    const V det = hn::Add(hn::Add(U, Vv), W);
-    const V az = hn::Mul(s.sz, A[2]), bz = hn::Mul(s.sz, B[2]), cz = hn::Mul(s.sz, C[2]);
-    const V T = hn::Add(hn::Add(hn::Mul(U, az), hn::Mul(Vv, bz)), hn::Mul(W, cz));
+template <bool Fused = false, class DT, class VT = hn::Vec<DT>>
+HWY_INLINE hn::Mask<DT> watertight_miss(DT d, const sheared<DT>& s, const VT* A, const VT* B, const VT* C) {
+    const VT zero = hn::Zero(d);
+    auto minus_product = [](VT x, VT a, VT b) { // x - a b
+        if constexpr (Fused) return hn::NegMulAdd(a, b, x);
+        else return hn::Sub(x, hn::Mul(a, b));
+    };
+    const VT ax = minus_product(A[0], s.sx, A[2]), ay = minus_product(A[1], s.sy, A[2]);
+    const VT bx = minus_product(B[0], s.sx, B[2]), by = minus_product(B[1], s.sy, B[2]);
+    const VT cx = minus_product(C[0], s.sx, C[2]), cy = minus_product(C[1], s.sy, C[2]);
+    const VT U = minus_product(hn::Mul(cx, by), cy, bx);
+    const VT Vv = minus_product(hn::Mul(ax, cy), ay, cx);
+    const VT W = minus_product(hn::Mul(bx, ay), by, ax);
+    const auto negative = hn::Or(hn::Or(hn::Lt(U, zero), hn::Lt(Vv, zero)), hn::Lt(W, zero));
+    const auto positive = hn::Or(hn::Or(hn::Gt(U, zero), hn::Gt(Vv, zero)), hn::Gt(W, zero));
+    const VT det = hn::Add(hn::Add(U, Vv), W);
+    const VT az = hn::Mul(s.sz, A[2]), bz = hn::Mul(s.sz, B[2]), cz = hn::Mul(s.sz, C[2]);
+    VT T;
+    if constexpr (Fused) T = hn::MulAdd(W, cz, hn::MulAdd(Vv, bz, hn::Mul(U, az)));
+    else T = hn::Add(hn::Add(hn::Mul(U, az), hn::Mul(Vv, bz)), hn::Mul(W, cz));
     // A NaN det passes `!(det != 0)` in the scalar code, as it fails Eq here.
-    const M behind = hn::Or(hn::And(hn::Lt(det, zero), hn::Gt(T, zero)), hn::And(hn::Gt(det, zero), hn::Lt(T, zero)));
+    const auto behind = hn::Or(hn::And(hn::Lt(det, zero), hn::Gt(T, zero)), hn::And(hn::Gt(det, zero), hn::Lt(T, zero)));
     return hn::Or(hn::Or(hn::And(negative, positive), hn::Eq(det, zero)), behind);
+}
+
+// The ray's frame as the scalar code finds it: kz the axis of the largest |d_k| (the first of
+// equals), kx and ky the next two cyclically, swapped where d_kz < 0.
+template <class T>
+HWY_INLINE void ray_frame(const T* dir, int* axis) {
+    int kz = 0;
+    if ((dir[1] < 0 ? -dir[1] : dir[1]) > (dir[kz] < 0 ? -dir[kz] : dir[kz])) kz = 1;
+    if ((dir[2] < 0 ? -dir[2] : dir[2]) > (dir[kz] < 0 ? -dir[kz] : dir[kz])) kz = 2;
+    int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+    if (dir[kz] < 0) {
+        const int tmp = kx;
+        kx = ky;
+        ky = tmp;
+    }
+    axis[0] = kx, axis[1] = ky, axis[2] = kz;
 }
 
 // One ray against n triangles: the ray's frame once, as the scalar code finds it.
 void watertight(const double* origin, const double* direction, const double* const* coords, std::size_t n, std::uint8_t* out) {
     const double dir[3] = {direction[0], direction[1], direction[2]};
-    int kz = 0;
-    if ((dir[1] < 0 ? -dir[1] : dir[1]) > (dir[kz] < 0 ? -dir[kz] : dir[kz])) kz = 1;
-    if ((dir[2] < 0 ? -dir[2] : dir[2]) > (dir[kz] < 0 ? -dir[kz] : dir[kz])) kz = 2;
-    int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
-    if (dir[kz] < 0.0) {
-        const int tmp = kx;
-        kx = ky;
-        ky = tmp;
-    }
+    int axis[3];
+    ray_frame(dir, axis);
+    const int kx = axis[0], ky = axis[1], kz = axis[2];
     if (!(dir[kz] != 0.0)) {
         std::memset(out, 0, n);
         return;
     }
     const D d;
-    const sheared shear{hn::Set(d, dir[kx] / dir[kz]), hn::Set(d, dir[ky] / dir[kz]), hn::Set(d, 1.0 / dir[kz])};
-    const int axis[3] = {kx, ky, kz};
+    const sheared<D> shear{hn::Set(d, dir[kx] / dir[kz]), hn::Set(d, dir[ky] / dir[kz]), hn::Set(d, 1.0 / dir[kz])};
     const V o[3] = {hn::Set(d, origin[kx]), hn::Set(d, origin[ky]), hn::Set(d, origin[kz])};
     const double* ray[6] = {origin, origin + 1, origin + 2, direction, direction + 1, direction + 2};
     over_fields(d, ray_triangle_fields(ray, false, coords, true), n,
@@ -124,7 +143,7 @@ void watertight_rays(const double* const* rays, const double* const* triangle, s
                     };
                     V df[3];
                     frame(dir, df);
-                    const sheared shear{hn::Div(df[0], df[2]), hn::Div(df[1], df[2]), hn::Div(hn::Set(d, 1.0), df[2])};
+                    const sheared<D> shear{hn::Div(df[0], df[2]), hn::Div(df[1], df[2]), hn::Div(hn::Set(d, 1.0), df[2])};
                     V rel[3][3];
                     for (int v = 0; v < 3; ++v) {
                         const V r[3] = {hn::Sub(f.at(d, 3 * v, i), f.at(d, 9, i)), hn::Sub(f.at(d, 3 * v + 1, i), f.at(d, 10, i)),
@@ -136,6 +155,46 @@ void watertight_rays(const double* const* rays, const double* const* triangle, s
                     const M miss = hn::Or(hn::Eq(dz, zero), watertight_miss(d, shear, rel[0], rel[1], rel[2]));
                     store_answers(d, hn::Not(miss), out + lane, count);
                 });
+}
+
+// One ray against n triangles in float lanes (floats throughout: the ray's frame as above, the
+// shear in float, the vertices relative to the origin rounded once to float; products fused into
+// sums where the target has FMA: this tier is held to its bound, not to the scalar's bits). 1 hit,
+// 0 miss.
+using DF = hn::ScalableTag<float>;
+void watertight_float(const float* origin, const float* direction, const float* const* coords, std::size_t n, std::uint8_t* out) {
+    static_assert(HWY_MAX_BYTES / sizeof(float) <= 16, "two bytes of mask bits per vector");
+    const float dir[3] = {direction[0], direction[1], direction[2]};
+    int axis[3];
+    ray_frame(dir, axis);
+    const int kx = axis[0], ky = axis[1], kz = axis[2];
+    if (!(dir[kz] != 0.0f)) {
+        std::memset(out, 0, n);
+        return;
+    }
+    const DF d;
+    const sheared<DF> shear{hn::Set(d, dir[kx] / dir[kz]), hn::Set(d, dir[ky] / dir[kz]), hn::Set(d, 1.0f / dir[kz])};
+    const hn::Vec<DF> o[3] = {hn::Set(d, origin[kx]), hn::Set(d, origin[ky]), hn::Set(d, origin[kz])};
+    auto lanes = [&](const float* const* p, std::size_t i, std::uint8_t* o8, std::size_t count) {
+        hn::Vec<DF> rel[3][3]; // a - o, b - o, c - o along the ray's frame
+        for (int v = 0; v < 3; ++v)
+            for (int k = 0; k < 3; ++k) rel[v][k] = hn::Sub(hn::LoadU(d, p[3 * v + axis[k]] + i), o[k]);
+        std::uint8_t bits[2] = {};
+        hn::StoreMaskBits(d, hn::Not(watertight_miss<true>(d, shear, rel[0], rel[1], rel[2])), bits);
+        store_bytes(byte_per_bit(bits[0]), o8, count < 8 ? count : 8);
+        if (count > 8) store_bytes(byte_per_bit(bits[1]), o8 + 8, count - 8);
+    };
+    const std::size_t N = hn::Lanes(d);
+    std::size_t i = 0;
+    for (; i + N <= n; i += N) lanes(coords, i, out + i, N);
+    if (i == n) return;
+    HWY_ALIGN float tail[9][HWY_MAX_BYTES / sizeof(float)] = {};
+    const float* padded[9];
+    for (int k = 0; k < 9; ++k) {
+        std::memcpy(tail[k], coords[k] + i, (n - i) * sizeof(float));
+        padded[k] = tail[k];
+    }
+    lanes(padded, 0, out + i, n - i);
 }
 
 // The five signs (fv: a value with its permanent; pv: the value alone; pp: a permanent alone, for
@@ -261,6 +320,7 @@ HWY_EXPORT(watertight);
 HWY_EXPORT(filter);
 HWY_EXPORT(watertight_rays);
 HWY_EXPORT(filter_rays);
+HWY_EXPORT(watertight_float);
 HWY_EXPORT(target);
 
 // The entry points (declared extern "C++" in modules/batch/ray_triangles.cppm).
@@ -276,6 +336,10 @@ void rays_triangle_watertight(const double* const* rays, const double* const* tr
 }
 void rays_triangle_filter(const double* const* rays, const double* const* triangle, std::size_t n, std::uint8_t* out) {
     HWY_DYNAMIC_DISPATCH(filter_rays)(rays, triangle, n, out);
+}
+void ray_triangles_watertight_float(const float* origin, const float* direction, const float* const* coords, std::size_t n,
+                                    std::uint8_t* out) {
+    HWY_DYNAMIC_DISPATCH(watertight_float)(origin, direction, coords, n, out);
 }
 // The target the dispatch picks now (a test walks every target the processor has).
 const char* target_name() { return HWY_DYNAMIC_DISPATCH(target)(); }

@@ -15,6 +15,7 @@
 #include <vector>
 #include "testkit/oracle/cgal_oracle.hpp"
 import incidence;
+import incidence.detail;
 #include "testkit/testing.hpp"
 #include "testkit/simd_targets.hpp"
 
@@ -410,7 +411,191 @@ TEST_CASE("batch ray_triangles: the exact lanes against the CGAL Epeck oracle, r
     CHECK(skipped * 10 < lanes); // the degenerate triangles are a small share of the set
 }
 
+namespace {
+
+// Triangles kept in floats (batch::triangles_soa_f). A float set: a float ray and triangles of
+// floats, all at one power-of-two scale in [2^-16, 2^16] (so that every nonzero difference lies in
+// the float tier's stated range [2^-40, 2^40]): random, or a grid mesh of integer coordinates that
+// the ray passes exactly at a vertex, an edge or in its plane, with one-float-ulp nudges and
+// collinear triangles; or special floats (NaN, infinities, the largest, subnormal). A lane is held
+// to the bound where its differences lie in the stated range (in_float_range).
+struct float_set {
+    ray3 ray;
+    std::vector<float> c[9];
+    [[nodiscard]] batch::triangles_soa_f view() const { return {c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8]}; }
+    [[nodiscard]] std::size_t size() const { return c[0].size(); }
+    [[nodiscard]] triangle3 at(std::size_t i) const { return view()[i]; }
+    void add(const float (&v)[9]) {
+        for (int k = 0; k < 9; ++k) c[k].push_back(v[k]);
+    }
+};
+float nudge_float(float x, int ulps) {
+    for (; ulps > 0; --ulps) x = std::nextafter(x, INFINITY);
+    for (; ulps < 0; ++ulps) x = std::nextafter(x, -INFINITY);
+    return x;
+}
+float_set float_random_set(support::rng& r, int n) {
+    const int k = r.integer(-16, 16);
+    auto f = [&] { return std::ldexp(static_cast<float>(r.uniform(-1, 1)), k); };
+    float_set s;
+    const float o[3] = {f(), f(), f()}, aim[3] = {f(), f(), f()};
+    s.ray = ray3{{o[0], o[1], o[2]}, {static_cast<double>(aim[0] - o[0]), aim[1] - o[1], aim[2] - o[2]}};
+    for (int i = 0; i < 2 * n + 1; ++i) {
+        float v[9];
+        for (float& x : v) x = f();
+        s.add(v);
+    }
+    return s;
+}
+float_set float_mesh_set(support::rng& r) {
+    const int k = r.integer(-16, 10), perm = r.integer(0, 2);
+    auto put = [&](float* v, double x, double y, double z) { // axes permuted cyclically, scaled by 2^k
+        const double q[3] = {x, y, z};
+        for (int a = 0; a < 3; ++a) v[a] = static_cast<float>(std::ldexp(q[(a + perm) % 3], k));
+    };
+    float_set s;
+    auto triangle = [&](double ax, double ay, double bx, double by, double cx, double cy) {
+        float v[9];
+        put(v, ax, ay, 0), put(v + 3, bx, by, 0), put(v + 6, cx, cy, 0);
+        if (r.integer(0, 7) == 0) v[r.integer(0, 8)] = nudge_float(v[r.integer(0, 8)], r.integer(-2, 2));
+        s.add(v);
+    };
+    for (int i = -4; i < 4; ++i)
+        for (int j = -4; j < 4; ++j) {
+            triangle(i, j, i + 1, j, i + 1, j + 1);
+            triangle(i, j, i + 1, j + 1, i, j + 1);
+        }
+    for (int c = 0; c < 5; ++c) { // collinear
+        const double x = r.integer(-4, 4), y = r.integer(-4, 4);
+        triangle(x, y, x + 1, y + 1, x + 2, y + 2);
+    }
+    const int kind = r.integer(0, 3);
+    const double tx = r.integer(-4, 4) + (kind == 1 ? 0.5 : (kind == 2 ? 0.25 : 0.0)), ty = r.integer(-4, 4) + (kind == 2 ? 0.5 : 0.0);
+    const double ox = r.integer(-8, 8), oy = r.integer(-8, 8), oz = kind == 3 ? 0.0 : r.integer(1, 8) * (r.coin() ? 1 : -1);
+    float o[3], t[3];
+    put(o, ox, oy, oz), put(t, tx, ty, 0);
+    if (r.coin()) o[r.integer(0, 2)] = nudge_float(o[r.integer(0, 2)], r.integer(-2, 2));
+    s.ray = ray3{{o[0], o[1], o[2]}, {static_cast<double>(t[0] - o[0]), t[1] - o[1], t[2] - o[2]}};
+    return s;
+}
+float_set float_special_set(support::rng& r) {
+    const float specials[] = {NAN, INFINITY, -INFINITY, 0x1.fffffep127f, -0x1p100f, 0x1p-149f, -0x1p-130f, 0x1p-126f, 0.0f, 1.0f, -1.0f};
+    auto pick = [&] { return r.integer(0, 2) == 0 ? specials[r.integer(0, 10)] : static_cast<float>(r.uniform(-1, 1)); };
+    float_set s;
+    s.ray = ray3{{pick(), pick(), pick()}, {pick(), pick(), pick()}};
+    for (int i = 0; i < 37; ++i) {
+        float v[9];
+        for (float& x : v) x = pick();
+        s.add(v);
+    }
+    return s;
+}
+
+// Is lane i in the float tier's stated range: every nonzero difference (a vertex minus the origin,
+// an edge, a direction's component) of magnitude in [2^-40, 2^40]?
+bool in_float_range(const ray3& ray, const triangle3& t) {
+    auto ok = [](double x) { return x == 0.0 || (std::fabs(x) >= 0x1p-40 && std::fabs(x) <= 0x1p40); };
+    const point3 v[3] = {t.a, t.b, t.c};
+    bool in = ok(ray.direction.x) && ok(ray.direction.y) && ok(ray.direction.z);
+    for (int i = 0; i < 3; ++i) {
+        const point3& p = v[i];
+        const point3& q = v[(i + 1) % 3];
+        in = in && ok(p.x - ray.origin.x) && ok(p.y - ray.origin.y) && ok(p.z - ray.origin.z) && ok(q.x - p.x) && ok(q.y - p.y) &&
+             ok(q.z - p.z);
+    }
+    return in;
+}
+
+struct float_counts {
+    long lanes = 0, out_of_range = 0, wrong[4] = {}, approx_unlike_exact = 0, outside_bound = 0, double_ray_wrong = 0;
+    double most_margin_unlike = 0; // the largest margin at which an approximate lane in the range was wrong
+};
+
+// A float set's lanes: the filtered tiers against the scalar tier on the widened triangles, the
+// approximate tier against the exact answer (wrong only within the stated bound, for a set in the
+// stated range); then with the ray's origin moved off floats by one double ulp, the approximate
+// tier against the scalar approximate answer (it runs in double then).
+void compare_float(const float_set& s, float_counts& c, const std::string& where) {
+    const std::size_t n = s.size();
+    std::vector<std::uint8_t> out[4];
+    for (auto& o : out) o.assign(n, 7);
+    REQUIRE(batch::intersects<exact>(s.ray, s.view(), out[0]).has_value());
+    REQUIRE(batch::intersects<conservative>(s.ray, s.view(), out[1]).has_value());
+    REQUIRE(batch::intersects<aggressive>(s.ray, s.view(), out[2]).has_value());
+    const auto met = batch::intersects<approximate>(s.ray, s.view(), out[3]);
+    REQUIRE(met.has_value());
+    ray3 off = s.ray;
+    off.origin.x = support::nudge(off.origin.x, 1);
+    std::vector<std::uint8_t> off_out(n, 7);
+    REQUIRE(batch::intersects<approximate>(off, s.view(), off_out).has_value());
+    std::size_t ones = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const triangle3 t = s.at(i);
+        const bool in_range = in_float_range(s.ray, t);
+        ++c.lanes;
+        c.out_of_range += !in_range;
+        const std::uint8_t truth[3] = {intersects<exact>(s.ray, t), intersects<conservative>(s.ray, t), intersects<aggressive>(s.ray, t)};
+        for (int k = 0; k < 3; ++k)
+            if (out[k][i] != truth[k] && ++c.wrong[k] <= 5)
+                std::printf("  %s, float lane %zu, tier %d: scalar %d, batch %d\n", where.c_str(), i, k, truth[k], out[k][i]);
+        ones += out[3][i] == 1;
+        if (out[3][i] > 1) ++c.wrong[3];
+        if (off_out[i] != (intersects<approximate>(off, t) ? 1 : 0)) ++c.double_ray_wrong;
+        if (out[3][i] == truth[0]) continue;
+        ++c.approx_unlike_exact;
+        support_margin::margin_kernel mk;
+        (void)detail::intersects(mk, s.ray, t);
+        if (in_range && mk.min_rel > c.most_margin_unlike) c.most_margin_unlike = mk.min_rel;
+        if (in_range && mk.min_rel > batch::float_approximate_bound && ++c.outside_bound <= 5)
+            std::printf("  %s, float lane %zu: approximate wrong at margin %g: ray %s dir %s\n", where.c_str(), i, mk.min_rel,
+                        str(s.ray.origin).c_str(), str(s.ray.direction).c_str());
+    }
+    if (met.value() != ones) ++c.wrong[3];
+}
+
+} // namespace
+
+TEST_CASE("batch ray_triangles: float packets, the filtered tiers' lanes are the scalar answer and the float approximate tier keeps its "
+          "bound, every target",
+          "[batch]") {
+    float_counts c[3]; // random, mesh, special
+    const int targets = support::on_every_target("float", [&](support::rng& r, const std::string& where, const char*) {
+        for (long k = 0; k < support::cases(200); ++k) {
+            compare_float(float_random_set(r, 64), c[0], where + ", random");
+            compare_float(float_mesh_set(r), c[1], where + ", mesh");
+            compare_float(float_special_set(r), c[2], where + ", special");
+        }
+    });
+    const char* names[3] = {"random", "mesh", "special"};
+    for (int j = 0; j < 3; ++j) {
+        std::printf("[cases] batch ray_triangles float %s: %d SIMD targets, %ld lanes (%ld outside the stated range); filtered lanes "
+                    "unlike the scalar answer: exact %ld, "
+                    "conservative %ld, aggressive %ld; approximate (float) unlike exact %ld (in the range at margins up to %g; outside the "
+                    "bound 2^-16: %ld); approximate with a double ray unlike the scalar %ld\n",
+                    names[j], targets, c[j].lanes, c[j].out_of_range, c[j].wrong[0], c[j].wrong[1], c[j].wrong[2], c[j].approx_unlike_exact,
+                    c[j].most_margin_unlike, c[j].outside_bound, c[j].double_ray_wrong);
+        for (long w : c[j].wrong) CHECK(w == 0);
+        CHECK(c[j].outside_bound == 0);
+        CHECK(c[j].double_ray_wrong == 0);
+    }
+    CHECK(targets >= 2);
+    CHECK(c[1].out_of_range * 20 < c[1].lanes); // the mesh sets are mostly in the stated range
+    CHECK(c[1].approx_unlike_exact > 0);        // and reach the float tier's boundary (else the bound is not tested)
+}
+
+namespace {
+void float_sizes() {
+    const std::vector<float> x{0.0f, 1.0f}, y{0.0f};
+    const batch::triangles_soa_f uneven{x, x, x, x, x, x, x, x, y};
+    std::vector<std::uint8_t> out(2);
+    const auto bad = batch::intersects<approximate>(ray3{{0, 0, -1}, {0, 0, 1}}, uneven, out);
+    REQUIRE(bad.has_error());
+    CHECK(bad.error().code == errc::size_mismatch);
+}
+} // namespace
+
 TEST_CASE("batch ray_triangles: sizes", "[batch]") {
+    float_sizes();
     const ray3 ray{{0, 0, -1}, {0, 0, 1}};
     const std::vector<triangle3> ts(3, triangle3{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}});
     std::vector<std::uint8_t> out(2);
