@@ -94,19 +94,36 @@ HWY_INLINE void ray_frame(const T* dir, int* axis) {
     axis[0] = kx, axis[1] = ky, axis[2] = kz;
 }
 
+// One ray in its frame, broadcast: the axes (kx, ky, kz), the shear and the origin's coordinates
+// along them; false where d_kz is zero (or NaN: `!(d_kz != 0)`), where the scalar code answers no.
+template <class DT>
+struct ray_in_frame {
+    int axis[3];
+    sheared<DT> shear;
+    hn::Vec<DT> o[3];
+};
+template <class DT, class T>
+HWY_INLINE bool frame_of(DT d, const T* origin, const T* direction, ray_in_frame<DT>& f) {
+    const T dir[3] = {direction[0], direction[1], direction[2]};
+    ray_frame(dir, f.axis);
+    const int kx = f.axis[0], ky = f.axis[1], kz = f.axis[2];
+    if (!(dir[kz] != T(0))) return false;
+    f.shear = {hn::Set(d, dir[kx] / dir[kz]), hn::Set(d, dir[ky] / dir[kz]), hn::Set(d, T(1) / dir[kz])};
+    for (int k = 0; k < 3; ++k) f.o[k] = hn::Set(d, origin[f.axis[k]]);
+    return true;
+}
+
 // One ray against n triangles: the ray's frame once, as the scalar code finds it.
 void watertight(const double* origin, const double* direction, const double* const* coords, std::size_t n, std::uint8_t* out) {
-    const double dir[3] = {direction[0], direction[1], direction[2]};
-    int axis[3];
-    ray_frame(dir, axis);
-    const int kx = axis[0], ky = axis[1], kz = axis[2];
-    if (!(dir[kz] != 0.0)) {
+    const D d;
+    ray_in_frame<D> f;
+    if (!frame_of(d, origin, direction, f)) {
         std::memset(out, 0, n);
         return;
     }
-    const D d;
-    const sheared<D> shear{hn::Set(d, dir[kx] / dir[kz]), hn::Set(d, dir[ky] / dir[kz]), hn::Set(d, 1.0 / dir[kz])};
-    const V o[3] = {hn::Set(d, origin[kx]), hn::Set(d, origin[ky]), hn::Set(d, origin[kz])};
+    const int* axis = f.axis;
+    const V* o = f.o;
+    const sheared<D>& shear = f.shear;
     const double* ray[6] = {origin, origin + 1, origin + 2, direction, direction + 1, direction + 2};
     over_fields(d, ray_triangle_fields(ray, false, coords, true), n,
                 [&](const fields& f, std::size_t i, std::size_t lane, std::size_t count) {
@@ -164,17 +181,15 @@ void watertight_rays(const double* const* rays, const double* const* triangle, s
 using DF = hn::ScalableTag<float>;
 void watertight_float(const float* origin, const float* direction, const float* const* coords, std::size_t n, std::uint8_t* out) {
     static_assert(HWY_MAX_BYTES / sizeof(float) <= 16, "two bytes of mask bits per vector");
-    const float dir[3] = {direction[0], direction[1], direction[2]};
-    int axis[3];
-    ray_frame(dir, axis);
-    const int kx = axis[0], ky = axis[1], kz = axis[2];
-    if (!(dir[kz] != 0.0f)) {
+    const DF d;
+    ray_in_frame<DF> f;
+    if (!frame_of(d, origin, direction, f)) {
         std::memset(out, 0, n);
         return;
     }
-    const DF d;
-    const sheared<DF> shear{hn::Set(d, dir[kx] / dir[kz]), hn::Set(d, dir[ky] / dir[kz]), hn::Set(d, 1.0f / dir[kz])};
-    const hn::Vec<DF> o[3] = {hn::Set(d, origin[kx]), hn::Set(d, origin[ky]), hn::Set(d, origin[kz])};
+    const int* axis = f.axis;
+    const hn::Vec<DF>* o = f.o;
+    const sheared<DF>& shear = f.shear;
     auto lanes = [&](const float* const* p, std::size_t i, std::uint8_t* o8, std::size_t count) {
         hn::Vec<DF> rel[3][3]; // a - o, b - o, c - o along the ray's frame
         for (int v = 0; v < 3; ++v)
