@@ -6,7 +6,8 @@
 // aabb_spheres, sphere_aabbs, sphere_spheres, the same way); a set of rays against one triangle,
 // box or ball (rays_triangle, rays_aabb, rays_sphere) and one ray against boxes or balls
 // (ray_aabbs, ray_spheres); boxes against a frustum (frustum_aabbs, and the classic culling test's
-// loop, approximate/method_culling_loop/frustum_aabbs). The triangles in every tier,
+// loop, approximate/method_culling_loop/frustum_aabbs) and oriented boxes against it
+// (frustum_obbs). The triangles in every tier,
 // beside the loop over the scalar query that it replaces, on each SIMD target the processor has:
 //   <tier>/batch_intersects/ray_triangles/<dist>              the dispatched (best) target
 //   <tier>/batch_intersects/ray_triangles_<TARGET>/<dist>     one target (AVX3 = AVX-512, AVX2, SSE4)
@@ -371,21 +372,29 @@ bool scalar_of(const One& one, const Many& m) {
 // A set's structure-of-arrays copy (boxes, balls, rays, points), for the packet entries.
 template <class Many>
 struct soa_of_set {
-    std::vector<double> f[6];
+    static constexpr int fields = std::is_same_v<Many, obb3> ? 15 : 6;
+    std::vector<double> f[fields];
     explicit soa_of_set(const std::vector<Many>& many) {
         for (const Many& m : many) {
-            double v[6] = {};
-            if constexpr (std::is_same_v<Many, aabb3>)
+            double v[fields] = {};
+            if constexpr (std::is_same_v<Many, obb3>) {
+                const double o[15] = {m.center.x,  m.center.y,  m.center.z,        m.axes[0].x,       m.axes[0].y,
+                                      m.axes[0].z, m.axes[1].x, m.axes[1].y,       m.axes[1].z,       m.axes[2].x,
+                                      m.axes[2].y, m.axes[2].z, m.half_extents[0], m.half_extents[1], m.half_extents[2]};
+                for (int k = 0; k < 15; ++k) v[k] = o[k];
+            } else if constexpr (std::is_same_v<Many, aabb3>)
                 v[0] = m.min.x, v[1] = m.min.y, v[2] = m.min.z, v[3] = m.max.x, v[4] = m.max.y, v[5] = m.max.z;
             else if constexpr (std::is_same_v<Many, sphere3>) v[0] = m.center.x, v[1] = m.center.y, v[2] = m.center.z, v[3] = m.radius;
             else if constexpr (std::is_same_v<Many, ray3>)
                 v[0] = m.origin.x, v[1] = m.origin.y, v[2] = m.origin.z, v[3] = m.direction.x, v[4] = m.direction.y, v[5] = m.direction.z;
             else v[0] = m.x, v[1] = m.y, v[2] = m.z;
-            for (int k = 0; k < 6; ++k) f[k].push_back(v[k]);
+            for (int k = 0; k < fields; ++k) f[k].push_back(v[k]);
         }
     }
     auto view() const {
-        if constexpr (std::is_same_v<Many, aabb3>) return batch::boxes_soa{f[0], f[1], f[2], f[3], f[4], f[5]};
+        if constexpr (std::is_same_v<Many, obb3>)
+            return batch::obbs_soa{f[0], f[1], f[2], f[3], f[4], f[5], f[6], f[7], f[8], f[9], f[10], f[11], f[12], f[13], f[14]};
+        else if constexpr (std::is_same_v<Many, aabb3>) return batch::boxes_soa{f[0], f[1], f[2], f[3], f[4], f[5]};
         else if constexpr (std::is_same_v<Many, sphere3>) return batch::spheres_soa{f[0], f[1], f[2], f[3]};
         else if constexpr (std::is_same_v<Many, ray3>) return batch::rays_soa{f[0], f[1], f[2], f[3], f[4], f[5]};
         else return batch::points_soa{f[0], f[1], f[2]};
@@ -586,6 +595,29 @@ std::vector<std::pair<frustum3, std::vector<aabb3>>> frustum_boxes_set(bool near
     }
     return out;
 }
+// The same frustums and oriented boxes: each box's centre and extents, rotated by a random
+// rotation (random: the box's middle and extent; near_degenerate: the near set's box, whose
+// corner touches a plane before the rotation, so rotated about its centre it reaches across).
+std::vector<std::pair<frustum3, std::vector<obb3>>> frustum_obbs_set(const std::vector<std::pair<frustum3, std::vector<aabb3>>>& boxes) {
+    std::vector<std::pair<frustum3, std::vector<obb3>>> out;
+    for (const auto& [f, set] : boxes) {
+        std::vector<obb3> obbs;
+        for (const aabb3& b : set) {
+            double q[4], n = 0;
+            for (double& x : q) x = uni(-1, 1), n += x * x;
+            n = std::sqrt(n);
+            for (double& x : q) x /= n;
+            const double w = q[0], x = q[1], y = q[2], z = q[3];
+            const std::array<vec3, 3> axes{vec3{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)},
+                                           vec3{2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
+                                           vec3{2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}};
+            const point3 c{0.5 * (b.min.x + b.max.x), 0.5 * (b.min.y + b.max.y), 0.5 * (b.min.z + b.max.z)};
+            obbs.push_back(obb3{c, axes, {0.5 * (b.max.x - b.min.x), 0.5 * (b.max.y - b.min.y), 0.5 * (b.max.z - b.min.z)}});
+        }
+        out.emplace_back(f, std::move(obbs));
+    }
+    return out;
+}
 // The classic culling test in double (method::aabb_frustum_culling: plane rejection alone, not a
 // tier: it says yes for boxes beyond an edge or corner) over the same sets, for comparison.
 void reg_culling_method(const std::string& name, const std::vector<std::pair<frustum3, std::vector<aabb3>>>& sets) {
@@ -635,6 +667,7 @@ void register_batch(bool near) {
     const auto culling = frustum_boxes_set(near);
     reg_one_many_tiers("frustum_aabbs", dist, culling);
     reg_culling_method("approximate/method_culling_loop/frustum_aabbs/" + dist, culling);
+    reg_one_many_tiers("frustum_obbs", dist, frustum_obbs_set(culling));
 }
 
 } // namespace bench

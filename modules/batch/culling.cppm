@@ -1,6 +1,6 @@
 // Many boxes against one frustum (view-frustum culling): batch::intersects<Tier>(frustum, boxes,
 // out) and batch::intersects<Tier>(boxes, frustum, out), for boxes as an array of aabb3 or a
-// structure-of-arrays packet (boxes_soa). out[i] is 1 where boxes[i] meets the closed view volume,
+// structure-of-arrays packet (boxes_soa), and oriented boxes as obb3 or obbs_soa. out[i] is 1 where boxes[i] meets the closed view volume,
 // else 0: the answer of the scalar intersects<Tier>(frustum, boxes[i]), bit for bit, in every tier
 // (tests/batch/culling.cpp checks it on every SIMD target).
 // Method (culling_simd.cpp): the culling test's two outcomes in lanes (Assarsson and Moeller,
@@ -10,7 +10,9 @@
 // edge-edge axis of the separating-axis test with the box wholly beyond it says no (degree 3). In
 // plain double for the approximate tier, in the semi-static filter for the others. A box near the
 // frustum's edges or corners that no stage decides (or whose sign the filter cannot prove) goes
-// to the scalar query, whose exact linear program decides.
+// to the scalar query, whose exact linear program decides. An oriented box: the first two stages
+// only, as its scalar query has them (a plane with the box's least value beyond it, degree 3; the
+// centre inside every plane, degree 2).
 module;
 #include <cstddef>
 #include <cstdint>
@@ -34,14 +36,43 @@ extern "C++" {
 namespace incidence::batch::simd {
 void frustum_boxes(const double* planes, const double* edges, int edge_count, const double* const* boxes, std::size_t n, bool filter,
                    std::uint8_t* out);
+// obbs: fifteen arrays of n (centre x, y, z, axis 0 x, y, z, axis 1, axis 2, half extents 0, 1, 2).
+void frustum_obbs(const double* planes, const double* const* obbs, std::size_t n, bool filter, std::uint8_t* out);
 } // namespace incidence::batch::simd
 }
 
+export namespace incidence::batch {
+// Oriented boxes kept as structure of arrays: fifteen arrays of one length, box i having centre
+// {cx[i], cy[i], cz[i]}, axes {ux[i], uy[i], uz[i]}, {vx[i], ...}, {wx[i], ...} and half extents
+// {hu[i], hv[i], hw[i]} along them (read exactly as given, as obb3 reads them).
+struct obbs_soa {
+    std::span<const double> cx, cy, cz, ux, uy, uz, vx, vy, vz, wx, wy, wz, hu, hv, hw;
+    [[nodiscard]] constexpr std::size_t size() const { return cx.size(); }
+    [[nodiscard]] constexpr bool consistent() const {
+        const std::size_t n = cx.size();
+        for (const auto& a : {cy, cz, ux, uy, uz, vx, vy, vz, wx, wy, wz, hu, hv, hw})
+            if (a.size() != n) return false;
+        return true;
+    }
+    [[nodiscard]] constexpr obb3 operator[](std::size_t i) const {
+        return {{cx[i], cy[i], cz[i]},
+                {vec3{ux[i], uy[i], uz[i]}, vec3{vx[i], vy[i], vz[i]}, vec3{wx[i], wy[i], wz[i]}},
+                {hu[i], hv[i], hw[i]}};
+    }
+};
+} // namespace incidence::batch
+
 namespace incidence::batch::detail {
+
+inline void arrays(const obbs_soa& b, const double** p) {
+    const double* v[15] = {b.cx.data(), b.cy.data(), b.cz.data(), b.ux.data(), b.uy.data(), b.uz.data(), b.vx.data(), b.vy.data(),
+                           b.vz.data(), b.wx.data(), b.wy.data(), b.wz.data(), b.hu.data(), b.hv.data(), b.hw.data()};
+    for (int k = 0; k < 15; ++k) p[k] = v[k];
+}
 
 // n boxes (their fields' arrays) against f: the kernel of the tier, then the scalar query where a
 // lane is open. The number of boxes met.
-template <tier Tier, class At>
+template <tier Tier, class Box, class At>
 std::size_t culling_block(const frustum3& f, const double* const* boxes, std::size_t n, std::uint8_t* out, const At& at) {
     double planes[24];
     for (unsigned p = 0; p < 6; ++p) {
@@ -52,6 +83,8 @@ std::size_t culling_block(const frustum3& f, const double* const* boxes, std::si
     for (const double v : planes) finite = finite && v - v == 0.0;
     if (!finite) {
         std::memset(out, 2, n); // no set: the scalar query says so without a sign
+    } else if constexpr (std::is_same_v<Box, obb3>) {
+        simd::frustum_obbs(planes, boxes, n, !std::is_same_v<Tier, approximate>, out);
     } else {
         // the implied planes, in the kernel of the scalar query's first pass
         const auto implied = [&] {
@@ -75,21 +108,22 @@ std::size_t culling_block(const frustum3& f, const double* const* boxes, std::si
     return settle_open(out, n, [&](std::size_t i) { return incidence::intersects<Tier>(f, at(i)); });
 }
 
-template <tier Tier>
-result<std::size_t> culling(const frustum3& f, std::span<const aabb3> boxes, std::span<std::uint8_t> out) {
+template <tier Tier, class Box>
+result<std::size_t> culling(const frustum3& f, std::span<const Box> boxes, std::span<std::uint8_t> out) {
     if (out.size() != boxes.size()) return error{errc::size_mismatch};
-    return by_blocks<6>(
-        boxes, out.data(), [](const aabb3& b, double* v) { unpack(b, v); },
+    return by_blocks<fields_of<Box>>(
+        boxes, out.data(), [](const Box& b, double* v) { unpack(b, v); },
         [&](const double* const* coords, std::size_t n, std::uint8_t* o, std::size_t start) {
-            return culling_block<Tier>(f, coords, n, o, [&](std::size_t i) { return boxes[start + i]; });
+            return culling_block<Tier, Box>(f, coords, n, o, [&](std::size_t i) { return boxes[start + i]; });
         });
 }
-template <tier Tier>
-result<std::size_t> culling(const frustum3& f, const boxes_soa& boxes, std::span<std::uint8_t> out) {
+template <tier Tier, class Soa>
+result<std::size_t> culling(const frustum3& f, const Soa& boxes, std::span<std::uint8_t> out) {
     if (!boxes.consistent() || out.size() != boxes.size()) return error{errc::size_mismatch};
-    const double* p[6] = {};
+    using Box = std::remove_cvref_t<decltype(boxes[0])>;
+    const double* p[fields_of<Box>] = {};
     arrays(boxes, p);
-    return culling_block<Tier>(f, p, boxes.size(), out.data(), [&](std::size_t i) { return boxes[i]; });
+    return culling_block<Tier, Box>(f, p, boxes.size(), out.data(), [&](std::size_t i) { return boxes[i]; });
 }
 
 } // namespace incidence::batch::detail
@@ -112,6 +146,23 @@ template <tier Tier = exact>
 }
 template <tier Tier = exact>
 [[nodiscard]] result<std::size_t> intersects(const boxes_soa& boxes, const frustum3& f, std::span<std::uint8_t> out) {
+    return detail::culling<Tier>(f, boxes, out);
+}
+// Does each oriented box meet the frustum? The same way, oriented boxes as obb3 or obbs_soa.
+template <tier Tier = exact>
+[[nodiscard]] result<std::size_t> intersects(const frustum3& f, std::span<const obb3> boxes, std::span<std::uint8_t> out) {
+    return detail::culling<Tier>(f, boxes, out);
+}
+template <tier Tier = exact>
+[[nodiscard]] result<std::size_t> intersects(const frustum3& f, const obbs_soa& boxes, std::span<std::uint8_t> out) {
+    return detail::culling<Tier>(f, boxes, out);
+}
+template <tier Tier = exact>
+[[nodiscard]] result<std::size_t> intersects(std::span<const obb3> boxes, const frustum3& f, std::span<std::uint8_t> out) {
+    return detail::culling<Tier>(f, boxes, out);
+}
+template <tier Tier = exact>
+[[nodiscard]] result<std::size_t> intersects(const obbs_soa& boxes, const frustum3& f, std::span<std::uint8_t> out) {
     return detail::culling<Tier>(f, boxes, out);
 }
 

@@ -175,17 +175,183 @@ void frustum_box(const double* planes, const double* edges, int edge_count, cons
     }
 }
 
+// Oriented boxes against six planes: the two stages of the scalar query (halfspaces::obb_meets in
+// modules/engines/halfspace_meets.cppm) before its linear program, operation for operation:
+// 1. for each plane in order, box_reach: (c 1 - n . q) 1 + sum_j h_j |n . a_j| (q the centre,
+//    a_j the axes, h_j the half extents; the box's least value of c - n . x, times one): negative
+//    says no (degree 3, gamma_7);
+// 2. then the centre strictly inside every plane (c 1 - n . q; degree 2, gamma_4), or for a plane
+//    it is not proven inside of, the box corner least along that plane's normal strictly inside
+//    every plane ((c 1 - n . q) 1 - sum_j s_j (n . a_j), s_j = -h_j where n_p . a_j > 0 in
+//    double, else h_j; degree 3, gamma_7), says yes.
+// In the filter a sign unproven at stage 1 before a negative one fails the scalar pass: the lane
+// is left open. Stage 2's signs are checks whose failure decides nothing: a lane they do not
+// accept goes to the scalar query's linear program.
+// obbs: 15 arrays of n (centre x, y, z; axis 0 x, y, z; axis 1; axis 2; half extents 0, 1, 2).
+// A box with a non-finite number or a negative (or NaN) half extent meets nothing.
+void frustum_obb(const double* planes, const double* const* obbs, std::size_t n, bool filter, std::uint8_t* out) {
+    const D d;
+    constexpr double gamma_reach = gamma_of(7), gamma_centre = gamma_of(4);
+    constexpr std::size_t block = 64;
+    const M none = hn::Not(hn::Eq(hn::Zero(d), hn::Zero(d)));
+    fields all{{}, {}, 15};
+    for (int k = 0; k < 15; ++k) all.p[k] = obbs[k], all.per_lane[k] = true;
+    struct lanes_obb {
+        V c[3], a[3][3], h[3];
+    };
+    auto load = [&](const fields& g, std::size_t i, std::size_t count, lanes_obb& b) {
+        M usable = hn::FirstN(d, count);
+        for (int k = 0; k < 3; ++k) {
+            b.c[k] = g.at(d, k, i), b.h[k] = g.at(d, 12 + k, i);
+            for (int j = 0; j < 3; ++j) b.a[j][k] = g.at(d, 3 + 3 * j + k, i);
+        }
+        for (int k = 0; k < 15; ++k) {
+            const V x = k < 3 ? b.c[k] : (k < 12 ? b.a[(k - 3) / 3][(k - 3) % 3] : b.h[k - 12]);
+            usable = hn::And(usable, hn::IsFinite(x));
+        }
+        for (int j = 0; j < 3; ++j) usable = hn::And(usable, hn::Ge(b.h[j], hn::Zero(d)));
+        return usable;
+    };
+    // box_reach for plane p, in the filter (with its permanent) or alone
+    auto in = [&](double v) { return fv{hn::Set(d, v), hn::Set(d, v < 0 ? -v : v)}; };
+    auto lane = [&](V v) { return fv{v, hn::Abs(v)}; };
+    auto magnitude = [&](fv x) { return fv{hn::Abs(x.v), x.p}; };
+    auto reach = [&](int p, const lanes_obb& b) {
+        const double* h = planes + 4 * p;
+        const fv nx = in(h[0]), ny = in(h[1]), nz = in(h[2]), one = in(1.0);
+        const fv gap = (in(h[3]) * one - (nx * lane(b.c[0]) + ny * lane(b.c[1]) + nz * lane(b.c[2]))) * one;
+        auto along = [&](int j) { return lane(b.h[j]) * magnitude(nx * lane(b.a[j][0]) + ny * lane(b.a[j][1]) + nz * lane(b.a[j][2])); };
+        return gap + (along(0) + along(1) + along(2));
+    };
+    auto reach_alone = [&](int p, const lanes_obb& b) {
+        const double* h = planes + 4 * p;
+        const pv nx{hn::Set(d, h[0])}, ny{hn::Set(d, h[1])}, nz{hn::Set(d, h[2])}, one{hn::Set(d, 1.0)};
+        const pv gap = (pv{hn::Set(d, h[3])} * one - (nx * pv{b.c[0]} + ny * pv{b.c[1]} + nz * pv{b.c[2]})) * one;
+        auto along = [&](int j) { return pv{b.h[j]} * pv{hn::Abs((nx * pv{b.a[j][0]} + ny * pv{b.a[j][1]} + nz * pv{b.a[j][2]}).v)}; };
+        return (gap + (along(0) + along(1) + along(2))).v;
+    };
+    // c - n . x at the box corner x = centre + sum_j s_j a_j (s_j = +-h_j), scaled as box_reach
+    auto corner = [&](int p, const lanes_obb& b, const V* s) {
+        const double* h = planes + 4 * p;
+        const fv nx = in(h[0]), ny = in(h[1]), nz = in(h[2]), one = in(1.0);
+        const fv gap = (in(h[3]) * one - (nx * lane(b.c[0]) + ny * lane(b.c[1]) + nz * lane(b.c[2]))) * one;
+        auto along = [&](int j) { return lane(s[j]) * (nx * lane(b.a[j][0]) + ny * lane(b.a[j][1]) + nz * lane(b.a[j][2])); };
+        return gap - (along(0) + along(1) + along(2));
+    };
+    auto corner_alone = [&](int p, const lanes_obb& b, const V* s) {
+        const double* h = planes + 4 * p;
+        const pv nx{hn::Set(d, h[0])}, ny{hn::Set(d, h[1])}, nz{hn::Set(d, h[2])}, one{hn::Set(d, 1.0)};
+        const pv gap = (pv{hn::Set(d, h[3])} * one - (nx * pv{b.c[0]} + ny * pv{b.c[1]} + nz * pv{b.c[2]})) * one;
+        auto along = [&](int j) { return pv{s[j]} * (nx * pv{b.a[j][0]} + ny * pv{b.a[j][1]} + nz * pv{b.a[j][2]}); };
+        return (gap - (along(0) + along(1) + along(2))).v;
+    };
+    for (std::size_t start = 0; start < n; start += block) {
+        const std::size_t m = n - start < block ? n - start : block;
+        const fields f = from(all, start);
+        // the filter's static bounds per plane, from the block's largest |number| of each field
+        // (stage 1's also bounds the corners' values: the same permanent)
+        V bound_reach[6], bound_centre[6];
+        if (filter) {
+            V most[15];
+            for (V& x : most) x = hn::Zero(d);
+            over_fields(d, f, m, [&](const fields& g, std::size_t i, std::size_t, std::size_t count) {
+                lanes_obb b;
+                const M usable = load(g, i, count, b);
+                for (int k = 0; k < 15; ++k) most[k] = hn::Max(most[k], hn::IfThenElseZero(usable, hn::Abs(g.at(d, k, i))));
+            });
+            pp big[15];
+            for (int k = 0; k < 15; ++k) big[k] = {hn::GetLane(hn::MaxOfLanes(d, most[k]))};
+            for (int p = 0; p < 6; ++p) {
+                const double* h = planes + 4 * p;
+                auto abs_of = [](double v) { return pp{v < 0 ? -v : v}; };
+                const pp nx = abs_of(h[0]), ny = abs_of(h[1]), nz = abs_of(h[2]), one{1.0};
+                const pp gap = (abs_of(h[3]) * one - (nx * big[0] + ny * big[1] + nz * big[2])) * one;
+                auto along = [&](int j) { return big[12 + j] * (nx * big[3 + 3 * j] + ny * big[4 + 3 * j] + nz * big[5 + 3 * j]); };
+                bound_reach[p] = static_bound(d, gamma_reach, (gap + (along(0) + along(1) + along(2))).p);
+                bound_centre[p] = static_bound(d, gamma_centre, (abs_of(h[3]) * one - (nx * big[0] + ny * big[1] + nz * big[2])).p);
+            }
+        }
+        over_fields(d, f, m, [&](const fields& g, std::size_t i, std::size_t lane_at, std::size_t count) {
+            lanes_obb b;
+            const M usable = load(g, i, count, b);
+            // stage 1: alive, the lanes every plane so far has proven short of the box's far side
+            M alive = usable, open = none;
+            for (int p = 0; p < 6 && !hn::AllFalse(d, alive); ++p) {
+                const V v = reach_alone(p, b);
+                if (!filter) {
+                    alive = hn::AndNot(hn::Lt(v, hn::Zero(d)), alive);
+                    continue;
+                }
+                sign_masks s{hn::Gt(v, bound_reach[p]), hn::Lt(v, hn::Neg(bound_reach[p]))};
+                if (!hn::AllFalse(d, hn::AndNot(hn::Or(s.pos, s.neg), alive))) {
+                    const fv own = reach(p, b);
+                    s = {own_positive(d, gamma_reach, own), own_negative(d, gamma_reach, own)};
+                }
+                open = hn::Or(open, hn::AndNot(hn::Or(s.pos, s.neg), alive));
+                alive = hn::And(alive, s.pos);
+            }
+            // stage 2: the centre strictly inside every plane, or for a plane it is not inside, the
+            // box corner least along that plane's normal (checks whose failure decides nothing)
+            M yes = alive, centre_outside[6];
+            for (M& x : centre_outside) x = none;
+            for (int p = 0; p < 6; ++p) {
+                if (hn::AllFalse(d, alive)) break;
+                const double* h = planes + 4 * p;
+                if (!filter) {
+                    centre_outside[p] = hn::Not(hn::Gt(plane_value_alone(d, h, b.c), hn::Zero(d)));
+                } else {
+                    M pos = hn::Gt(plane_value_alone(d, h, b.c), bound_centre[p]);
+                    if (!hn::AllFalse(d, hn::AndNot(pos, alive))) pos = own_positive(d, gamma_centre, plane_value(d, h, b.c));
+                    centre_outside[p] = hn::Not(pos);
+                }
+                yes = hn::AndNot(centre_outside[p], yes);
+            }
+            M corner_yes = none;
+            for (int p = 0; p < 6 && !hn::AllFalse(d, alive); ++p) {
+                const M tried = hn::AndNot(yes, hn::AndNot(corner_yes, hn::And(alive, centre_outside[p])));
+                if (hn::AllFalse(d, tried)) continue;
+                // s_j h_j: -h_j where n_p . a_j > 0 in double (the scalar's choice), else h_j
+                const double* along = planes + 4 * p;
+                V s[3];
+                for (int j = 0; j < 3; ++j) {
+                    const V t = hn::Add(hn::Add(hn::Mul(hn::Set(d, along[0]), b.a[j][0]), hn::Mul(hn::Set(d, along[1]), b.a[j][1])),
+                                        hn::Mul(hn::Set(d, along[2]), b.a[j][2]));
+                    s[j] = hn::IfThenElse(hn::Gt(t, hn::Zero(d)), hn::Neg(b.h[j]), b.h[j]);
+                }
+                M inside = tried;
+                for (int q = 0; q < 6 && !hn::AllFalse(d, inside); ++q) {
+                    if (!filter) {
+                        inside = hn::And(inside, hn::Gt(corner_alone(q, b, s), hn::Zero(d)));
+                        continue;
+                    }
+                    M pos = hn::Gt(corner_alone(q, b, s), bound_reach[q]);
+                    if (!hn::AllFalse(d, hn::AndNot(pos, inside))) pos = own_positive(d, gamma_reach, corner(q, b, s));
+                    inside = hn::And(inside, pos);
+                }
+                corner_yes = hn::Or(corner_yes, inside);
+            }
+            yes = hn::Or(yes, corner_yes);
+            open = hn::Or(open, hn::AndNot(yes, alive)); // alive, the centre not proven inside: the linear program
+            store_answers(d, yes, open, out + start + lane_at, count);
+        });
+    }
+}
+
 } // namespace incidence::batch::simd::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
 namespace incidence::batch::simd {
 HWY_EXPORT(frustum_box);
+HWY_EXPORT(frustum_obb);
 
 // The entry point (declared extern "C++" in modules/batch/culling.cppm).
 void frustum_boxes(const double* planes, const double* edges, int edge_count, const double* const* boxes, std::size_t n, bool filter,
                    std::uint8_t* out) {
     HWY_DYNAMIC_DISPATCH(frustum_box)(planes, edges, edge_count, boxes, n, filter, out);
+}
+void frustum_obbs(const double* planes, const double* const* obbs, std::size_t n, bool filter, std::uint8_t* out) {
+    HWY_DYNAMIC_DISPATCH(frustum_obb)(planes, obbs, n, filter, out);
 }
 } // namespace incidence::batch::simd
 #endif

@@ -16,7 +16,8 @@ namespace incidence::batch::detail {
 inline constexpr std::size_t block = 64;
 
 // A shape's numbers in the order the kernels read them as fields: a ray's origin then direction, a
-// triangle's a, b, c, a box's min then max, a ball's centre then radius.
+// triangle's a, b, c, a box's min then max, a ball's centre then radius, an oriented box's centre,
+// axes and half extents.
 inline void unpack(const ray3& r, double* f) {
     const double v[6] = {r.origin.x, r.origin.y, r.origin.z, r.direction.x, r.direction.y, r.direction.z};
     for (int k = 0; k < 6; ++k) f[k] = v[k];
@@ -33,9 +34,16 @@ inline void unpack(const sphere3& s, double* f) {
     const double v[4] = {s.center.x, s.center.y, s.center.z, s.radius};
     for (int k = 0; k < 4; ++k) f[k] = v[k];
 }
+inline void unpack(const obb3& b, double* f) {
+    const double v[15] = {b.center.x,  b.center.y,  b.center.z,        b.axes[0].x,       b.axes[0].y,
+                          b.axes[0].z, b.axes[1].x, b.axes[1].y,       b.axes[1].z,       b.axes[2].x,
+                          b.axes[2].y, b.axes[2].z, b.half_extents[0], b.half_extents[1], b.half_extents[2]};
+    for (int k = 0; k < 15; ++k) f[k] = v[k];
+}
 template <class S>
 inline constexpr std::size_t fields_of = sizeof(S) / sizeof(double);
-static_assert(fields_of<ray3> == 6 && fields_of<triangle3> == 9 && fields_of<aabb3> == 6 && fields_of<sphere3> == 4);
+static_assert(fields_of<ray3> == 6 && fields_of<triangle3> == 9 && fields_of<aabb3> == 6 && fields_of<sphere3> == 4 &&
+              fields_of<obb3> == 15);
 
 // The one shape of a batch as fields, each pointing at its one value (the kernels broadcast it).
 template <class Shape>

@@ -363,13 +363,40 @@ template <class K>
         const plane3 h = planes[i];
         if (k.sgn([=](auto L) { return box_reach(L, b, h, false); }) == sign::negative) return false;
     }
-    bool centre = true; // the centre inside every plane
-    for (int i = 0; i < m && centre; ++i) {
-        const plane3 h = planes[i];
-        centre = k.sgn([=](auto L) { return L(h.offset) * L(1.0) - arith::dot(arith::lift(L, h.normal), arith::lift(L, b.center)); }) !=
-                 sign::negative;
-    }
-    if (centre) return true;
+    // A point of the box strictly inside every plane: checks whose failure decides nothing. The
+    // centre, then for each plane it is not proven inside, the box corner least along that normal
+    // (c + sum_j s_j h_j a_j, s_j = -1 where n . a_j > 0 in double, else 1: a corner whichever way
+    // the rounding chooses; its signs are of degree 3, the corner itself is never rounded).
+    auto centre_inside = [&](int first) {
+        for (int i = first; i < m; ++i) {
+            const plane3 h = planes[i];
+            if (arith::sgn<arith::hint::optional>(k, [=](auto L) {
+                    return L(h.offset) * L(1.0) - arith::dot(arith::lift(L, h.normal), arith::lift(L, b.center));
+                }) != sign::positive)
+                return i;
+        }
+        return m;
+    };
+    auto corner_inside = [&](vec3 along) {
+        double s[3];
+        for (unsigned j = 0; j < 3; ++j) s[j] = dot(along, b.axes[j]) > 0 ? -b.half_extents[j] : b.half_extents[j];
+        for (int i = 0; i < m; ++i) {
+            const plane3 h = planes[i];
+            if (arith::sgn<arith::hint::optional>(k, [=](auto L) {
+                    const auto n = arith::lift(L, h.normal);
+                    const auto one = L(1.0);
+                    const auto gap = (L(h.offset) * one - arith::dot(n, arith::lift(L, b.center))) * one;
+                    return gap - (L(s[0]) * arith::dot(n, arith::lift(L, b.axes[0])) + L(s[1]) * arith::dot(n, arith::lift(L, b.axes[1])) +
+                                  L(s[2]) * arith::dot(n, arith::lift(L, b.axes[2])));
+                }) != sign::positive)
+                return false;
+        }
+        return true;
+    };
+    int outside = centre_inside(0);
+    if (outside == m) return true;
+    for (; outside < m; outside = centre_inside(outside + 1))
+        if (corner_inside(planes[outside].normal)) return true;
     const sign axes = arith::sgn<arith::hint::often_zero>(
         k, [=](auto L) { return arith::det3(arith::lift(L, b.axes[0]), arith::lift(L, b.axes[1]), arith::lift(L, b.axes[2])); });
     return first_row_vertex(k, frame_rows{planes, static_cast<unsigned>(m), &b, axes}).found;

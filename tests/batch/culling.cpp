@@ -1,10 +1,13 @@
-// batch::intersects(frustum, boxes) and (boxes, frustum): on every SIMD target this processor has,
+// batch::intersects(frustum, boxes) and (boxes, frustum), boxes axis-aligned or oriented: on every
+// SIMD target this processor has,
 // each lane's answer equals the scalar intersects<Tier>(frustum, boxes[i]) in all four tiers, for
 // the array and the structure-of-arrays entry points in both argument orders, on camera frustums
 // (frustum3::from_camera) with random boxes, on integer frustums (corners integers) with boxes
 // whose corner lies on a frustum corner, edge or face (touching, crossing, or beyond it) and a few
 // ulps off, at scales 2^-500..2^500, and on special values (NaN, infinities, inverted boxes,
-// non-finite planes). The near-degenerate lanes are counted: those whose filter verdict is
+// non-finite planes); oriented boxes the same way (random rotations around a camera's view; exact
+// frames whose corner, edge or face point is on the integer frustum's boundary; special numbers
+// and negative extents). The near-degenerate lanes are counted: those whose filter verdict is
 // uncertain (the batch must leave them to the scalar query).
 #include <catch2/catch_test_macros.hpp>
 #include <algorithm>
@@ -17,6 +20,7 @@ import incidence;
 import incidence.detail;
 #include "testkit/testing.hpp"
 #include "testkit/generators.hpp"
+#include "testkit/obb_cases.hpp"
 #include "testkit/simd_targets.hpp"
 
 namespace test_batch_culling { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
@@ -25,29 +29,38 @@ using namespace incidence;
 
 namespace {
 
+template <class Box = aabb3>
 struct culling_set {
     frustum3 frustum;
-    std::vector<aabb3> boxes;
+    std::vector<Box> boxes;
 };
 
-// A perspective camera anywhere in [-100, 100]^3 and boxes around what it sees.
-culling_set camera_set(support::rng& r) {
-    culling_set s;
+// A perspective camera anywhere in [-100, 100]^3, and the box around its corners (lo, hi).
+frustum3 camera(support::rng& r, point3& lo, point3& hi) {
+    frustum3 f;
     for (;;) {
         const point3 eye{r.uniform(-100, 100), r.uniform(-100, 100), r.uniform(-100, 100)};
         const vec3 forward{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)}, up{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)};
         const double near = r.uniform(0.1, 5);
-        const auto f = frustum3::from_camera(eye, forward, up, r.uniform(0.2, 2.5), r.uniform(0.5, 2), near, near + r.uniform(5, 200));
-        if (!f.has_value()) continue;
-        s.frustum = f.value();
+        const auto made = frustum3::from_camera(eye, forward, up, r.uniform(0.2, 2.5), r.uniform(0.5, 2), near, near + r.uniform(5, 200));
+        if (!made.has_value()) continue;
+        f = made.value();
         break;
     }
     point3 corner[8];
-    REQUIRE(detail::frustum_corners(s.frustum, corner));
-    point3 lo = corner[0], hi = corner[0];
+    REQUIRE(detail::frustum_corners(f, corner));
+    lo = corner[0], hi = corner[0];
     for (const point3& c : corner)
         lo = {std::min(lo.x, c.x), std::min(lo.y, c.y), std::min(lo.z, c.z)},
         hi = {std::max(hi.x, c.x), std::max(hi.y, c.y), std::max(hi.z, c.z)};
+    return f;
+}
+
+// A camera and boxes around what it sees.
+culling_set<> camera_set(support::rng& r) {
+    culling_set s;
+    point3 lo, hi;
+    s.frustum = camera(r, lo, hi);
     const double size = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
     const int n = r.integer(1, 200);
     for (int i = 0; i < n; ++i) {
@@ -59,26 +72,49 @@ culling_set camera_set(support::rng& r) {
     return s;
 }
 
+// A camera and oriented boxes around what it sees (random rotations, extents up to a tenth of the
+// view's size).
+culling_set<obb3> camera_obb_set(support::rng& r) {
+    culling_set<obb3> s;
+    point3 lo, hi;
+    s.frustum = camera(r, lo, hi);
+    const double size = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+    const int n = r.integer(1, 200);
+    for (int i = 0; i < n; ++i) {
+        const point3 c{r.uniform(lo.x - 0.2 * size, hi.x + 0.2 * size), r.uniform(lo.y - 0.2 * size, hi.y + 0.2 * size),
+                       r.uniform(lo.z - 0.2 * size, hi.z + 0.2 * size)};
+        s.boxes.push_back(
+            obb3{c, support::random_frame(r), {r.uniform(0, 0.05 * size), r.uniform(0, 0.05 * size), r.uniform(0, 0.05 * size)}});
+    }
+    return s;
+}
+
+// A point of the integer frustum's boundary: one of its corners, an edge's midpoint or a face's
+// centre (exact: integers over 1, 2 or 4).
+point3 frustum_boundary_point(support::rng& r, const point3* corner) {
+    // corners on plane P: bit P / 2 of the corner index equal to P % 2
+    const int plane = r.integer(0, 5), bit = plane / 2, value = plane % 2, take = 1 << r.integer(0, 2);
+    int on[4], count = 0;
+    for (int m = 0; m < 8; ++m)
+        if (((m >> bit) & 1) == value) on[count++] = m;
+    const int first = r.integer(0, 3);
+    vec3 sum{0, 0, 0};
+    for (int j = 0; j < take; ++j) sum = sum + (corner[on[(first + j) % 4]] - point3{0, 0, 0});
+    return point3{0, 0, 0} + sum * (1.0 / take);
+}
+
 // An integer frustum (audit::touching_frustum: integer corners) and boxes with a corner at one of
 // its corners, edge midpoints or face centres, reaching any way by integer extents (so touching
 // it, crossing it or beyond it), a quarter of them a few ulps off; then the whole set at 2^k. At
 // most 64 boxes: most of them go to the scalar query's linear program, slow in the sanitizer build.
-culling_set touching_set(support::rng& r) {
+culling_set<> touching_set(support::rng& r) {
     culling_set s;
     s.frustum = audit::touching_frustum(r).shape;
     point3 corner[8];
     REQUIRE(detail::frustum_corners(s.frustum, corner));
     const int n = r.integer(1, 64);
     for (int i = 0; i < n; ++i) {
-        // corners on plane P: bit P / 2 of the corner index equal to P % 2
-        const int plane = r.integer(0, 5), bit = plane / 2, value = plane % 2, take = 1 << r.integer(0, 2);
-        int on[4], count = 0;
-        for (int m = 0; m < 8; ++m)
-            if (((m >> bit) & 1) == value) on[count++] = m;
-        const int first = r.integer(0, 3);
-        vec3 sum{0, 0, 0};
-        for (int j = 0; j < take; ++j) sum = sum + (corner[on[(first + j) % 4]] - point3{0, 0, 0});
-        const point3 p = point3{0, 0, 0} + sum * (1.0 / take); // exact: integers over 1, 2 or 4
+        const point3 p = frustum_boundary_point(r, corner);
         double a[3] = {p.x, p.y, p.z}, b[3] = {p.x, p.y, p.z};
         for (int k = 0; k < 3; ++k) {
             const double e = r.integer(0, 3) == 0 ? 0.0 : r.integer(1, 40);
@@ -101,12 +137,41 @@ culling_set touching_set(support::rng& r) {
     return s;
 }
 
+// The integer frustum and oriented boxes (support::near_obb: signed-permutation, dyadic
+// near-rotation or small-integer skew axes, dyadic extents, some zero) whose corner, edge or face
+// point lies on one of its corners, edge midpoints or face centres (a third of them rotated by a
+// random rotation instead, so that the point is there up to rounding), a quarter of them with the
+// centre a few ulps off; then the whole set at 2^k.
+culling_set<obb3> touching_obb_set(support::rng& r) {
+    culling_set<obb3> s;
+    s.frustum = audit::touching_frustum(r).shape;
+    point3 corner[8];
+    REQUIRE(detail::frustum_corners(s.frustum, corner));
+    const int n = r.integer(1, 64);
+    for (int i = 0; i < n; ++i) {
+        const point3 p = frustum_boundary_point(r, corner);
+        obb3 b = support::near_obb(r);
+        for (double& h : b.half_extents) h *= 8;
+        if (r.integer(0, 2) == 0) b.axes = support::random_frame(r); // a rotation: the point below is at p only to rounding
+        b.center = p + (b.center - support::boundary_point(r, b));   // else exact: dyadics of small size
+        if (r.integer(0, 3) == 0)
+            b.center = {support::nudge(b.center.x, r.integer(-3, 3)), support::nudge(b.center.y, r.integer(-3, 3)), b.center.z};
+        s.boxes.push_back(b);
+    }
+    if (r.integer(0, 2) == 0) {
+        const int k = r.integer(-500, 500);
+        s.frustum = audit::scaled(s.frustum, k);
+        for (obb3& b : s.boxes) b = audit::scaled(b, k);
+    }
+    return s;
+}
+
 // Six planes with integer normals (no zero component) and the boxes beyond the line where planes 0
 // and 1 meet (through an integer point X): a corner at X, reaching along the signs of
 // g = |n_1[a]| n_0 + |n_0[a]| n_1 (n_0[a] and n_1[a] of opposite signs), so the plane the two imply
 // touches the box at X (the batch's third stage, halfspaces::edge_planes); the other planes pass X
 // or leave room. A third of the boxes are a few ulps off, some boxes random around X.
-culling_set edge_set(support::rng& r) {
+culling_set<> edge_set(support::rng& r) {
     auto nonzero = [&] { return (r.coin() ? 1.0 : -1.0) * r.integer(1, 3); };
     const point3 X = audit::int_point(r, 400);
     const int a = r.integer(0, 2);
@@ -143,7 +208,37 @@ culling_set edge_set(support::rng& r) {
     return s;
 }
 
-culling_set special_set(support::rng& r) {
+// A box's numbers in the order of its packet's arrays.
+void batch_fields(const aabb3& b, double* v) {
+    const double f[6] = {b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z};
+    for (int k = 0; k < 6; ++k) v[k] = f[k];
+}
+void batch_fields(const obb3& b, double* v) {
+    const double f[15] = {b.center.x,  b.center.y,  b.center.z,        b.axes[0].x,       b.axes[0].y,
+                          b.axes[0].z, b.axes[1].x, b.axes[1].y,       b.axes[1].z,       b.axes[2].x,
+                          b.axes[2].y, b.axes[2].z, b.half_extents[0], b.half_extents[1], b.half_extents[2]};
+    for (int k = 0; k < 15; ++k) v[k] = f[k];
+}
+// edge_set's boxes as oriented boxes: centre and half extents rounded from the bounds, the unit
+// axes in a random signed order (the same box up to that rounding, beyond an implied plane or
+// touching it, so that stage 2's corners lie within rounding of a plane).
+culling_set<obb3> edge_obb_set(support::rng& r) {
+    const culling_set<> boxes = edge_set(r);
+    culling_set<obb3> s{boxes.frustum, {}};
+    for (const aabb3& b : boxes.boxes) {
+        std::array<vec3, 3> axes{vec3{1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1}};
+        std::array<double, 3> h{0.5 * (b.max.x - b.min.x), 0.5 * (b.max.y - b.min.y), 0.5 * (b.max.z - b.min.z)};
+        const int first = r.integer(0, 2);
+        std::rotate(axes.begin(), axes.begin() + first, axes.end());
+        std::rotate(h.begin(), h.begin() + first, h.end());
+        for (vec3& a : axes)
+            if (r.coin()) a = a * -1.0;
+        s.boxes.push_back(obb3{{0.5 * (b.min.x + b.max.x), 0.5 * (b.min.y + b.max.y), 0.5 * (b.min.z + b.max.z)}, axes, h});
+    }
+    return s;
+}
+
+culling_set<> special_set(support::rng& r) {
     auto pick = [&] { return support::special_or_uniform(r); };
     auto point = [&] { return point3{pick(), pick(), pick()}; };
     culling_set s = r.coin() ? camera_set(r) : touching_set(r);
@@ -152,27 +247,52 @@ culling_set special_set(support::rng& r) {
         if (r.coin()) b = r.coin() ? aabb3{point(), point()} : aabb3{b.max, b.min};
     return s;
 }
+// Oriented boxes with special numbers (NaN, infinities, huge, subnormal) or a negative extent.
+culling_set<obb3> special_obb_set(support::rng& r) {
+    auto pick = [&] { return support::special_or_uniform(r); };
+    culling_set<obb3> s = r.coin() ? camera_obb_set(r) : touching_obb_set(r);
+    if (r.integer(0, 3) == 0) s.frustum.planes[static_cast<unsigned>(r.integer(0, 5))] = plane3{vec3{pick(), pick(), pick()}, pick()};
+    for (obb3& b : s.boxes) {
+        if (!r.coin()) continue;
+        double v[15];
+        batch_fields(b, v);
+        v[r.integer(0, 14)] = pick();
+        if (r.integer(0, 3) == 0) v[12 + r.integer(0, 2)] = -r.uniform(0, 1);
+        b = obb3{{v[0], v[1], v[2]}, {vec3{v[3], v[4], v[5]}, vec3{v[6], v[7], v[8]}, vec3{v[9], v[10], v[11]}}, {v[12], v[13], v[14]}};
+    }
+    return s;
+}
 
 struct counts {
     long lanes = 0, wrong = 0, uncertain = 0, met = 0;
 };
 
-std::vector<double> field(const std::vector<aabb3>& v, int k) {
-    std::vector<double> out;
-    for (const aabb3& b : v)
-        out.push_back(k < 3 ? (k == 0 ? b.min.x : k == 1 ? b.min.y : b.min.z) : (k == 3 ? b.max.x : k == 4 ? b.max.y : b.max.z));
-    return out;
-}
+// The packet of a set: its arrays, and the view of them.
+template <class Box>
+struct packet {
+    static constexpr int fields = std::is_same_v<Box, aabb3> ? 6 : 15;
+    std::vector<double> f[fields];
+    explicit packet(const std::vector<Box>& boxes) {
+        for (const Box& b : boxes) {
+            double v[fields];
+            batch_fields(b, v);
+            for (int k = 0; k < fields; ++k) f[k].push_back(v[k]);
+        }
+    }
+    [[nodiscard]] auto view() const {
+        if constexpr (std::is_same_v<Box, aabb3>) return batch::boxes_soa{f[0], f[1], f[2], f[3], f[4], f[5]};
+        else return batch::obbs_soa{f[0], f[1], f[2], f[3], f[4], f[5], f[6], f[7], f[8], f[9], f[10], f[11], f[12], f[13], f[14]};
+    }
+};
 
-template <class Tier>
-void compare(const culling_set& s, counts& c, const std::string& where) {
+template <class Tier, class Box>
+void compare(const culling_set<Box>& s, counts& c, const std::string& where) {
     const std::size_t n = s.boxes.size();
     std::vector<std::uint8_t> out[4];
     for (auto& o : out) o.assign(n, 7);
-    std::vector<double> f[6];
-    for (int k = 0; k < 6; ++k) f[k] = field(s.boxes, k);
-    const batch::boxes_soa soa{f[0], f[1], f[2], f[3], f[4], f[5]};
-    const std::span<const aabb3> boxes(s.boxes);
+    const packet<Box> copy(s.boxes);
+    const auto soa = copy.view();
+    const std::span<const Box> boxes(s.boxes);
     const result<std::size_t> r[4] = {batch::intersects<Tier>(s.frustum, boxes, out[0]), batch::intersects<Tier>(s.frustum, soa, out[1]),
                                       batch::intersects<Tier>(boxes, s.frustum, out[2]), batch::intersects<Tier>(soa, s.frustum, out[3])};
     std::size_t met = 0;
@@ -186,8 +306,11 @@ void compare(const culling_set& s, counts& c, const std::string& where) {
                 std::printf("  %s lane %zu: scalar %d, batch %d %d %d %d\n", where.c_str(), i, scalar, out[0][i], out[1][i], out[2][i],
                             out[3][i]);
                 for (auto& p : s.frustum.planes) std::printf("    plane %a %a %a %a\n", p.normal.x, p.normal.y, p.normal.z, p.offset);
-                const aabb3& b = s.boxes[i];
-                std::printf("    box %a %a %a  %a %a %a\n", b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z);
+                double v[15];
+                batch_fields(s.boxes[i], v);
+                std::printf("    box");
+                for (std::size_t k = 0; k < packet<Box>::fields; ++k) std::printf(" %a", v[k]);
+                std::printf("\n");
             }
         }
     }
@@ -203,7 +326,7 @@ void every_tier_on_every_target(const char* name, long sets, Make make) {
     counts c[4];
     const int targets = support::on_every_target(name, [&](support::rng& r, const std::string& where, const char*) {
         for (long k = 0; k < sets; ++k) {
-            const culling_set s = make(r, k);
+            const auto s = make(r, k);
             compare<exact>(s, c[0], where + ", exact");
             compare<conservative>(s, c[1], where + ", conservative");
             compare<aggressive>(s, c[2], where + ", aggressive");
@@ -243,6 +366,30 @@ TEST_CASE("batch culling: every lane is the scalar answer, special values, every
     every_tier_on_every_target("special", support::cases(100), [](support::rng& r, long) { return special_set(r); });
 }
 
+TEST_CASE("batch culling: every lane is the scalar answer, oriented boxes, camera frustums, every target", "[batch]") {
+    every_tier_on_every_target("obb camera", support::cases(150), [](support::rng& r, long) { return camera_obb_set(r); });
+}
+
+TEST_CASE("batch culling: every lane is the scalar answer, oriented boxes at an integer frustum's boundary, every target", "[batch]") {
+    long uncertain = 0, lanes = 0;
+    support::rng r(support::seed());
+    for (int k = 0; k < 30; ++k) {
+        const auto s = touching_obb_set(r);
+        for (const obb3& b : s.boxes) uncertain += classify(s.frustum, b) == certainty::uncertain, ++lanes;
+    }
+    std::printf("[cases] batch culling: %ld of %ld oriented boxes of the touching sets are uncertain for the filter\n", uncertain, lanes);
+    CHECK(uncertain * 10 > lanes);
+    every_tier_on_every_target("obb touching", support::cases(100), [](support::rng& g, long) { return touching_obb_set(g); });
+}
+
+TEST_CASE("batch culling: every lane is the scalar answer, oriented boxes beyond an edge of six integer planes, every target", "[batch]") {
+    every_tier_on_every_target("obb edge", support::cases(100), [](support::rng& r, long) { return edge_obb_set(r); });
+}
+
+TEST_CASE("batch culling: every lane is the scalar answer, oriented boxes of special values, every target", "[batch]") {
+    every_tier_on_every_target("obb special", support::cases(100), [](support::rng& r, long) { return special_obb_set(r); });
+}
+
 TEST_CASE("batch culling: sizes", "[batch]") {
     const frustum3 f = frustum3::from_camera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 1.0, 1.0, 1.0, 10.0).value();
     const std::vector<aabb3> boxes{aabb3{{-1, -1, -5}, {1, 1, -4}}, aabb3{{-1, -1, 1}, {1, 1, 2}}, aabb3{{50, 50, -5}, {51, 51, -4}}};
@@ -259,6 +406,18 @@ TEST_CASE("batch culling: sizes", "[batch]") {
     const auto bad = batch::intersects<exact>(f, batch::boxes_soa{x, x, x, x, x, y}, std::span<std::uint8_t>(out.data(), 2));
     REQUIRE(bad.has_error());
     CHECK(bad.error().code == errc::size_mismatch);
+    const std::vector<obb3> obbs{obb3{{0, 0, -5}, {vec3{1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1}}, {1, 1, 1}},
+                                 obb3{{0, 0, 5}, {vec3{1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1}}, {1, 1, 1}}};
+    out.assign(2, 7);
+    const auto oriented = batch::intersects<exact>(f, std::span<const obb3>(obbs), out);
+    REQUIRE(oriented.has_value());
+    CHECK(oriented.value() == 1);
+    CHECK(out == std::vector<std::uint8_t>{1, 0});
+    const auto short_obbs = batch::intersects<exact>(std::span<const obb3>(obbs), f, std::span<std::uint8_t>(out.data(), 1));
+    REQUIRE(short_obbs.has_error());
+    const auto uneven =
+        batch::intersects<exact>(batch::obbs_soa{x, x, x, x, x, x, x, x, x, x, x, x, x, x, y}, f, std::span<std::uint8_t>(out.data(), 2));
+    REQUIRE(uneven.has_error());
 }
 
 } // namespace test_batch_culling
