@@ -340,6 +340,21 @@ void every_tier_on_every_target(const char* name, long sets, Make make) {
     for (const counts& x : c) CHECK(x.wrong == 0);
 }
 
+// The same for near-degenerate sets, after checking on 30 of them that the filter leaves at least
+// a tenth of their lanes uncertain (the batch must leave those to the scalar query).
+template <class Box>
+void near_sets_on_every_target(const char* name, long sets, culling_set<Box> (*make)(support::rng&)) {
+    long uncertain = 0, lanes = 0;
+    support::rng r(support::seed());
+    for (int k = 0; k < 30; ++k) {
+        const culling_set<Box> s = make(r);
+        for (const Box& b : s.boxes) uncertain += classify(s.frustum, b) == certainty::uncertain, ++lanes;
+    }
+    std::printf("[cases] batch culling %s: %ld of %ld lanes of 30 sets are uncertain for the filter\n", name, uncertain, lanes);
+    CHECK(uncertain * 10 > lanes);
+    every_tier_on_every_target(name, sets, [make](support::rng& g, long) { return make(g); });
+}
+
 } // namespace
 
 TEST_CASE("batch culling: every lane is the scalar answer, camera frustums and random boxes, every target", "[batch]") {
@@ -347,15 +362,7 @@ TEST_CASE("batch culling: every lane is the scalar answer, camera frustums and r
 }
 
 TEST_CASE("batch culling: every lane is the scalar answer, boxes at an integer frustum's boundary, every target", "[batch]") {
-    long uncertain = 0, lanes = 0;
-    support::rng r(support::seed());
-    for (int k = 0; k < 30; ++k) { // the sets are near-degenerate: the filter leaves many lanes open
-        const culling_set s = touching_set(r);
-        for (const aabb3& b : s.boxes) uncertain += classify(s.frustum, b) == certainty::uncertain, ++lanes;
-    }
-    std::printf("[cases] batch culling: %ld of %ld lanes of the touching sets are uncertain for the filter\n", uncertain, lanes);
-    CHECK(uncertain * 10 > lanes);
-    every_tier_on_every_target("touching", support::cases(150), [](support::rng& g, long) { return touching_set(g); });
+    near_sets_on_every_target("touching", support::cases(150), touching_set);
 }
 
 TEST_CASE("batch culling: every lane is the scalar answer, boxes beyond an edge of six integer planes, every target", "[batch]") {
@@ -371,15 +378,7 @@ TEST_CASE("batch culling: every lane is the scalar answer, oriented boxes, camer
 }
 
 TEST_CASE("batch culling: every lane is the scalar answer, oriented boxes at an integer frustum's boundary, every target", "[batch]") {
-    long uncertain = 0, lanes = 0;
-    support::rng r(support::seed());
-    for (int k = 0; k < 30; ++k) {
-        const auto s = touching_obb_set(r);
-        for (const obb3& b : s.boxes) uncertain += classify(s.frustum, b) == certainty::uncertain, ++lanes;
-    }
-    std::printf("[cases] batch culling: %ld of %ld oriented boxes of the touching sets are uncertain for the filter\n", uncertain, lanes);
-    CHECK(uncertain * 10 > lanes);
-    every_tier_on_every_target("obb touching", support::cases(100), [](support::rng& g, long) { return touching_obb_set(g); });
+    near_sets_on_every_target("obb touching", support::cases(100), touching_obb_set);
 }
 
 TEST_CASE("batch culling: every lane is the scalar answer, oriented boxes beyond an edge of six integer planes, every target", "[batch]") {
