@@ -199,17 +199,17 @@ void frustum_obb(const double* planes, const double* const* obbs, std::size_t n,
     struct lanes_obb {
         V c[3], a[3][3], h[3];
     };
+    // a box's fields (field 3 + 3 j + k is axis j's component k), and the lanes whose box is usable
     auto load = [&](const fields& g, std::size_t i, std::size_t count, lanes_obb& b) {
         M usable = hn::FirstN(d, count);
         for (int k = 0; k < 3; ++k) {
             b.c[k] = g.at(d, k, i), b.h[k] = g.at(d, 12 + k, i);
-            for (int j = 0; j < 3; ++j) b.a[j][k] = g.at(d, 3 + 3 * j + k, i);
+            usable = hn::And(usable, hn::And(hn::IsFinite(b.c[k]), hn::And(hn::IsFinite(b.h[k]), hn::Ge(b.h[k], hn::Zero(d)))));
+            for (int j = 0; j < 3; ++j) {
+                b.a[j][k] = g.at(d, 3 + 3 * j + k, i);
+                usable = hn::And(usable, hn::IsFinite(b.a[j][k]));
+            }
         }
-        for (int k = 0; k < 15; ++k) {
-            const V x = k < 3 ? b.c[k] : (k < 12 ? b.a[(k - 3) / 3][(k - 3) % 3] : b.h[k - 12]);
-            usable = hn::And(usable, hn::IsFinite(x));
-        }
-        for (int j = 0; j < 3; ++j) usable = hn::And(usable, hn::Ge(b.h[j], hn::Zero(d)));
         return usable;
     };
     // box_reach for plane p, in the filter (with its permanent) or alone
@@ -257,7 +257,11 @@ void frustum_obb(const double* planes, const double* const* obbs, std::size_t n,
             over_fields(d, f, m, [&](const fields& g, std::size_t i, std::size_t, std::size_t count) {
                 lanes_obb b;
                 const M usable = load(g, i, count, b);
-                for (int k = 0; k < 15; ++k) most[k] = hn::Max(most[k], hn::IfThenElseZero(usable, hn::Abs(g.at(d, k, i))));
+                auto keep = [&](int k, V x) { most[k] = hn::Max(most[k], hn::IfThenElseZero(usable, hn::Abs(x))); };
+                for (int k = 0; k < 3; ++k) {
+                    keep(k, b.c[k]), keep(12 + k, b.h[k]);
+                    for (int j = 0; j < 3; ++j) keep(3 + 3 * j + k, b.a[j][k]);
+                }
             });
             pp big[15];
             for (int k = 0; k < 15; ++k) big[k] = {hn::GetLane(hn::MaxOfLanes(d, most[k]))};
