@@ -7,7 +7,7 @@
 // box or ball (rays_triangle, rays_aabb, rays_sphere) and one ray against boxes or balls
 // (ray_aabbs, ray_spheres); boxes against a frustum (frustum_aabbs, and the classic culling test's
 // loop, approximate/method_culling_loop/frustum_aabbs) and oriented boxes against it
-// (frustum_obbs). The triangles in every tier,
+// (frustum_obbs); oriented boxes against one box (aabb_obbs). The triangles in every tier,
 // beside the loop over the scalar query that it replaces, on each SIMD target the processor has:
 //   <tier>/batch_intersects/ray_triangles/<dist>              the dispatched (best) target
 //   <tier>/batch_intersects/ray_triangles_<TARGET>/<dist>     one target (AVX3 = AVX-512, AVX2, SSE4)
@@ -595,26 +595,35 @@ std::vector<std::pair<frustum3, std::vector<aabb3>>> frustum_boxes_set(bool near
     }
     return out;
 }
-// The same frustums and oriented boxes: each box's centre and extents, rotated by a random
-// rotation (random: the box's middle and extent; near_degenerate: the near set's box, whose
-// corner touches a plane before the rotation, so rotated about its centre it reaches across).
-std::vector<std::pair<frustum3, std::vector<obb3>>> frustum_obbs_set(const std::vector<std::pair<frustum3, std::vector<aabb3>>>& boxes) {
-    std::vector<std::pair<frustum3, std::vector<obb3>>> out;
-    for (const auto& [f, set] : boxes) {
+// Oriented boxes from a set's boxes: each box's centre and extents, its axes a random rotation
+// (`turned`; frustum_obbs: the near set's box, whose corner touches a plane before the rotation,
+// so rotated about its centre it reaches across) or the unit axes in a random signed order (the
+// same box up to the rounding of centre and extents: aabb_obbs' near set, boxes just touching the
+// one box's face).
+template <class One>
+std::vector<std::pair<One, std::vector<obb3>>> obbs_of(const std::vector<std::pair<One, std::vector<aabb3>>>& boxes, bool turned) {
+    std::vector<std::pair<One, std::vector<obb3>>> out;
+    for (const auto& [one, set] : boxes) {
         std::vector<obb3> obbs;
         for (const aabb3& b : set) {
-            double q[4], n = 0;
-            for (double& x : q) x = uni(-1, 1), n += x * x;
-            n = std::sqrt(n);
-            for (double& x : q) x /= n;
-            const double w = q[0], x = q[1], y = q[2], z = q[3];
-            const std::array<vec3, 3> axes{vec3{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)},
-                                           vec3{2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
-                                           vec3{2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}};
+            std::array<vec3, 3> axes{vec3{1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1}};
+            if (turned) {
+                double q[4], n = 0;
+                for (double& x : q) x = uni(-1, 1), n += x * x;
+                n = std::sqrt(n);
+                for (double& x : q) x /= n;
+                const double w = q[0], x = q[1], y = q[2], z = q[3];
+                axes = {vec3{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)},
+                        vec3{2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
+                        vec3{2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}};
+            } else {
+                for (vec3& v : axes)
+                    if (irand(0, 1) == 0) v = v * -1.0;
+            }
             const point3 c{0.5 * (b.min.x + b.max.x), 0.5 * (b.min.y + b.max.y), 0.5 * (b.min.z + b.max.z)};
             obbs.push_back(obb3{c, axes, {0.5 * (b.max.x - b.min.x), 0.5 * (b.max.y - b.min.y), 0.5 * (b.max.z - b.min.z)}});
         }
-        out.emplace_back(f, std::move(obbs));
+        out.emplace_back(one, std::move(obbs));
     }
     return out;
 }
@@ -667,7 +676,8 @@ void register_batch(bool near) {
     const auto culling = frustum_boxes_set(near);
     reg_one_many_tiers("frustum_aabbs", dist, culling);
     reg_culling_method("approximate/method_culling_loop/frustum_aabbs/" + dist, culling);
-    reg_one_many_tiers("frustum_obbs", dist, frustum_obbs_set(culling));
+    reg_one_many_tiers("frustum_obbs", dist, obbs_of(culling, true));
+    reg_one_many_tiers("aabb_obbs", dist, obbs_of(solids_set<aabb3, aabb3>(near), !near));
 }
 
 } // namespace bench

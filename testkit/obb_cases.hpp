@@ -60,8 +60,9 @@ inline obb3 near_obb(rng& r) {
     for (double& h : b.half_extents) h = r.integer(0, 8) * 0.5;
     return b;
 }
-// c + sum s_i h_i a_i with s_i in {-1, 0, 1} (mostly +-1) or +-1/2: a corner, edge or face point.
-inline point3 boundary_point(rng& r, const obb3& b) {
+// c + sum s_i h_i a_i with s_i in {-1, 0, 1} (mostly +-1) or +-1/2: a corner, edge or face point;
+// moved 1/4 along x for a sixth of them, unless `on` asks for a point on the boundary always.
+inline point3 boundary_point(rng& r, const obb3& b, bool on = false) {
     point3 p = b.center;
     for (unsigned i = 0; i < 3; ++i) {
         const int w = r.integer(0, 5);
@@ -69,7 +70,7 @@ inline point3 boundary_point(rng& r, const obb3& b) {
         const double f = s * b.half_extents[i];
         p = point3{p.x + f * b.axes[i].x, p.y + f * b.axes[i].y, p.z + f * b.axes[i].z};
     }
-    if (r.integer(0, 5) == 0) p.x += r.coin() ? 0.25 : -0.25;
+    if (!on && r.integer(0, 5) == 0) p.x += r.coin() ? 0.25 : -0.25;
     return p;
 }
 inline vec3 small_vec(rng& r) {

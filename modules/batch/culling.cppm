@@ -41,34 +41,7 @@ void frustum_obbs(const double* planes, const double* const* obbs, std::size_t n
 } // namespace incidence::batch::simd
 }
 
-export namespace incidence::batch {
-// Oriented boxes kept as structure of arrays: fifteen arrays of one length, box i having centre
-// {cx[i], cy[i], cz[i]}, axes {ux[i], uy[i], uz[i]}, {vx[i], ...}, {wx[i], ...} and half extents
-// {hu[i], hv[i], hw[i]} along them (read exactly as given, as obb3 reads them).
-struct obbs_soa {
-    std::span<const double> cx, cy, cz, ux, uy, uz, vx, vy, vz, wx, wy, wz, hu, hv, hw;
-    [[nodiscard]] constexpr std::size_t size() const { return cx.size(); }
-    [[nodiscard]] constexpr bool consistent() const {
-        const std::size_t n = cx.size();
-        for (const auto& a : {cy, cz, ux, uy, uz, vx, vy, vz, wx, wy, wz, hu, hv, hw})
-            if (a.size() != n) return false;
-        return true;
-    }
-    [[nodiscard]] constexpr obb3 operator[](std::size_t i) const {
-        return {{cx[i], cy[i], cz[i]},
-                {vec3{ux[i], uy[i], uz[i]}, vec3{vx[i], vy[i], vz[i]}, vec3{wx[i], wy[i], wz[i]}},
-                {hu[i], hv[i], hw[i]}};
-    }
-};
-} // namespace incidence::batch
-
 namespace incidence::batch::detail {
-
-inline void arrays(const obbs_soa& b, const double** p) {
-    const double* v[15] = {b.cx.data(), b.cy.data(), b.cz.data(), b.ux.data(), b.uy.data(), b.uz.data(), b.vx.data(), b.vy.data(),
-                           b.vz.data(), b.wx.data(), b.wy.data(), b.wz.data(), b.hu.data(), b.hv.data(), b.hw.data()};
-    for (int k = 0; k < 15; ++k) p[k] = v[k];
-}
 
 // n boxes (their fields' arrays) against f: the kernel of the tier, then the scalar query where a
 // lane is open. The number of boxes met.

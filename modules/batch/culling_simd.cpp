@@ -196,21 +196,8 @@ void frustum_obb(const double* planes, const double* const* obbs, std::size_t n,
     const M none = hn::Not(hn::Eq(hn::Zero(d), hn::Zero(d)));
     fields all{{}, {}, 15};
     for (int k = 0; k < 15; ++k) all.p[k] = obbs[k], all.per_lane[k] = true;
-    struct lanes_obb {
-        V c[3], a[3][3], h[3];
-    };
-    // a box's fields (field 3 + 3 j + k is axis j's component k), and the lanes whose box is usable
     auto load = [&](const fields& g, std::size_t i, std::size_t count, lanes_obb& b) {
-        M usable = hn::FirstN(d, count);
-        for (int k = 0; k < 3; ++k) {
-            b.c[k] = g.at(d, k, i), b.h[k] = g.at(d, 12 + k, i);
-            usable = hn::And(usable, hn::And(hn::IsFinite(b.c[k]), hn::And(hn::IsFinite(b.h[k]), hn::Ge(b.h[k], hn::Zero(d)))));
-            for (int j = 0; j < 3; ++j) {
-                b.a[j][k] = g.at(d, 3 + 3 * j + k, i);
-                usable = hn::And(usable, hn::IsFinite(b.a[j][k]));
-            }
-        }
-        return usable;
+        return load_obb(d, g, i, count, b, [](V x) { return hn::IsFinite(x); });
     };
     // box_reach for plane p, in the filter (with its permanent) or alone
     auto in = [&](double v) { return fv{hn::Set(d, v), hn::Set(d, v < 0 ? -v : v)}; };

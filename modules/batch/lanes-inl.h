@@ -72,6 +72,12 @@ struct fields {
     HWY_INLINE V at(D d, int k, std::size_t i) const { return per_lane[k] ? hn::LoadU(d, p[k] + i) : hn::Set(d, *p[k]); }
 };
 
+// An oriented box in lanes: fields 0..2 its centre, 3 + 3 j + k axis j's component k, 12..14 its
+// half extents; load_obb reads the first `count` lanes from lane i and says which lanes are usable:
+// every number passes ok(x) and no half extent is negative or NaN.
+struct lanes_obb {
+    V c[3], a[3][3], h[3];
+};
 // Runs body(f, i, lane, count) over n lanes of f, read at i: whole vectors in place, the tail from
 // a zero-padded copy of the per-lane fields (read at 0).
 template <class Body>
@@ -88,6 +94,19 @@ HWY_INLINE void over_fields(D d, const fields& f, std::size_t n, const Body& bod
             padded.p[k] = tail[k];
         }
     body(padded, std::size_t{0}, i, n - i);
+}
+template <class Ok>
+HWY_INLINE M load_obb(D d, const fields& g, std::size_t i, std::size_t count, lanes_obb& b, const Ok& ok) {
+    M usable = hn::FirstN(d, count);
+    for (int k = 0; k < 3; ++k) {
+        b.c[k] = g.at(d, k, i), b.h[k] = g.at(d, 12 + k, i);
+        usable = hn::And(usable, hn::And(ok(b.c[k]), hn::And(ok(b.h[k]), hn::Ge(b.h[k], hn::Zero(d)))));
+        for (int j = 0; j < 3; ++j) {
+            b.a[j][k] = g.at(d, 3 + 3 * j + k, i);
+            usable = hn::And(usable, ok(b.a[j][k]));
+        }
+    }
+    return usable;
 }
 // The fields from lane `start` on.
 HWY_INLINE fields from(const fields& f, std::size_t start) {

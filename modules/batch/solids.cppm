@@ -1,16 +1,22 @@
 // Many boxes or balls against one box or one ball: batch::intersects<Tier>(one, many, out) for one
-// and many among aabb3 and sphere3 (the broad phase's and the culling's tests), for many as an
-// array of shapes or as a structure-of-arrays packet (boxes_soa, spheres_soa). out[i] is 1 where
-// many[i] meets the closed box or ball `one`, else 0: the answer of the scalar
-// intersects<Tier>(one, many[i]), bit for bit, in every tier (tests/batch/solids.cpp checks it on
-// every SIMD target).
+// and many among aabb3 and sphere3 (the broad phase's and the culling's tests), and many oriented
+// boxes against one box, for many as an array of shapes or as a structure-of-arrays packet
+// (boxes_soa, spheres_soa, obbs_soa). out[i] is 1 where many[i] meets the closed box or ball
+// `one`, else 0: the answer of the scalar intersects<Tier>(one, many[i]), bit for bit, in every
+// tier (tests/batch/solids.cpp checks it on every SIMD target).
 // Method (solids_simd.cpp): box against box by the scalar body's six comparisons, exact in every
 // tier; a ball against a box or a ball by the sign of r r - |g|^2 (degree 2; Ericson, Real-Time
 // Collision Detection, 2005, sections 4.3.1 and 5.2.5: g the centre's gap to the box or the other
 // centre), in plain double for the approximate tier, and in the filtered tiers in the semi-static
 // filter against a static bound per block of 64 lanes, then each lane's own bound, then the
 // scalar query for a lane still open.
+// Oriented boxes against a box (box_obbs_simd.cpp): the scalar query's 15 separating axes
+// (Gottschalk, Lin and Manocha, "OBBTree", SIGGRAPH 1996, section 5; degree 4), in plain double
+// for the approximate tier and against the scalar's static bounds per axis family, taken over a
+// block of 64 lanes, in the filtered tiers; a lane they leave open (touching or flat boxes) goes
+// to the scalar query.
 module;
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -18,6 +24,8 @@ module;
 export module incidence.batch:solids;
 import incidence.core;
 import incidence.shapes;
+import incidence.arith;
+import incidence.detail;
 import incidence.query;
 import :lanes;
 
@@ -30,6 +38,9 @@ namespace incidence::batch::simd {
 void box_boxes(const double* const* box, const double* const* boxes, std::size_t n, std::uint8_t* out);
 void box_balls(const double* const* box, const double* const* ball, bool boxes, std::size_t n, bool filter, std::uint8_t* out);
 void ball_balls(const double* const* ball, const double* const* balls, std::size_t n, bool filter, std::uint8_t* out);
+// obbs: fifteen arrays of n (centre x, y, z, axis 0 x, y, z, axis 1, axis 2, half extents 0, 1,
+// 2); gammas: the scalar filter's five (box_obb_gammas), or null for the approximate tier.
+void box_obbs(const double* const* box, const double* const* obbs, std::size_t n, const double* gammas, std::uint8_t* out);
 } // namespace incidence::batch::simd
 }
 
@@ -55,13 +66,29 @@ struct spheres_soa {
     [[nodiscard]] constexpr bool consistent() const { return y.size() == x.size() && z.size() == x.size() && radius.size() == x.size(); }
     [[nodiscard]] constexpr sphere3 operator[](std::size_t i) const { return {{x[i], y[i], z[i]}, radius[i]}; }
 };
+// Oriented boxes kept as structure of arrays: fifteen arrays of one length, box i having centre
+// {cx[i], cy[i], cz[i]}, axes {ux[i], uy[i], uz[i]}, {vx[i], ...}, {wx[i], ...} and half extents
+// {hu[i], hv[i], hw[i]} along them (read exactly as given, as obb3 reads them).
+struct obbs_soa {
+    std::span<const double> cx, cy, cz, ux, uy, uz, vx, vy, vz, wx, wy, wz, hu, hv, hw;
+    [[nodiscard]] constexpr std::size_t size() const { return cx.size(); }
+    [[nodiscard]] constexpr bool consistent() const {
+        const std::size_t n = cx.size();
+        for (const auto& a : {cy, cz, ux, uy, uz, vx, vy, vz, wx, wy, wz, hu, hv, hw})
+            if (a.size() != n) return false;
+        return true;
+    }
+    [[nodiscard]] constexpr obb3 operator[](std::size_t i) const {
+        return {{cx[i], cy[i], cz[i]},
+                {vec3{ux[i], uy[i], uz[i]}, vec3{vx[i], vy[i], vz[i]}, vec3{wx[i], wy[i], wz[i]}},
+                {hu[i], hv[i], hw[i]}};
+    }
+};
 
 } // namespace incidence::batch
 
 namespace incidence::batch::detail {
 
-template <class S>
-using soa_of = std::conditional_t<std::is_same_v<S, aabb3>, boxes_soa, spheres_soa>;
 inline void arrays(const boxes_soa& b, const double** p) {
     const double* v[6] = {b.min_x.data(), b.min_y.data(), b.min_z.data(), b.max_x.data(), b.max_y.data(), b.max_z.data()};
     for (int k = 0; k < 6; ++k) p[k] = v[k];
@@ -70,6 +97,26 @@ inline void arrays(const spheres_soa& s, const double** p) {
     const double* v[4] = {s.x.data(), s.y.data(), s.z.data(), s.radius.data()};
     for (int k = 0; k < 4; ++k) p[k] = v[k];
 }
+inline void arrays(const obbs_soa& b, const double** p) {
+    const double* v[15] = {b.cx.data(), b.cy.data(), b.cz.data(), b.ux.data(), b.uy.data(), b.uz.data(), b.vx.data(), b.vy.data(),
+                           b.vz.data(), b.wx.data(), b.wy.data(), b.wz.data(), b.hu.data(), b.hv.data(), b.hw.data()};
+    for (int k = 0; k < 15; ++k) p[k] = v[k];
+}
+
+// The scalar filter's gamma for each of sat::box_box_pass's five sign families (by
+// sat::box_axis_kind), read off its own value types, so that the kernel's static bounds are the
+// scalar's bounds for the same magnitudes.
+inline constexpr std::array<double, 5> box_obb_gammas = [] {
+    namespace sat = incidence::detail::sat;
+    std::array<double, 5> g{};
+    const sat::zonotope a = sat::zonotope_of(aabb3{{0, 0, 0}, {1, 1, 1}});
+    const obb3 b{{0, 0, 0}, {vec3{1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1}}, {1, 1, 1}};
+    (void)sat::box_box_pass(arith::lift_filter{}, a, b, [&]<int N>(const arith::filtered<N>&, sat::box_axis_kind kind) {
+        g[kind] = arith::error_bound(arith::filtered<N>{0.0, 1.0});
+        return -1; // every axis and both determinants visited
+    });
+    return g;
+}();
 
 // n lanes of `Many` (its fields' arrays) against `one`: the kernel of the tier, then the scalar
 // query where the filter left a lane open. The number of lanes met.
@@ -78,6 +125,7 @@ std::size_t solids_block(const One& one, const double* const* many, std::size_t 
     const one_fields<One> fields(one);
     constexpr bool filter = !std::is_same_v<Tier, approximate>;
     if constexpr (std::is_same_v<One, aabb3> && std::is_same_v<Many, aabb3>) simd::box_boxes(fields.p, many, n, out);
+    else if constexpr (std::is_same_v<Many, obb3>) simd::box_obbs(fields.p, many, n, filter ? box_obb_gammas.data() : nullptr, out);
     else if constexpr (std::is_same_v<One, aabb3>) simd::box_balls(fields.p, many, false, n, filter, out);
     else if constexpr (std::is_same_v<Many, aabb3>) simd::box_balls(many, fields.p, true, n, filter, out);
     else simd::ball_balls(fields.p, many, n, filter, out);
@@ -103,7 +151,7 @@ result<std::size_t> solids(const One& one, std::span<const Many> many, std::span
 template <tier Tier, class One, class Soa>
 result<std::size_t> solids(const One& one, const Soa& many, std::span<std::uint8_t> out) {
     if (!many.consistent() || out.size() != many.size()) return error{errc::size_mismatch};
-    const double* p[6] = {};
+    const double* p[15] = {};
     arrays(many, p);
     using Many = std::remove_cvref_t<decltype(many[0])>;
     return solids_block<Tier, One, Many>(one, p, many.size(), out.data(), [&](std::size_t i) { return many[i]; });
@@ -132,11 +180,19 @@ template <tier Tier = exact>
     return detail::solids<Tier>(one, many, out);
 }
 template <tier Tier = exact>
+[[nodiscard]] result<std::size_t> intersects(const aabb3& one, std::span<const obb3> many, std::span<std::uint8_t> out) {
+    return detail::solids<Tier>(one, many, out);
+}
+template <tier Tier = exact>
 [[nodiscard]] result<std::size_t> intersects(const aabb3& one, const boxes_soa& many, std::span<std::uint8_t> out) {
     return detail::solids<Tier>(one, many, out);
 }
 template <tier Tier = exact>
 [[nodiscard]] result<std::size_t> intersects(const aabb3& one, const spheres_soa& many, std::span<std::uint8_t> out) {
+    return detail::solids<Tier>(one, many, out);
+}
+template <tier Tier = exact>
+[[nodiscard]] result<std::size_t> intersects(const aabb3& one, const obbs_soa& many, std::span<std::uint8_t> out) {
     return detail::solids<Tier>(one, many, out);
 }
 template <tier Tier = exact>

@@ -22,10 +22,13 @@ import incidence.detail;
 #include "testkit/generators.hpp"
 #include "testkit/obb_cases.hpp"
 #include "testkit/simd_targets.hpp"
+#include "testkit/batch_packets.hpp"
 
 namespace test_batch_culling { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 
 using namespace incidence;
+using support::batch_fields;
+using support::packet;
 
 namespace {
 
@@ -208,17 +211,6 @@ culling_set<> edge_set(support::rng& r) {
     return s;
 }
 
-// A box's numbers in the order of its packet's arrays.
-void batch_fields(const aabb3& b, double* v) {
-    const double f[6] = {b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z};
-    for (int k = 0; k < 6; ++k) v[k] = f[k];
-}
-void batch_fields(const obb3& b, double* v) {
-    const double f[15] = {b.center.x,  b.center.y,  b.center.z,        b.axes[0].x,       b.axes[0].y,
-                          b.axes[0].z, b.axes[1].x, b.axes[1].y,       b.axes[1].z,       b.axes[2].x,
-                          b.axes[2].y, b.axes[2].z, b.half_extents[0], b.half_extents[1], b.half_extents[2]};
-    for (int k = 0; k < 15; ++k) v[k] = f[k];
-}
 // edge_set's boxes as oriented boxes: centre and half extents rounded from the bounds, the unit
 // axes in a random signed order (the same box up to that rounding, beyond an implied plane or
 // touching it, so that stage 2's corners lie within rounding of a plane).
@@ -258,31 +250,13 @@ culling_set<obb3> special_obb_set(support::rng& r) {
         batch_fields(b, v);
         v[r.integer(0, 14)] = pick();
         if (r.integer(0, 3) == 0) v[12 + r.integer(0, 2)] = -r.uniform(0, 1);
-        b = obb3{{v[0], v[1], v[2]}, {vec3{v[3], v[4], v[5]}, vec3{v[6], v[7], v[8]}, vec3{v[9], v[10], v[11]}}, {v[12], v[13], v[14]}};
+        b = support::obb_of_fields(v);
     }
     return s;
 }
 
 struct counts {
     long lanes = 0, wrong = 0, uncertain = 0, met = 0;
-};
-
-// The packet of a set: its arrays, and the view of them.
-template <class Box>
-struct packet {
-    static constexpr int fields = std::is_same_v<Box, aabb3> ? 6 : 15;
-    std::vector<double> f[fields];
-    explicit packet(const std::vector<Box>& boxes) {
-        for (const Box& b : boxes) {
-            double v[fields];
-            batch_fields(b, v);
-            for (int k = 0; k < fields; ++k) f[k].push_back(v[k]);
-        }
-    }
-    [[nodiscard]] auto view() const {
-        if constexpr (std::is_same_v<Box, aabb3>) return batch::boxes_soa{f[0], f[1], f[2], f[3], f[4], f[5]};
-        else return batch::obbs_soa{f[0], f[1], f[2], f[3], f[4], f[5], f[6], f[7], f[8], f[9], f[10], f[11], f[12], f[13], f[14]};
-    }
 };
 
 template <class Tier, class Box>

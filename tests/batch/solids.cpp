@@ -1,10 +1,12 @@
-// batch::intersects(one, many) for one and many among aabb3 and sphere3: on every SIMD target this
-// processor has, each lane's answer equals the scalar intersects<Tier>(one, many[i]) in all four
-// tiers, for the array and the structure-of-arrays entry points, on random shapes, on shapes that
-// touch exactly (boxes sharing a face, an edge or a corner; balls touching a box's face, edge or
-// corner, from Pythagorean triples and quadruples; tangent balls) and a few ulps off, at scales
-// 2^-500..2^500, and on special values (NaN, infinities, inverted boxes, negative radii). The exact
-// lanes that touch are checked against the known truth (touching meets).
+// batch::intersects(one, many) for one and many among aabb3 and sphere3, and for oriented boxes
+// against one box: on every SIMD target this processor has, each lane's answer equals the scalar
+// intersects<Tier>(one, many[i]) in all four tiers, for the array and the structure-of-arrays entry
+// points, on random shapes, on shapes that touch exactly (boxes sharing a face, an edge or a
+// corner; balls touching a box's face, edge or corner, from Pythagorean triples and quadruples;
+// tangent balls; oriented boxes through a point of the box's boundary, flat ones among them) and a
+// few ulps off, at scales 2^-500..2^500, and on special values (NaN, infinities, inverted boxes,
+// negative radii and extents). The exact lanes that touch are checked against the known truth
+// (touching meets).
 #include <catch2/catch_test_macros.hpp>
 #include <array>
 #include <cmath>
@@ -16,6 +18,9 @@
 import incidence;
 #include "testkit/testing.hpp"
 #include "testkit/simd_targets.hpp"
+#include "testkit/batch_packets.hpp"
+#include "testkit/generators.hpp"
+#include "testkit/obb_cases.hpp"
 
 namespace test_batch_solids { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 
@@ -142,20 +147,8 @@ solid_set special_set(support::rng& r) {
 }
 
 struct counts {
-    long lanes = 0, wrong = 0, touching_wrong = 0;
+    long lanes = 0, wrong = 0, touching_wrong = 0, uncertain = 0;
 };
-
-std::vector<double> field(const std::vector<aabb3>& v, int k) {
-    std::vector<double> out;
-    for (const aabb3& b : v)
-        out.push_back(k < 3 ? (k == 0 ? b.min.x : k == 1 ? b.min.y : b.min.z) : (k == 3 ? b.max.x : k == 4 ? b.max.y : b.max.z));
-    return out;
-}
-std::vector<double> field(const std::vector<sphere3>& v, int k) {
-    std::vector<double> out;
-    for (const sphere3& s : v) out.push_back(k == 0 ? s.center.x : k == 1 ? s.center.y : k == 2 ? s.center.z : s.radius);
-    return out;
-}
 
 // `one` against `many`, both entry points, lane by lane against the scalar query; known[i] == kind
 // marks the lanes that touch (the exact tier must say 1).
@@ -163,14 +156,9 @@ template <class Tier, class One, class Many>
 void compare(const One& one, const std::vector<Many>& many, const std::vector<int>& known, int kind, counts& c, const std::string& where) {
     const std::size_t n = many.size();
     std::vector<std::uint8_t> aos(n, 7), soa(n, 7);
-    std::vector<double> f[6];
-    for (int k = 0; k < (std::is_same_v<Many, aabb3> ? 6 : 4); ++k) f[k] = field(many, k);
+    const support::packet<Many> copy(many);
     const auto ra = batch::intersects<Tier>(one, std::span<const Many>(many), aos);
-    const auto rs = [&] {
-        if constexpr (std::is_same_v<Many, aabb3>)
-            return batch::intersects<Tier>(one, batch::boxes_soa{f[0], f[1], f[2], f[3], f[4], f[5]}, soa);
-        else return batch::intersects<Tier>(one, batch::spheres_soa{f[0], f[1], f[2], f[3]}, soa);
-    }();
+    const auto rs = batch::intersects<Tier>(one, copy.view(), soa);
     REQUIRE(ra.has_value());
     REQUIRE(rs.has_value());
     std::size_t met = 0;
@@ -179,10 +167,29 @@ void compare(const One& one, const std::vector<Many>& many, const std::vector<in
         met += scalar;
         ++c.lanes;
         if (aos[i] != scalar || soa[i] != scalar) {
-            if (++c.wrong <= 5)
+            if (++c.wrong <= 5) {
                 std::printf("  %s lane %zu: scalar %d, batch %d (array) %d (soa)\n", where.c_str(), i, scalar, aos[i], soa[i]);
+                double v[15];
+                support::batch_fields(many[i], v);
+                std::printf("    shape");
+                for (int k = 0; k < support::packet<Many>::fields; ++k) std::printf(" %a", v[k]);
+                std::printf("\n");
+            }
         }
-        if (std::is_same_v<Tier, exact> && known[i] == kind && aos[i] != 1) ++c.touching_wrong;
+        if constexpr (std::is_same_v<Many, obb3>)
+            if (std::is_same_v<Tier, exact>) c.uncertain += classify(one, many[i]) == certainty::uncertain;
+        if (std::is_same_v<Tier, exact> && known[i] == kind && aos[i] != 1) {
+            if (++c.touching_wrong <= 3) {
+                double v[15], w[15];
+                support::batch_fields(one, w);
+                support::batch_fields(many[i], v);
+                std::printf("  %s lane %zu touches, not met:", where.c_str(), i);
+                for (int k = 0; k < support::packet<One>::fields; ++k) std::printf(" %a", w[k]);
+                std::printf(" /");
+                for (int k = 0; k < support::packet<Many>::fields; ++k) std::printf(" %a", v[k]);
+                std::printf("\n");
+            }
+        }
     }
     if (ra.value() != met || rs.value() != met) ++c.wrong;
 }
@@ -221,6 +228,104 @@ void every_pair_on_every_target(const char* name, long sets, Make make) {
     }
 }
 
+// Oriented boxes against one box: the box [-4, 5] x [-3, 6] x [-2, 7] (flat on one axis in a
+// fifth of the sets), and
+// - random (kind 0): oriented boxes of random rotation (support::random_frame), centres in
+//   [-16, 16]^3, extents in [0, 4], a tenth of them flat on an axis;
+// - touching (kinds 1, 2): support::near_obb boxes (signed-permutation, dyadic near-rotation or
+//   small-integer skew axes; dyadic extents, some zero) placed so that a corner, edge or face point
+//   of theirs lies on a corner, edge point or face point of the box: they meet, exactly (known[i]
+//   = 1), unless a third of them turned by a random rotation instead (the point is then there only
+//   to rounding) or a quarter moved a few ulps;
+// the whole set at 2^k for a third of the sets.
+struct obb_set {
+    aabb3 box;
+    std::vector<obb3> obbs;
+    std::vector<int> touching;
+};
+obb_set make_obb_set(support::rng& r, int kind) {
+    obb_set s;
+    double lo[3] = {-4, -3, -2}, hi[3] = {5, 6, 7};
+    if (r.integer(0, 4) == 0) {
+        const int a = r.integer(0, 2);
+        lo[a] = hi[a] = r.integer(static_cast<int>(lo[a]), static_cast<int>(hi[a]));
+    }
+    s.box = aabb3{{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
+    const int n = r.integer(1, 100);
+    for (int i = 0; i < n; ++i) {
+        obb3 b;
+        int known = 0;
+        if (kind == 0) {
+            b = obb3{{r.uniform(-16, 16), r.uniform(-16, 16), r.uniform(-16, 16)},
+                     support::random_frame(r),
+                     {r.uniform(0, 4), r.uniform(0, 4), r.uniform(0, 4)}};
+            if (r.integer(0, 9) == 0) b.half_extents[static_cast<unsigned>(r.integer(0, 2))] = 0;
+        } else {
+            double p[3];
+            const int on = r.integer(0, 2); // an axis on which p is on a face
+            for (int a = 0; a < 3; ++a)
+                p[a] = a == on || r.coin() ? (r.coin() ? hi[a] : lo[a])
+                                           : 0.5 * r.integer(static_cast<int>(2 * lo[a]), static_cast<int>(2 * hi[a]));
+            b = support::near_obb(r);
+            for (double& h : b.half_extents) h *= 2;
+            const bool turned = r.integer(0, 2) == 0;
+            if (turned) b.axes = support::random_frame(r);
+            b.center = point3{p[0], p[1], p[2]} + (b.center - support::boundary_point(r, b, true));
+            known = turned ? 0 : 1;
+            if (r.integer(0, 3) == 0) {
+                b.center = {support::nudge(b.center.x, r.integer(-3, 3)), support::nudge(b.center.y, r.integer(-3, 3)), b.center.z};
+                known = 0;
+            }
+        }
+        s.obbs.push_back(b);
+        s.touching.push_back(known);
+    }
+    if (r.integer(0, 2) == 0) {
+        const int k = r.integer(-500, 500);
+        s.box = audit::scaled(s.box, k);
+        for (obb3& b : s.obbs) b = audit::scaled(b, k);
+    }
+    return s;
+}
+// The same sets with special numbers (NaN, infinities, huge, subnormal) in a field, a negative
+// extent, or an inverted or special box.
+obb_set special_obb_set(support::rng& r) {
+    auto pick = [&] { return support::special_or_uniform(r); };
+    obb_set s = make_obb_set(r, r.integer(0, 1));
+    if (r.integer(0, 3) == 0) {
+        s.box = r.coin() ? aabb3{{pick(), pick(), pick()}, {pick(), pick(), pick()}} : aabb3{s.box.max, s.box.min};
+        for (int& t : s.touching) t = 0;
+    }
+    for (std::size_t i = 0; i < s.obbs.size(); ++i) {
+        if (!r.coin()) continue;
+        double v[15];
+        support::batch_fields(s.obbs[i], v);
+        v[r.integer(0, 14)] = pick();
+        if (r.integer(0, 3) == 0) v[12 + r.integer(0, 2)] = -r.uniform(0, 1);
+        s.obbs[i] = support::obb_of_fields(v);
+        s.touching[i] = 0;
+    }
+    return s;
+}
+
+template <class Make>
+void obbs_on_every_target(const char* name, long sets, Make make) {
+    counts c[4];
+    const int targets = support::on_every_target(name, [&](support::rng& r, const std::string& where, const char*) {
+        for (long k = 0; k < sets; ++k) {
+            const obb_set s = make(r, static_cast<int>(k % 3));
+            every_tier(s.box, s.obbs, s.touching, 1, c, where + ", box against oriented boxes");
+        }
+    });
+    std::printf("[cases] batch solids %s, box-obbs: %d SIMD targets, %ld lanes per tier (%ld uncertain to the scalar filter); lanes "
+                "unlike the scalar answer %ld %ld %ld %ld (exact, conservative, aggressive, approximate); exact touching lanes not met: "
+                "%ld\n",
+                name, targets, c[0].lanes, c[0].uncertain, c[0].wrong, c[1].wrong, c[2].wrong, c[3].wrong, c[0].touching_wrong);
+    CHECK(targets >= 2);
+    for (const counts& x : c) CHECK(x.wrong == 0);
+    CHECK(c[0].touching_wrong == 0);
+    return;
+}
 } // namespace
 
 TEST_CASE("batch solids: every lane is the scalar answer, random and touching shapes, every target", "[batch]") {
@@ -229,6 +334,14 @@ TEST_CASE("batch solids: every lane is the scalar answer, random and touching sh
 
 TEST_CASE("batch solids: every lane is the scalar answer, special values, every target", "[batch]") {
     every_pair_on_every_target("special", support::cases(300), [](support::rng& r, int) { return special_set(r); });
+}
+
+TEST_CASE("batch solids: oriented boxes, every lane is the scalar answer, random and touching, every target", "[batch]") {
+    obbs_on_every_target("random and touching", support::cases(100), make_obb_set);
+}
+
+TEST_CASE("batch solids: oriented boxes, every lane is the scalar answer, special values, every target", "[batch]") {
+    obbs_on_every_target("special", support::cases(100), [](support::rng& r, int) { return special_obb_set(r); });
 }
 
 TEST_CASE("batch solids: touching lanes are counted", "[batch]") {
@@ -241,6 +354,13 @@ TEST_CASE("batch solids: touching lanes are counted", "[batch]") {
     }
     std::printf("[cases] batch solids: %ld of %ld lanes of the touching sets touch exactly\n", known, lanes);
     CHECK(known * 2 > lanes);
+    long obb_known = 0, obb_lanes = 0;
+    for (int k = 0; k < 20; ++k) {
+        const obb_set s = make_obb_set(r, 1);
+        for (const int t : s.touching) obb_known += t, ++obb_lanes;
+    }
+    std::printf("[cases] batch solids: %ld of %ld oriented boxes of the touching sets meet the box exactly\n", obb_known, obb_lanes);
+    CHECK(obb_known * 3 > obb_lanes);
 }
 
 TEST_CASE("batch solids: sizes", "[batch]") {
@@ -258,6 +378,18 @@ TEST_CASE("batch solids: sizes", "[batch]") {
         batch::intersects<exact>(aabb3{{1, 1, 1}, {2, 2, 2}}, batch::spheres_soa{x, x, x, y}, std::span<std::uint8_t>(out.data(), 2));
     REQUIRE(bad.has_error());
     CHECK(bad.error().code == errc::size_mismatch);
+    const std::vector<obb3> obbs(3, obb3{{0, 0, 0}, {vec3{1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1}}, {1, 1, 1}});
+    const auto oriented = batch::intersects<exact>(aabb3{{1, 1, 1}, {2, 2, 2}}, std::span<const obb3>(obbs), out);
+    REQUIRE(oriented.has_value());
+    CHECK(oriented.value() == 3);
+    const auto short_out =
+        batch::intersects<exact>(aabb3{{1, 1, 1}, {2, 2, 2}}, std::span<const obb3>(obbs), std::span<std::uint8_t>(out.data(), 2));
+    REQUIRE(short_out.has_error());
+    CHECK(short_out.error().code == errc::size_mismatch);
+    const auto bad_obbs = batch::intersects<exact>(
+        aabb3{{1, 1, 1}, {2, 2, 2}}, batch::obbs_soa{x, x, x, x, x, x, x, x, x, x, x, x, x, x, y}, std::span<std::uint8_t>(out.data(), 2));
+    REQUIRE(bad_obbs.has_error());
+    CHECK(bad_obbs.error().code == errc::size_mismatch);
 }
 
 } // namespace test_batch_solids

@@ -18,7 +18,12 @@ export namespace incidence::detail {
 
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const aabb3& a, const obb3& b) {
-    return sat::well_formed(a) && sat::well_formed(b) && sat::zonotopes_intersect(k, sat::zonotope_of(a), sat::zonotope_of(b));
+    if (!sat::well_formed(a) || !sat::well_formed(b)) return false;
+    const sat::zonotope z = sat::zonotope_of(a);
+    // b read in place (as obb_obb reads both); batch::detail::box_obb_gammas reads its filter's
+    // types from this same pair of arguments
+    if (const certainty f = sat::box_box_fast(k, z, b); f != certainty::uncertain) return f == certainty::yes;
+    return sat::zonotopes_intersect_general(k, z, sat::zonotope_of(b));
 }
 
 // obb3 against point3 (closed box, read as the parallelepiped its axes span).
