@@ -5,7 +5,8 @@
 // <tier>/scalar_loop/...); a box or a ball against a set of boxes or balls (aabb_aabbs,
 // aabb_spheres, sphere_aabbs, sphere_spheres, the same way); a set of rays against one triangle,
 // box or ball (rays_triangle, rays_aabb, rays_sphere) and one ray against boxes or balls
-// (ray_aabbs, ray_spheres); boxes against a frustum (frustum_aabbs, and the classic culling test's
+// (ray_aabbs, ray_spheres; and its first hit among them, <tier>/batch_intersection/ray_aabbs and
+// ray_spheres beside <tier>/scalar_loop_intersection/...); boxes against a frustum (frustum_aabbs, and the classic culling test's
 // loop, approximate/method_culling_loop/frustum_aabbs) and oriented boxes against it
 // (frustum_obbs); oriented boxes against one box (aabb_obbs). The triangles in every tier,
 // beside the loop over the scalar query that it replaces, on each SIMD target the processor has:
@@ -566,6 +567,47 @@ std::vector<std::pair<ray3, std::vector<Solid>>> ray_solids_set(bool near) {
     return out;
 }
 
+// The first hit of one ray among boxes or balls (batch::intersection) beside the loop a user writes
+// without it: the scalar intersection<Tier> of every shape, the least entry kept (by its lower end
+// in the interval tiers: not an exact order, only the work).
+template <class Tier, class Solid>
+void reg_first_solid(const std::string& name, const std::vector<std::pair<ray3, std::vector<Solid>>>& sets, int entry) {
+    benchmark::RegisterBenchmark(name.c_str(), [sets, entry](benchmark::State& st) {
+        std::size_t k = 0, hits = 0;
+        for (auto _ : st) {
+            const auto& [ray, many] = sets[k];
+            if (entry == 0) {
+                hits += batch::intersection<Tier>(ray, std::span<const Solid>(many)).value().has_value();
+            } else {
+                std::optional<std::size_t> best;
+                double t_best = 0;
+                for (std::size_t i = 0; i < many.size(); ++i)
+                    if (const auto h = intersection<Tier>(ray, many[i])) {
+                        const double t = [&] {
+                            if constexpr (std::is_same_v<std::decay_t<decltype(h->t_enter)>, double>) return h->t_enter;
+                            else return h->t_enter.lo;
+                        }();
+                        if (!best || t < t_best) best = i, t_best = t;
+                    }
+                hits += best.has_value();
+            }
+            benchmark::ClobberMemory();
+            if (++k == sets.size()) k = 0;
+        }
+        benchmark::DoNotOptimize(hits);
+        st.counters["s_per_test"] = benchmark::Counter(static_cast<double>(sets.front().second.size()),
+                                                       benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+    });
+}
+template <class Solid>
+void reg_first_solid_tiers(const std::string& pair, const std::string& dist, const std::vector<std::pair<ray3, std::vector<Solid>>>& sets) {
+    reg_first_solid<exact>("exact/batch_intersection/" + pair + "/" + dist, sets, 0);
+    reg_first_solid<exact>("exact/scalar_loop_intersection/" + pair + "/" + dist, sets, 1);
+    reg_first_solid<conservative>("conservative/batch_intersection/" + pair + "/" + dist, sets, 0);
+    reg_first_solid<approximate>("approximate/batch_intersection/" + pair + "/" + dist, sets, 0);
+    reg_first_solid<approximate>("approximate/scalar_loop_intersection/" + pair + "/" + dist, sets, 1);
+}
+
 // Boxes (half-extents up to 0.25) against a camera frustum (eye in [-2, 2]^3 looking at a point
 // of the unit cube, vertical field of view 0.6..1.4, near 0.1, far 4; random: boxes in the unit
 // cube; near_degenerate: a corner on one of its planes (the nearest point of the plane to a random
@@ -671,8 +713,12 @@ void register_batch(bool near) {
     reg_one_many_tiers("rays_triangle", dist, rays_set<triangle3>(near));
     reg_one_many_tiers("rays_aabb", dist, rays_set<aabb3>(near));
     reg_one_many_tiers("rays_sphere", dist, rays_set<sphere3>(near));
-    reg_one_many_tiers("ray_aabbs", dist, ray_solids_set<aabb3>(near));
-    reg_one_many_tiers("ray_spheres", dist, ray_solids_set<sphere3>(near));
+    const auto ray_boxes = ray_solids_set<aabb3>(near);
+    const auto ray_balls = ray_solids_set<sphere3>(near);
+    reg_one_many_tiers("ray_aabbs", dist, ray_boxes);
+    reg_one_many_tiers("ray_spheres", dist, ray_balls);
+    reg_first_solid_tiers("ray_aabbs", dist, ray_boxes);
+    reg_first_solid_tiers("ray_spheres", dist, ray_balls);
     const auto culling = frustum_boxes_set(near);
     reg_one_many_tiers("frustum_aabbs", dist, culling);
     reg_culling_method("approximate/method_culling_loop/frustum_aabbs/" + dist, culling);

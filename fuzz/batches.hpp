@@ -6,7 +6,9 @@
 #include <hwy/targets.h>
 #include <array>
 #include <cstdint>
+#include <algorithm>
 #include <cstdlib>
+#include <optional>
 #include <span>
 #include <type_traits>
 #include <vector>
@@ -41,6 +43,32 @@ void batch_contracts(const One& one, std::span<const Many> many, std::uint8_t pi
     batch_is_scalar<incidence::aggressive>(one, many);
     batch_is_scalar<incidence::approximate>(one, many);
     hwy::SetSupportedTargetsForTest(0);
+}
+
+// The first hit of a ray among boxes or balls (batch::intersection): there is one exactly where the
+// scalar exact intersection finds some shape hit; its entry is the least of the shapes' correctly
+// rounded entries (which order ties below an ulp the batch decides itself: the tests check that)
+// and its values are its shape's scalar exact values; conservative and aggressive name the same
+// shape, their intervals holding the exact values; approximate finishes. Any difference aborts.
+template <class Solid>
+void first_hit_contracts(const incidence::ray3& r, std::span<const Solid> many) {
+    using namespace incidence;
+    const auto e = batch::intersection<exact>(r, many);
+    if (!e) std::abort();
+    std::optional<double> least;
+    for (const Solid& s : many)
+        if (const auto h = intersection<exact>(r, s)) least = least ? std::min(*least, h->t_enter) : h->t_enter;
+    if (e.value().has_value() != least.has_value()) std::abort();
+    if (const auto& h = e.value()) {
+        const auto scalar = intersection<exact>(r, many[h->index]);
+        if (!scalar || scalar->t_enter != h->t_enter || h->t_enter != *least) std::abort();
+        for (const auto& x : {batch::intersection<conservative>(r, many), batch::intersection<aggressive>(r, many)}) {
+            if (!x || !x.value() || x.value()->index != h->index || !x.value()->t_enter.contains(h->t_enter) ||
+                !x.value()->t_exit.contains(h->t_exit))
+                std::abort();
+        }
+    }
+    if (!batch::intersection<approximate>(r, many)) std::abort();
 }
 
 // The nine triangles the ray_triangle and scene harnesses read from doubles 0..31: t (6..14), u (the

@@ -6,7 +6,8 @@
 // boxes' and both spheres' points (the 16 doubles' points and their ulp neighbours), both boxes
 // and both spheres against five boxes and five balls of the same doubles, the ray against those,
 // and six rays of the same doubles against each box and ball, on a SIMD target the first byte
-// picks, every lane equal to the scalar answer in every tier. Any finding aborts.
+// picks, every lane equal to the scalar answer in every tier; and the ray's first hit among those
+// boxes and balls (batches.hpp, first_hit_contracts). Any finding aborts.
 #include "testkit/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <cmath>
@@ -70,6 +71,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         // the ray batches: the ray against the boxes and balls, and rays of the same doubles against each box and ball
         batch_contracts(ray, std::span<const aabb3>(boxes), pick);
         batch_contracts(ray, std::span<const sphere3>(balls), pick);
+        first_hit_contracts(ray, std::span<const aabb3>(boxes));
+        first_hit_contracts(ray, std::span<const sphere3>(balls));
         const ray3 rays[6] = {ray, {q, vec3{v[0], v[1], v[2]}}, {c, e - c}, {e, c - e}, {p, vec3{0, 0, 0}}, {q, vec3{v[12], v[13], v[14]}}};
         for (const aabb3& one : {b1, b2}) batch_contracts(one, std::span<const ray3>(rays), pick);
         for (const sphere3& one : {s1, s2}) batch_contracts(one, std::span<const ray3>(rays), pick);

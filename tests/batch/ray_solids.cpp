@@ -5,7 +5,15 @@
 // plane; a ray tangent to a ball, from integer vectors of integer length), a few ulps off, at
 // scales 2^-500..2^500, and on special values (NaN, infinities, zero directions, inverted boxes,
 // negative radii). The exact lanes are checked against the CGAL Epeck oracle.
+// And batch::intersection(ray, boxes or balls), the first hit: its index against brute force over
+// the scalar exact hits ordered by an independent computation of their entries (Boost
+// multiprecision: a box's as an exact rational, a ball's root in 1,200-bit floats), on random
+// shapes, on grids of boxes that the ray crosses at shared edges and corners, on balls whose
+// entries tie exactly (Pythagorean directions), on rays that start inside, and on special values.
 #include <catch2/catch_test_macros.hpp>
+#include <boost/multiprecision/cpp_bin_float.hpp>
+#include <boost/multiprecision/cpp_int.hpp>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -17,6 +25,8 @@ import incidence;
 #include "testkit/testing.hpp"
 #include "testkit/simd_targets.hpp"
 #include "testkit/sphere_points.hpp"
+#include "testkit/batch_packets.hpp"
+#include "testkit/generators.hpp"
 
 namespace test_batch_ray_solids { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 
@@ -224,7 +234,208 @@ void every_pair_on_every_target(const char* name, long sets, Make make) {
         for (int t = 0; t < 4; ++t) CHECK(pairs[p][t].wrong == 0);
 }
 
+// --- the first hit -------------------------------------------------------------------------------
+
+namespace mp = boost::multiprecision;
+using rational = mp::cpp_rational;
+using wide = mp::number<mp::cpp_bin_float<1200, mp::digit_base_2>>;
+
+// The exact entry of a ray into a box it meets, max(0, (near_k - o_k) / d_k), as a rational; and
+// into a ball it meets, max(0, t1), t1 = c / (-b + sqrt(b^2 - a c)) when c > 0 and b < 0 (the form
+// without cancellation), from exact coefficients, in 1,200-bit floats.
+wide entry_of(const ray3& r, const aabb3& b) {
+    const double o[3] = {r.origin.x, r.origin.y, r.origin.z}, d[3] = {r.direction.x, r.direction.y, r.direction.z};
+    const double lo[3] = {b.min.x, b.min.y, b.min.z}, hi[3] = {b.max.x, b.max.y, b.max.z};
+    rational best = 0;
+    for (int k = 0; k < 3; ++k)
+        if (d[k] != 0) best = std::max(best, (rational(d[k] > 0 ? lo[k] : hi[k]) - rational(o[k])) / rational(d[k]));
+    return wide(mp::numerator(best)) / wide(mp::denominator(best));
+}
+wide entry_of(const ray3& r, const sphere3& s) {
+    const rational m[3] = {rational(r.origin.x) - rational(s.center.x), rational(r.origin.y) - rational(s.center.y),
+                           rational(r.origin.z) - rational(s.center.z)};
+    const rational D[3] = {rational(r.direction.x), rational(r.direction.y), rational(r.direction.z)};
+    const rational a = D[0] * D[0] + D[1] * D[1] + D[2] * D[2], b = m[0] * D[0] + m[1] * D[1] + m[2] * D[2];
+    const rational c = m[0] * m[0] + m[1] * m[1] + m[2] * m[2] - rational(s.radius) * rational(s.radius);
+    if (!(c > 0 && b < 0)) return 0;
+    auto to_wide = [](const rational& x) { return wide(mp::numerator(x)) / wide(mp::denominator(x)); };
+    return to_wide(c) / (to_wide(-b) + mp::sqrt(to_wide(b * b - a * c)));
+}
+// Two entries are the same where they agree to 2^-1000 relative (their float error is below
+// 2^-1150; distinct entries of double inputs lie much further apart).
+bool same_entry(const wide& t, const wide& u) { return mp::abs(t - u) <= mp::ldexp(mp::abs(t) + mp::abs(u), -1000); }
+// The index of the first hit by brute force: the scalar exact hits, least entry, ties to the least
+// index; -1 for none.
+template <class Solid>
+long first_by_brute_force(const ray3& r, const std::vector<Solid>& many) {
+    long best = -1;
+    wide t_best = 0;
+    for (std::size_t i = 0; i < many.size(); ++i) {
+        if (!intersects<exact>(r, many[i])) continue;
+        const wide t = entry_of(r, many[i]);
+        if (best < 0 || (t < t_best && !same_entry(t, t_best))) best = static_cast<long>(i), t_best = t;
+    }
+    return best;
+}
+
+struct first_set {
+    ray3 ray;
+    std::vector<aabb3> boxes;
+    std::vector<sphere3> balls;
+};
+// kind 0: random boxes and balls (some large, around the origin); 1: a grid of unit boxes in a
+// random order, the ray from an integer point along an integer direction (it crosses the boxes at
+// shared faces, edges and corners: ties), and balls on the ray's line, centred at o + t_c d with
+// radius rho |d| (|d| from a Pythagorean quadruple), so the entry is t_c - rho exactly and several
+// tie; balls repeated, concentric, and around the origin (entry 0); a third of the balls' radii and
+// a fifth of the boxes' lower corners a few ulps off (entries apart by less than the enclosures'
+// width, which the exact comparison orders). All at 2^k.
+first_set make_first_set(support::rng& r, int kind) {
+    first_set s;
+    if (kind == 0) {
+        s.ray = ray3{{r.uniform(-2, 2), r.uniform(-2, 2), r.uniform(-2, 2)}, {r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)}};
+        const int n = r.integer(1, 200);
+        for (int i = 0; i < n; ++i) {
+            const point3 c = r.integer(0, 19) == 0 ? s.ray.origin : point3{r.uniform(-2, 2), r.uniform(-2, 2), r.uniform(-2, 2)};
+            const double e = r.uniform(0, r.integer(0, 9) == 0 ? 2.0 : 0.5);
+            s.boxes.push_back(aabb3{{c.x - e, c.y - r.uniform(0, e), c.z - e}, {c.x + r.uniform(0, e), c.y + e, c.z + e}});
+            s.balls.push_back(sphere3{c, e});
+        }
+    } else {
+        const auto q = support::pythagorean(r);
+        const point3 o{double(r.integer(-2, 6)), double(r.integer(-2, 6)), double(r.integer(-2, 6))};
+        s.ray = ray3{o, vec3{q.x, q.y, q.z}};
+        for (int i = 0; i < 5; ++i)
+            for (int j = 0; j < 5; ++j)
+                for (int k = 0; k < 5; ++k) s.boxes.push_back(aabb3{{double(i), double(j), double(k)}, {i + 1.0, j + 1.0, k + 1.0}});
+        for (std::size_t i = s.boxes.size(); i > 1; --i)
+            std::swap(s.boxes[i - 1], s.boxes[static_cast<std::size_t>(r.integer(0, static_cast<int>(i) - 1))]);
+        s.boxes.resize(static_cast<std::size_t>(r.integer(1, 125)));
+        const int n = r.integer(1, 60);
+        const bool inside = r.integer(0, 3) == 0; // a quarter of the sets: balls around the origin too
+        for (int i = 0; i < n; ++i) {
+            int how = r.integer(0, 5);
+            if (how == 1 && !inside) how = 2;
+            if (how == 0 && !s.balls.empty()) { // a repeat
+                s.balls.push_back(s.balls[static_cast<std::size_t>(r.integer(0, static_cast<int>(s.balls.size()) - 1))]);
+            } else if (how == 1) { // around the origin: entered at 0
+                s.balls.push_back(sphere3{{o.x + r.integer(-1, 1), o.y + r.integer(-1, 1), o.z}, q.w * r.integer(1, 3) + 2.0});
+            } else { // on the line: centre o + t_c d, radius rho |d|, entry t_c - rho
+                const double tc = r.integer(2, 12), rho = r.integer(1, 2) * (r.coin() ? 1.0 : 0.5);
+                s.balls.push_back(sphere3{{o.x + tc * q.x, o.y + tc * q.y, o.z + tc * q.z}, rho * q.w});
+            }
+            if (r.integer(0, 2) == 0) // a few ulps larger or smaller: entries apart by less than the enclosures' width
+                s.balls.back().radius = support::nudge(s.balls.back().radius, r.coin() ? r.integer(1, 3) : -r.integer(1, 3));
+        }
+        for (aabb3& b : s.boxes)
+            if (r.integer(0, 4) == 0)
+                b.min = {support::nudge(b.min.x, r.integer(-2, 2)), support::nudge(b.min.y, r.integer(-2, 2)), b.min.z};
+    }
+    if (r.integer(0, 2) == 0) {
+        const int k = r.integer(-400, 400);
+        s.ray = ray3{{std::ldexp(s.ray.origin.x, k), std::ldexp(s.ray.origin.y, k), std::ldexp(s.ray.origin.z, k)}, s.ray.direction};
+        for (aabb3& b : s.boxes) b = audit::scaled(b, k);
+        for (sphere3& b : s.balls)
+            b = sphere3{{std::ldexp(b.center.x, k), std::ldexp(b.center.y, k), std::ldexp(b.center.z, k)}, std::ldexp(b.radius, k)};
+    }
+    return s;
+}
+first_set special_first_set(support::rng& r) {
+    first_set s = make_first_set(r, r.integer(0, 1));
+    auto pick = [&] { return support::special_or_uniform(r); };
+    if (r.integer(0, 3) == 0) s.ray = ray3{{pick(), pick(), pick()}, {pick(), pick(), pick()}};
+    for (aabb3& b : s.boxes)
+        if (r.integer(0, 3) == 0) b = r.coin() ? aabb3{{pick(), pick(), pick()}, {pick(), pick(), pick()}} : aabb3{b.max, b.min};
+    for (sphere3& b : s.balls)
+        if (r.integer(0, 3) == 0) b = sphere3{{pick(), b.center.y, pick()}, r.coin() ? pick() : -b.radius};
+    return s;
+}
+
+struct first_counts {
+    long sets = 0, hits = 0, ties = 0, wrong = 0, approximate_elsewhere = 0;
+};
+
+template <class Solid>
+void check_first(const ray3& ray, const std::vector<Solid>& many, first_counts& c, const std::string& where) {
+    const long truth = first_by_brute_force(ray, many);
+    const support::packet<Solid> copy(many);
+    ++c.sets;
+    c.hits += truth >= 0;
+    if (truth >= 0) { // a tie: another hit at the same entry
+        const wide t = entry_of(ray, many[static_cast<std::size_t>(truth)]);
+        for (std::size_t i = static_cast<std::size_t>(truth) + 1; i < many.size(); ++i)
+            if (intersects<exact>(ray, many[i]) && same_entry(entry_of(ray, many[i]), t)) {
+                ++c.ties;
+                break;
+            }
+    }
+    auto report = [&](const char* tier, long got) {
+        if (++c.wrong <= 5) std::printf("  %s, %s: first hit %ld, brute force %ld\n", where.c_str(), tier, got, truth);
+    };
+    auto index_of = [](const auto& h) { return h ? static_cast<long>(h->index) : -1L; };
+    const auto e = batch::intersection<exact>(ray, std::span<const Solid>(many));
+    const auto ep = batch::intersection<exact>(ray, copy.view());
+    REQUIRE((e.has_value() && ep.has_value()));
+    if (index_of(e.value()) != truth || index_of(ep.value()) != truth) report("exact", index_of(e.value()));
+    if (truth >= 0 && e.value()) {
+        const auto scalar = intersection<exact>(ray, many[static_cast<std::size_t>(truth)]);
+        const auto& h = *e.value();
+        if (!scalar || h.t_enter != scalar->t_enter || h.t_exit != scalar->t_exit || !(h.point == scalar->point) ||
+            h.exists != certainty::yes)
+            report("exact values", index_of(e.value()));
+    }
+    auto enclosed = [&](const auto& h) {
+        const auto& x = *e.value();
+        return h.t_enter.contains(x.t_enter) && h.t_exit.contains(x.t_exit) && h.exists == certainty::yes;
+    };
+    const auto cv = batch::intersection<conservative>(ray, std::span<const Solid>(many));
+    const auto ag = batch::intersection<aggressive>(ray, copy.view());
+    REQUIRE((cv.has_value() && ag.has_value()));
+    if (index_of(cv.value()) != truth || (cv.value() && !enclosed(*cv.value()))) report("conservative", index_of(cv.value()));
+    if (index_of(ag.value()) != truth || (ag.value() && !enclosed(*ag.value()))) report("aggressive", index_of(ag.value()));
+    // approximate: the least plain-double entry among the plain-double hits, ties to the least index
+    long plain = -1;
+    double t_plain = 0;
+    for (std::size_t i = 0; i < many.size(); ++i)
+        if (intersects<approximate>(ray, many[i]))
+            if (const auto h = intersection<approximate>(ray, many[i]); h && (plain < 0 || h->t_enter < t_plain))
+                plain = static_cast<long>(i), t_plain = h->t_enter;
+    const auto ap = batch::intersection<approximate>(ray, std::span<const Solid>(many));
+    REQUIRE(ap.has_value());
+    if (index_of(ap.value()) != plain || (ap.value() && ap.value()->exists != certainty::uncertain))
+        report("approximate", index_of(ap.value()));
+    c.approximate_elsewhere += plain != truth;
+}
+
+template <class Make>
+void first_hits_on_every_target(const char* name, long sets, Make make) {
+    first_counts boxes, balls;
+    const int targets = support::on_every_target(name, [&](support::rng& r, const std::string& where, const char*) {
+        for (long k = 0; k < sets; ++k) {
+            const first_set s = make(r, static_cast<int>(k % 2));
+            check_first(s.ray, s.boxes, boxes, where + ", boxes");
+            check_first(s.ray, s.balls, balls, where + ", balls");
+        }
+    });
+    for (const auto& [what, c] : {std::pair{"boxes", boxes}, std::pair{"balls", balls}})
+        std::printf("[cases] batch first hit %s, %s: %d SIMD targets, %ld rays, %ld with a hit, %ld of them tied at the first entry; "
+                    "unlike brute force: %ld; approximate elsewhere than exact: %ld\n",
+                    name, what, targets, c.sets, c.hits, c.ties, c.wrong, c.approximate_elsewhere);
+    CHECK(targets >= 2);
+    CHECK(boxes.wrong == 0);
+    CHECK(balls.wrong == 0);
+    return;
+}
+
 } // namespace
+
+TEST_CASE("batch ray_solids: the first hit among boxes and balls is brute force's, random, grids and ties, every target", "[batch]") {
+    first_hits_on_every_target("random and tied", support::cases(100), make_first_set);
+}
+
+TEST_CASE("batch ray_solids: the first hit among boxes and balls, special values, every target", "[batch]") {
+    first_hits_on_every_target("special", support::cases(100), [](support::rng& r, int) { return special_first_set(r); });
+}
 
 TEST_CASE("batch ray_solids: every lane is the scalar answer, touching rays, boxes and balls, every target", "[batch]") {
     every_pair_on_every_target("touching", support::cases(300), make_set);
@@ -296,6 +507,17 @@ TEST_CASE("batch ray_solids: sizes", "[batch]") {
     const auto all = batch::intersects<exact>(std::span<const ray3>(rays), boxes[0], out);
     REQUIRE(all.has_value());
     CHECK(all.value() == 3);
+    const std::vector<double> x{0.0, 1.0}, y{1.0};
+    const auto bad = batch::intersection<exact>(ray, batch::spheres_soa{x, x, x, y});
+    REQUIRE(bad.has_error());
+    CHECK(bad.error().code == errc::size_mismatch);
+    const auto first = batch::intersection<exact>(ray, std::span<const aabb3>(boxes)); // three equal boxes: the first
+    REQUIRE((first.has_value() && first.value().has_value()));
+    CHECK(first.value()->index == 0);
+    CHECK(first.value()->t_enter == 4.0);
+    const auto none = batch::intersection<exact>(ray3{{5, 5, 5}, {1, 0, 0}}, std::span<const aabb3>(boxes));
+    REQUIRE(none.has_value());
+    CHECK(!none.value().has_value());
 }
 
 } // namespace test_batch_ray_solids
