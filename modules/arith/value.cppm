@@ -72,6 +72,18 @@ using point_value_t = std::conditional_t<encloses<K>, interval3, point3>;
 template <class K>
 using vec_value_t = std::conditional_t<encloses<K>, interval3, vec3>;
 
+// Whether kernel k has left a sign open already. Its values are then discarded (the caller runs the
+// whole query again in the exact kernel), so a rounded value is not worth its exact stages: those
+// can cost tens of microseconds, on a quadratic whose roots the open sign may have assumed when it
+// has none (a ray just missing a ball). The rounded modes below then return plain double.
+// Run time only: in constant evaluation a plain value may divide by zero or take a NaN, which is
+// ill-formed there.
+template <class K>
+[[nodiscard]] constexpr bool values_discarded(const K& k) {
+    if constexpr (requires { k.failed(); }) return !__builtin_is_constant_evaluated() && k.failed();
+    else return false;
+}
+
 // --- intervals, rounded outward ----------------------------------------------------------------
 // Every operation below returns an interval that contains every exact result for operands in its
 // operand intervals: each end point is computed in round-to-nearest (error <= half an ulp, or
@@ -316,9 +328,9 @@ template <class F>
 
 // The value f (a ratio or a polynomial) as kernel K computes values.
 template <class K, class F>
-[[nodiscard]] constexpr value_t<K> value(K&, const F& f) {
+[[nodiscard]] constexpr value_t<K> value(K& k, const F& f) {
     if constexpr (value_mode_of<K>() == value_mode::enclosure) return enclosed_value(f);
-    else if constexpr (value_mode_of<K>() == value_mode::rounded) return rounded_value(f);
+    else if constexpr (value_mode_of<K>() == value_mode::rounded) return values_discarded(k) ? plain_value(f) : rounded_value(f);
     else return plain_value(f);
 }
 // An exact double (a bound of the parameter's domain, an input coordinate) as a value of K.
@@ -443,14 +455,19 @@ template <class K, class F, class A, class B, class R>
     if (q.ok) t = coordinate_near(lift_filtered_dd(0.0), lift_filtered_dd(1.0), q);
     return {t ? *t : rounded_from(f, r), rounded_point(k, f, a, b, r, q)};
 }
+// The point a + t b in plain double.
+template <class A, class B>
+[[nodiscard]] constexpr point3 plain_point_at(double t, const A& a, const B& b) {
+    const auto o = a(lift_double{});
+    const auto d = b(lift_double{});
+    return point3{o.x + t * d.x, o.y + t * d.y, o.z + t * d.z};
+}
 template <class K, class F, class A, class B>
 [[nodiscard]] constexpr value_with_point<K> value_and_point(K& k, const F& f, const A& a, const B& b) {
     constexpr value_mode mode = value_mode_of<K>();
     if constexpr (mode == value_mode::plain) {
         const double t = plain_value(f);
-        const auto o = a(lift_double{});
-        const auto d = b(lift_double{});
-        return {t, point3{o.x + t * d.x, o.y + t * d.y, o.z + t * d.z}};
+        return {t, plain_point_at(t, a, b)};
     } else if constexpr (mode == value_mode::enclosure) {
         const auto r = ratio_of(f, lift_filter{});
         const auto o = a(lift_filter{});
@@ -460,6 +477,10 @@ template <class K, class F, class A, class B>
                 interval3{divide(enclose(o.x * r.den + r.num * d.x), s), divide(enclose(o.y * r.den + r.num * d.y), s),
                           divide(enclose(o.z * r.den + r.num * d.z), s)}};
     } else {
+        if (values_discarded(k)) {
+            const double t = plain_value(f);
+            return {t, plain_point_at(t, a, b)};
+        }
         if (__builtin_is_constant_evaluated()) return {rounded_value(f), rounded_point(k, f, a, b)};
         return rounded_value_and_point(k, f, a, b, ratio_of(f, lift_filter_dd{}));
     }
@@ -467,6 +488,7 @@ template <class K, class F, class A, class B>
 template <class K, class F, class A, class B>
 [[nodiscard]] constexpr point_value_t<K> point_at(K& k, const F& f, const A& a, const B& b) {
     if constexpr (value_mode_of<K>() == value_mode::rounded) {
+        if (values_discarded(k)) return plain_point_at(plain_value(f), a, b);
         if (__builtin_is_constant_evaluated()) return rounded_point(k, f, a, b);
         return rounded_point(k, f, a, b, ratio_of(f, lift_filter_dd{}));
     }
@@ -515,13 +537,14 @@ template <class Q, class P, class D>
     return e.a * p + e.b * q;
 }
 
-// The root in plain double, written so that nothing cancels.
-[[nodiscard]] constexpr double plain_root(root r, double a, double b, double c) {
-    const double disc = b * b - a * c;
+// The root in plain double, written so that nothing cancels; from a discriminant b b - a c
+// computed by the caller, or in double.
+[[nodiscard]] constexpr double root_of(root r, double a, double b, double c, double disc) {
     const double s = sqrt(disc > 0.0 ? disc : 0.0);
     if (b < 0.0) return r == root::smaller ? c / (-b + s) : (-b + s) / a;
     return r == root::smaller ? (-b - s) / a : c / (-b - s);
 }
+[[nodiscard]] constexpr double plain_root(root r, double a, double b, double c) { return root_of(r, a, b, c, b * b - a * c); }
 [[nodiscard]] constexpr interval enclosed_root(root r, interval a, interval b, interval c, interval disc) {
     const interval s = square_root(disc);
     if (b.hi < 0.0) return r == root::smaller ? divide(c, add(negate(b), s)) : divide(add(negate(b), s), a);
@@ -594,6 +617,11 @@ template <class Q>
     return root_surely_within(q, r, root_f(q, x, one), root_v(q, x, one), h);
 }
 
+// The guess: the root in double and one Newton step; where that is not surely it, the root from
+// the double-double coefficients and discriminant. Near a double root (a ray tangent to a ball)
+// the discriminant in double is mostly rounding error, and its square root moves the root by
+// about 2^-26 of its size, too far for the midpoint tests below (a Newton step only halves that
+// error at a double root); in double-double it moves it by an ulp or two.
 template <class F>
 [[nodiscard]] constexpr double rounded_root(const F& f, root r) {
     const auto qd = f(lift_double{});
@@ -603,6 +631,11 @@ template <class F>
         const filtered_dd<0> one = lift_filtered_dd(1.0);
         if (is_finite(guess)) guess -= newton_step(q, guess);
         if (root_surely_rounds_to(q, r, guess)) return guess;
+        const auto disc = q.b * q.b - q.a * q.c;
+        if (const double g = root_of(r, q.a.hi, q.b.hi, q.c.hi, disc.hi + disc.lo); is_finite(g)) {
+            guess = g - newton_step(q, g);
+            if (root_surely_rounds_to(q, r, guess)) return guess;
+        }
         if (const auto v = round_at_midpoints(guess, [&](double c, double h) {
                 const auto m = lift_filtered_dd(c, h);
                 return root_side(r, dd_side(root_f(q, m, one)), dd_side(root_v(q, m, one)));
@@ -613,14 +646,16 @@ template <class F>
 }
 
 // The root as kernel K computes values.
+template <class F>
+[[nodiscard]] constexpr double plain_root_of(const F& f, root r) {
+    const auto q = f(lift_double{});
+    return plain_root(r, q.a, q.b, q.c);
+}
 template <class K, class F>
-[[nodiscard]] constexpr value_t<K> root_value(K&, const F& f, root r) {
+[[nodiscard]] constexpr value_t<K> root_value(K& k, const F& f, root r) {
     if constexpr (value_mode_of<K>() == value_mode::enclosure) return enclosed_root_of(f, r);
-    else if constexpr (value_mode_of<K>() == value_mode::rounded) return rounded_root(f, r);
-    else {
-        const auto q = f(lift_double{});
-        return plain_root(r, q.a, q.b, q.c);
-    }
+    else if constexpr (value_mode_of<K>() == value_mode::rounded) return values_discarded(k) ? plain_root_of(f, r) : rounded_root(f, r);
+    else return plain_root_of(f, r);
 }
 
 // A coordinate a_i + t b_i at the root, by exact signs, then dyadic bracketing.
@@ -653,10 +688,8 @@ template <class K, class F, class A, class B>
 [[nodiscard]] constexpr value_with_point<K> value_and_point_at_root(K& k, const F& f, root r, const A& a, const B& b) {
     constexpr value_mode mode = value_mode_of<K>();
     if constexpr (mode == value_mode::plain) {
-        const double t = root_value(k, f, r);
-        const auto o = a(lift_double{});
-        const auto d = b(lift_double{});
-        return {t, point3{o.x + t * d.x, o.y + t * d.y, o.z + t * d.z}};
+        const double t = plain_root_of(f, r);
+        return {t, plain_point_at(t, a, b)};
     } else if constexpr (mode == value_mode::enclosure) {
         const interval t = enclosed_root_of(f, r);
         const auto o = a(lift_filter{});
@@ -664,6 +697,10 @@ template <class K, class F, class A, class B>
         auto coordinate = [&](const auto& oi, const auto& di) { return add(enclose(oi), mul(t, enclose(di))); };
         return {t, interval3{coordinate(o.x, d.x), coordinate(o.y, d.y), coordinate(o.z, d.z)}};
     } else {
+        if (values_discarded(k)) {
+            const double t = plain_root_of(f, r);
+            return {t, plain_point_at(t, a, b)};
+        }
         // the rounded t and one Newton step give t to about twice double's precision, and so a guess
         // for each coordinate that stays within an ulp where a_i + t b_i cancels
         const double t = rounded_root(f, r);
