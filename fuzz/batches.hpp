@@ -44,6 +44,21 @@ void batch_contracts(const One& one, std::span<const Many> many, std::uint8_t pi
     batch_is_scalar<incidence::approximate>(one, many);
     hwy::SetSupportedTargetsForTest(0);
 }
+// The same in one tier, which `pick` chooses beside the target: for pairs whose scalar reference
+// runs the exact fallback on most raw bit patterns, where four tiers per input would make the
+// corpus replay four times as long. The corpus's inputs spread over the four.
+template <class One, class Many>
+void batch_contracts_one_tier(const One& one, std::span<const Many> many, std::uint8_t pick) {
+    static const std::vector<std::int64_t> targets = hwy::SupportedAndGeneratedTargets();
+    hwy::SetSupportedTargetsForTest(targets[pick % targets.size()]);
+    switch (pick / targets.size() % 4) {
+    case 0: batch_is_scalar<incidence::exact>(one, many); break;
+    case 1: batch_is_scalar<incidence::conservative>(one, many); break;
+    case 2: batch_is_scalar<incidence::aggressive>(one, many); break;
+    default: batch_is_scalar<incidence::approximate>(one, many); break;
+    }
+    hwy::SetSupportedTargetsForTest(0);
+}
 
 // The first hit of a ray among boxes or balls (batch::intersection): there is one exactly where the
 // scalar exact intersection finds some shape hit; its entry is the least of the shapes' correctly

@@ -16,8 +16,9 @@
 // contains(., point | segment | triangle | tetrahedron | box | oriented box)), against the LP with the half-spaces as rows
 // (an oriented box's containment: its corners in exact rationals). And the culling batch: ten
 // boxes from the doubles against the frustum (batches.hpp: every lane the scalar answer in every
-// tier, on a SIMD target byte 0 picks), and six oriented boxes (byte 1 picks the target), and
-// the six against the box p q and its ordered copy (bytes 2, 3). Any finding aborts.
+// tier, on a SIMD target byte 0 picks), and six oriented boxes (byte 1 picks the target and one
+// tier), and the six against the box p q or its ordered copy (byte 3; byte 2 picks the target and
+// one tier). Any finding aborts.
 #include "testkit/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <array>
@@ -202,10 +203,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         batch_contracts(fr, std::span<const aabb3>(boxes), size == 0 ? 0 : data[0]);
         // and oriented boxes: o, o2, w, w2 (the extents made non-negative) and two of o's frame about p and q
         const obb3 obbs[6] = {o, o2, w, w2, obb3{p, o.axes, w.half_extents}, obb3{q, o2.axes, w2.half_extents}};
-        batch_contracts(fr, std::span<const obb3>(obbs), size < 2 ? 0 : data[1]);
-        // the same against one box: box (maybe inverted) and p q ordered
-        batch_contracts(box, std::span<const obb3>(obbs), size < 3 ? 0 : data[2]);
-        batch_contracts(boxes[8], std::span<const obb3>(obbs), size < 4 ? 0 : data[3]);
+        batch_contracts_one_tier(fr, std::span<const obb3>(obbs), size < 2 ? 0 : data[1]);
+        // the same against one box: box (maybe inverted) or p q ordered, byte 3 says which
+        batch_contracts_one_tier(size < 4 || data[3] % 2 == 0 ? box : boxes[8], std::span<const obb3>(obbs), size < 3 ? 0 : data[2]);
         (void)method::frustum_obb_sat(fr, o);
         (void)method::frustum_obb_decomposition(fr, o);
         // two half-space sets: a second polyhedron of 1 to 6 planes from other doubles (byte 2)
