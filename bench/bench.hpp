@@ -26,6 +26,7 @@ import incidence.detail;
 #include "testkit/lp_shapes.hpp"
 #include "testkit/polyhedron_cases.hpp"
 #include "testkit/polygon3_cases.hpp"
+#include "testkit/ball_halfspace_cases.hpp"
 
 using namespace incidence;
 
@@ -383,6 +384,23 @@ template <class P, class B>
         if (const auto c = near ? support::halfspace_near<P, B>(r) : support::halfspace_random<P, B>(r)) cs.push_back(*c);
     auto truth = [](const std::pair<P, B>& c) { return oracle::lp_intersect(support::lp(c.first), support::lp(c.second)); };
     tiers(pair, dist, cs, truth, [](auto tier, const std::pair<P, B>& c) { return intersects<decltype(tier)>(c.first, c.second); });
+    return cs;
+}
+// A ball against a half-space set (testkit/ball_halfspace_cases.hpp: a ball tangent at a face, an
+// edge or a vertex, or random), the exact QP as truth (a case it declines is drawn again).
+template <class P>
+[[gnu::noinline]] std::vector<std::pair<P, sphere3>> ball_tiers(const std::string& pair, bool near) {
+    support::rng r = set_rng(near);
+    std::vector<std::pair<P, sphere3>> cs;
+    std::vector<bool> truth;
+    while (cs.size() < set_size)
+        if (const auto c = near ? support::ball_near<P>(r) : support::ball_random<P>(r))
+            if (const auto t = oracle::qp_ball_meets(support::lp(c->first), support::a3(c->second.center), c->second.radius))
+                cs.push_back(*c), truth.push_back(*t);
+    std::size_t i = 0; // the truths in the order tiers() asks for them
+    tiers(
+        pair, near ? "near_degenerate" : "random", cs, [&](const std::pair<P, sphere3>&) { return bool(truth[i++]); },
+        [](auto tier, const std::pair<P, sphere3>& c) { return intersects<decltype(tier)>(c.first, c.second); });
     return cs;
 }
 inline void obb_arrays(const obb3& b, double* c, double* a, double* h) {

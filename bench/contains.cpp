@@ -95,6 +95,14 @@ void halfspace_contains(const std::string& pair, bool near) {
         [](const P& a, const B& b) { return support::contained_truth(a, b); });
 }
 
+// contains(P, ball) on testkit/ball_halfspace_cases.hpp's cases, the ball in every row (rationals) as truth.
+template <class P>
+void ball_contains(const std::string& pair, bool near) {
+    contains_tiers<P, sphere3>(
+        pair, near, [](support::rng& r, bool nr) { return nr ? support::ball_near<P>(r) : support::ball_random<P>(r); },
+        [](const P& a, const sphere3& s) { return oracle::ball_in_rows(support::lp(a), support::a3(s.center), s.radius); });
+}
+
 // contains(a, b) on the audit's cases of the pair (A, B) or (B, A) (testkit/generators.hpp): random
 // at separation 2^0 (b moved by the objects' size from touching), near-degenerate at 1 ulp. The
 // truth is the exact tier, checked against the oracle by the pair's test.
@@ -201,6 +209,9 @@ void register_contains(bool near) {
     kdop_contains<14, triangle3>("kdop_triangle", near);
     kdop_contains<26, tetrahedron3>("kdop_tetrahedron", near);
     halfspace_contains<frustum3, point3>("frustum_point", near);
+    ball_contains<frustum3>("frustum_sphere", near);
+    ball_contains<convex_polyhedron3>("convex_polyhedron_sphere", near);
+    ball_contains<kdop<14>>("kdop_sphere_14", near);
     halfspace_contains<frustum3, triangle3>("frustum_triangle", near);
     halfspace_contains<convex_polyhedron3, segment3>("convex_polyhedron_segment", near);
     halfspace_contains<convex_polyhedron3, tetrahedron3>("convex_polyhedron_tetrahedron", near);

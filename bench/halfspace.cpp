@@ -1,6 +1,7 @@
 // Benchmarks: the k-DOP pairs and the half-space pairs (convex_polyhedron3, frustum3; against a box
 // or an oriented box also the frustum culling test (box only), the separating-axis and the
-// decomposition tests in double), the LP as truth.
+// decomposition tests in double), the LP as truth; a ball against them (frustum_sphere with the
+// classic plane-by-plane culling test beside it), the exact QP as truth.
 #include "bench.hpp"
 
 namespace bench {
@@ -44,6 +45,16 @@ void register_halfspace(bool near) {
     halfspace_tiers<frustum3, kdop<26>>("frustum_kdop_26", near);
     halfspace_tiers<convex_polyhedron3, aabb3>("aabb_convex_polyhedron", near);
     halfspace_tiers<convex_polyhedron3, obb3>("convex_polyhedron_obb", near);
+    ball_tiers<convex_polyhedron3>("convex_polyhedron_sphere", near);
+    ball_tiers<kdop<14>>("kdop_sphere_14", near);
+    ball_tiers<kdop<26>>("kdop_sphere_26", near);
+    {
+        const auto cs = ball_tiers<frustum3>("frustum_sphere", near);
+        std::vector<bool> t;
+        for (const auto& c : cs) t.push_back(intersects(c.first, c.second)); // the exact tier, checked against the QP above
+        reg(std::string("plane_culling/intersects/frustum_sphere/") + (near ? "near_degenerate" : "random"), cs, t, check::approximate,
+            [](const std::pair<frustum3, sphere3>& c) { return method::frustum_sphere_planes(c.first, c.second); });
+    }
     {
         const auto cs = halfspace_tiers<frustum3, obb3>("frustum_obb", near);
         std::vector<bool> t;

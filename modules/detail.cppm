@@ -5,6 +5,7 @@
 export module incidence.detail;
 import incidence.arith;
 export import :exactly;
+export import :engines.ball_halfspaces;
 export import :engines.box;
 export import :engines.box_triangle;
 export import :engines.clip;

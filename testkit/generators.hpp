@@ -666,6 +666,14 @@ struct near_boundary<kdop<14>, obb3> {
     }
 };
 template <>
+struct near_boundary<kdop<14>, sphere3> {
+    static std::pair<kdop<14>, sphere3> touching(rng& r) { // centred out along d_s, its radius the distance (rounded)
+        const auto t = touching_kdop(r);
+        const double k = r.integer(1, 200);
+        return {t.box, sphere3{t.p + t.o * k, k * std::sqrt(dot(t.o, t.o))}};
+    }
+};
+template <>
 struct near_boundary<aabb3, kdop<14>> {
     static std::pair<aabb3, kdop<14>> touching(rng& r) { // a box with its corner at p, outwards
         const auto t = touching_kdop(r);
@@ -824,6 +832,9 @@ struct near_boundary<P, B> {
         } else if constexpr (std::is_same_v<B, plane3>) { // the face's plane through p, either orientation
             const vec3 n = t.o * (r.coin() ? double(r.integer(1, 3)) : -double(r.integer(1, 3)));
             return {t.shape, plane3{n, dot(n, t.p - point3{0, 0, 0})}};
+        } else if constexpr (std::is_same_v<B, sphere3>) { // centred out along the face normal, its radius the distance (rounded)
+            const double k = r.integer(1, 60);
+            return {t.shape, sphere3{t.p + t.o * k, k * std::sqrt(dot(t.o, t.o))}};
         } else { // through p, in the face's plane
             vec3 d = cross(t.o, int_vec(r, 8));
             if (d.x == 0 && d.y == 0 && d.z == 0) d = cross(t.o, vec3{1, 2, 3});

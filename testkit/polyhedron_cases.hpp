@@ -124,8 +124,9 @@ inline incidence::point3 extreme(const std::vector<incidence::point3>& pts, inci
 // Half-spaces kept as protos (a normal and a point on the plane) until the transform moves them.
 struct halfspace_set {
     std::vector<plane_proto> planes;
-    incidence::point3 X;    // where the other shape is placed
-    incidence::vec3 face{}; // the normal of a face through X (zero: none)
+    incidence::point3 X;                  // where the other shape is placed
+    incidence::vec3 face{};               // the normal of a face through X (zero: none)
+    std::vector<incidence::point3> spots; // points of the set in small dyadics, most on its boundary (balls touch there)
 };
 inline incidence::convex_polyhedron3 realise_polyhedron(const halfspace_set& h, transform& tr) {
     incidence::convex_polyhedron3 c{};
@@ -165,6 +166,7 @@ inline halfspace_set polyhedron_near_set(rng& r) {
     const auto s = static_cast<std::size_t>(r.integer(0, m - 1));
     h.X = r.integer(0, 5) == 0 ? pts[0] : h.planes[s].x;
     h.face = h.planes[s].n;
+    h.spots = pts;
     return h;
 }
 inline halfspace_set polyhedron_random_set(rng& r) {
@@ -229,6 +231,13 @@ inline halfspace_set frustum_near_set(rng& r) {
         h.face = h.planes[5].n;
         break; // a near or far edge
     }
+    for (const double d : {zn, zf}) // the corners, the near and far faces' centres and edge midpoints
+        for (int i = 0; i < 4; ++i) {
+            const point3 c = corner(d, i & 1, i & 2);
+            h.spots.push_back(c);
+            h.spots.push_back(mid(c, corner(d, !(i & 1), !(i & 2))));
+            h.spots.push_back(mid(c, corner(d, !(i & 1), i & 2)));
+        }
     return h;
 }
 

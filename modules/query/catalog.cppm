@@ -30,6 +30,9 @@ struct alternative {
     const char* name;   // short identifier, e.g. "moller_trumbore"
     const char* source; // paper or book
     bool (*test)(const A&, const B&);
+    // A culling test: it may keep a pair that misses (a yes where the answer is no) by design, far
+    // from the boundary too; it never drops one that meets. Tests check only its no.
+    bool keeps_misses = false;
 };
 
 template <class A, class B, std::size_t N>
@@ -60,6 +63,12 @@ inline constexpr std::tuple families{
     family<sphere3, sphere3, 0>{"sphere_sphere", "intersects/sphere_pairs", "spheres_boxes", 0x1p-40, "exact squared distances over Epeck (testkit/oracle/cgal_oracle.cpp)", "signs in double", {}},
     family<aabb3, point3, 0>{"aabb_point", "intersects/box_pairs", "spheres_boxes", 0, "CGAL Epeck (testkit/oracle/cgal_oracle.cpp)", "signs in double", {}},
     family<aabb3, sphere3, 0>{"aabb_sphere", "intersects/sphere_pairs", "spheres_boxes", 0x1p-40, "exact squared distances over Epeck (testkit/oracle/cgal_oracle.cpp)", "signs in double", {}},
+    // A ball against half-spaces (engines/ball_halfspaces.cppm): the projection's active set.
+    family<convex_polyhedron3, sphere3, 0>{"convex_polyhedron_sphere", "intersects/sphere_pairs", "spheres_boxes", 0x1p-40, "exact QP (squared distance), CGAL QP_solver over Gmpzf (testkit/oracle/cgal_lp.cpp)", "signs in double", {}},
+    family<frustum3, sphere3, 1>{"frustum_sphere", "intersects/sphere_pairs", "spheres_boxes", 0x1p-40, "exact QP (squared distance), CGAL QP_solver over Gmpzf (testkit/oracle/cgal_lp.cpp)", "signs in double",
+        {{{"plane_culling", "the ball against each plane alone (Akenine-Moeller et al., Real-Time Rendering, 4th ed., chapter 22): keeps balls near the corners that miss",
+           [](const frustum3& f, const sphere3& s) { return method::frustum_sphere_planes(f, s); }, true}}}},
+    family<kdop<14>, sphere3, 0>{"kdop_sphere", "intersects/sphere_pairs", "spheres_boxes", 0x1p-40, "exact QP (squared distance), CGAL QP_solver over Gmpzf (testkit/oracle/cgal_lp.cpp)", "signs in double", {}},
     family<aabb3, aabb3, 0>{"aabb_aabb", "intersects/box_pairs", "spheres_boxes", 0, "CGAL Epeck (testkit/oracle/cgal_oracle.cpp)", "signs in double", {}},
     family<ray3, sphere3, 2>{"ray_sphere", "intersects/sphere_pairs", "spheres_boxes", 0x1p-40, "exact squared distances over Epeck (testkit/oracle/cgal_oracle.cpp)", "geometric (Akenine-Moeller et al., Real-Time Rendering)",
         {{{"geometric", "Akenine-Moeller et al., Real-Time Rendering, optimized geometric method",
@@ -250,6 +259,7 @@ template <class A, class B>
 using containment = family<A, B, 0>;
 inline constexpr const char* lp = "exact LP, CGAL QP_solver over Gmpzf (testkit/oracle/cgal_lp.cpp)";
 inline constexpr const char* epeck = "CGAL Epeck (testkit/oracle/cgal_oracle.cpp)";
+inline constexpr const char* rows_rational = "the ball in each half-space, in rationals (testkit/oracle/cgal_lp.cpp)";
 // clang-format off: one row per family, as the table reads
 inline constexpr std::tuple containments{
     containment<aabb3, aabb3>{"aabb_aabb", "contains/box_pairs", "spheres_boxes", 0, epeck, "comparisons (exact)", {}},
@@ -270,6 +280,9 @@ inline constexpr std::tuple containments{
     containment<sphere3, obb3>{"obb_sphere", "contains/sphere_pairs", "spheres_boxes", 0x1p-40, lp, "signs in double", {}},
     containment<sphere3, point3>{"point_sphere", "contains/sphere_pairs", "spheres_boxes", 0x1p-40, epeck, "signs in double", {}},
     containment<sphere3, sphere3>{"sphere_sphere", "contains/sphere_pairs", "spheres_boxes", 0x1p-40, epeck, "signs in double", {}},
+    containment<convex_polyhedron3, sphere3>{"convex_polyhedron_sphere", "contains/sphere_pairs", "spheres_boxes", 0x1p-40, rows_rational, "signs in double", {}},
+    containment<frustum3, sphere3>{"frustum_sphere", "contains/sphere_pairs", "spheres_boxes", 0x1p-40, rows_rational, "signs in double", {}},
+    containment<kdop<14>, sphere3>{"kdop_sphere", "contains/sphere_pairs", "spheres_boxes", 0x1p-40, rows_rational, "signs in double", {}},
     containment<tetrahedron3, point3>{"point_tetrahedron", "contains/tetrahedron_pairs", "solids", 0x1p-40, epeck, "signs in double", {}},
     containment<tetrahedron3, segment3>{"segment_tetrahedron", "contains/tetrahedron_pairs", "solids", 0x1p-40, epeck, "signs in double", {}},
     containment<tetrahedron3, triangle3>{"tetrahedron_triangle", "contains/tetrahedron_pairs", "solids", 0x1p-40, epeck, "signs in double", {}},

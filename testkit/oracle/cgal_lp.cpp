@@ -326,6 +326,53 @@ std::optional<std::array<mpq_class, 3>> lp_point(const convex_set& s) {
     throw std::runtime_error("lp_point: no pricing strategy gave a verified answer");
 }
 
+std::optional<bool> qp_ball_meets(const convex_set& s, const std::array<double, 3>& c, double r) {
+    // minimise |x|^2 / 2 - c . x = (|x - c|^2 - |c|^2) / 2 over the set (x: variables 0, 1, 2)
+    program qp(CGAL::EQUAL, false, 0.0, false, 0.0);
+    int var = 3, row = 0;
+    add(qp, var, row, s);
+    for (int k = 0; k < 3; ++k) {
+        qp.set_d(k, k, 1.0); // CGAL's D is twice the quadratic form
+        qp.set_c(k, -c[static_cast<unsigned>(k)]);
+    }
+    const auto gmpq = [](const CGAL::Gmpzf& f) { // m 2^e, exactly
+        mpq_class q(mpz_class(f.man()));
+        if (f.exp() >= 0) mpq_mul_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(f.exp()));
+        else mpq_div_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(-f.exp()));
+        return q;
+    };
+    for (const auto pricing : {CGAL::QP_DANTZIG, CGAL::QP_PARTIAL_DANTZIG, CGAL::QP_BLAND}) {
+        CGAL::Quadratic_program_options options;
+        options.set_pricing_strategy(pricing);
+        auto sol = CGAL::solve_quadratic_program(qp, CGAL::Gmpzf(), options);
+        if (!sol.solves_quadratic_program(qp)) continue; // CGAL's own certificate check
+        if (sol.is_infeasible()) return false;
+        if (!sol.is_optimal()) continue;
+        const auto v = sol.objective_value();
+        const mpq_class half = gmpq(v.numerator()) / gmpq(v.denominator());
+        const qpoint q = rational(c);
+        const mpq_class rr = mpq_class(r) * mpq_class(r);
+        return 2 * half + dot(q, q) <= rr;
+    }
+    return std::nullopt;
+}
+
+bool ball_in_rows(const convex_set& s, const std::array<double, 3>& c, double r) {
+    const qpoint q = rational(c);
+    const mpq_class rr = mpq_class(r) * mpq_class(r);
+    // n . c + |r| |n| <= bound: bound - n . c >= 0 and (bound - n . c)^2 >= r^2 |n|^2
+    auto within = [&](const std::array<double, 3>& n, double bound) {
+        const qpoint m = rational(n);
+        const mpq_class room = mpq_class(bound) - dot(m, q);
+        return sgn(room) >= 0 && room * room >= rr * dot(m, m);
+    };
+    for (const auto& h : s.halfspaces)
+        if (!within(h.n, h.offset)) return false;
+    for (const auto& sl : s.slabs)
+        if (!within(sl.n, sl.hi) || !within({-sl.n[0], -sl.n[1], -sl.n[2]}, -sl.lo)) return false;
+    return true;
+}
+
 bool lp_intersect(const convex_set& a, const convex_set& b) {
     if (const auto r = lp_intersect_verified(a, b)) return *r;
     throw std::runtime_error("lp_intersect: no pricing strategy gave a verified answer");

@@ -81,6 +81,13 @@ struct convex_set {
 // 2^-1030 .. 2^1020 together); lp_intersect_verified returns std::nullopt then.
 bool lp_intersect(const convex_set& a, const convex_set& b);
 std::optional<bool> lp_intersect_verified(const convex_set& a, const convex_set& b);
+// Does the ball |x - c| <= |r| meet the set? The exact minimum of |x - c|^2 over it (CGAL's
+// QP_solver over Gmpzf, the solution accepted once CGAL's certificate check does), compared with
+// r^2 in rationals; std::nullopt when every pricing strategy's answer is rejected.
+std::optional<bool> qp_ball_meets(const convex_set& s, const std::array<double, 3>& c, double r);
+// Is that ball inside every half-space and slab of s (given by those alone)? n . c + |r| |n| <= bound
+// for each side, in rationals.
+bool ball_in_rows(const convex_set& s, const std::array<double, 3>& c, double r);
 
 // A point, segment, ray, line, plane or triangle (cgal_flat.cpp), for the pairs among them: v holds
 // a point's 3 values, a segment's end points, a ray's or line's origin and direction, a plane's

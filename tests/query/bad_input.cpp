@@ -282,6 +282,15 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
         every_tier(kd2, ob, yes);
         yes += contains(cp, ob) + contains(fr, ob) + contains(kd, ob);
         n += 29 * 5 + 15;
+        // a ball against the half-space sets
+        every_tier(cp, ball, yes);
+        every_tier(ball, fr, yes);
+        every_tier(kd2, ball, yes);
+        every_contains(cp, ball, yes);
+        every_contains(fr, ball, yes);
+        every_contains(kd, ball, yes);
+        yes += method::frustum_sphere_planes(fr, ball);
+        n += 6 * 5 + 1;
         // in the plane
         auto p2 = [&] { return point2{special(r), special(r)}; };
         auto v2 = [&] { return vec2{special(r), special(r)}; };

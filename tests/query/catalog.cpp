@@ -12,7 +12,8 @@
 //   fuzzers        every family's fuzzer is a harness of fuzz/CMakeLists.txt; every pair harness
 //                  runs some family (the predicate's, the bounding volumes' and the scenes' run none);
 //   approximate    each yes/no family's alternatives and signs_in_double agree with the exact tier
-//                  on clear-cut cases (far apart, deep inside), where no floating-point method errs.
+//                  on clear-cut cases (far apart, deep inside), where no floating-point method errs
+//                  (a culling test, keeps_misses, may keep a pair that misses: only its no counts).
 // The benchmarks are checked by tools/pair_table (its CMakeLists.txt's bench_pairs_match_catalog),
 // docs/pairs.md by docs_pairs_is_generated.
 #include <catch2/catch_test_macros.hpp>
@@ -233,7 +234,7 @@ template <class F>
         ++checked;
         if (catalog::signs_in_double(a, b) != e) ++wrong;
         for (const auto& alt : f.alternatives)
-            if (alt.test(a, b) != e) ++wrong, std::printf("  %s %s disagrees\n", f.name, alt.name);
+            if (alt.test(a, b) != e && !(alt.keeps_misses && !e)) ++wrong, std::printf("  %s %s disagrees\n", f.name, alt.name);
     }
 }
 } // namespace

@@ -1,4 +1,6 @@
 // contains: sphere_pairs
+module;
+#include <array>
 export module incidence.detail:contains.sphere_pairs;
 import incidence.core;
 import incidence.arith;
@@ -11,6 +13,9 @@ import :intersects.obb_pairs;
 import :contains.obb_pairs;
 import :engines.sphere;
 import :intersects.sphere_pairs;
+import :engines.kdop;
+import :engines.halfspace_slabs;
+import :engines.ball_halfspaces;
 import :exactly;
 
 export namespace incidence::detail {
@@ -137,6 +142,27 @@ template <class K>
     }) != sign::negative;
 }
 
+// contains(convex_polyhedron3 | frustum3 | kdop<K>, sphere3): the ball in every half-space
+// (ball_halfspaces.cppm; semantics of intersects/sphere_pairs.cppm: a set touching the ball from
+// inside holds it).
+
+template <class K>
+[[nodiscard]] constexpr bool contains(K& k, const convex_polyhedron3& p, const sphere3& s) {
+    if (!halfspaces::well_formed(p.planes.data(), p.count, convex_polyhedron3::capacity) || !ball::usable(s)) return false;
+    return ball_rows::inside(k, p.planes.data(), p.count, s);
+}
+template <class K>
+[[nodiscard]] constexpr bool contains(K& k, const frustum3& f, const sphere3& s) {
+    if (!halfspaces::well_formed(f.planes.data(), 6, 6) || !ball::usable(s)) return false;
+    return ball_rows::inside(k, f.planes.data(), 6, s);
+}
+template <class K, int N>
+[[nodiscard]] constexpr bool contains(K& k, const kdop<N>& b, const sphere3& s) {
+    if (!usable_kdop(b) || !ball::usable(s)) return false;
+    const std::array<plane3, N> rows = kdop_slabs::halfspaces(b);
+    return ball_rows::inside(k, rows.data(), N, s);
+}
+
 } // namespace incidence::detail
 
 // The exact tier's fallback, compiled once in the library (CMakeLists.txt generates the definitions).
@@ -147,4 +173,10 @@ extern template bool exactly<contains_body>(const obb3&, const sphere3&);
 extern template bool exactly<contains_body>(const sphere3&, const obb3&);
 extern template bool exactly<contains_body>(const sphere3&, const point3&);
 extern template bool exactly<contains_body>(const sphere3&, const sphere3&);
+extern template bool exactly<contains_body>(const convex_polyhedron3&, const sphere3&);
+extern template bool exactly<contains_body>(const frustum3&, const sphere3&);
+extern template bool exactly<contains_body>(const kdop<6>&, const sphere3&);
+extern template bool exactly<contains_body>(const kdop<14>&, const sphere3&);
+extern template bool exactly<contains_body>(const kdop<18>&, const sphere3&);
+extern template bool exactly<contains_body>(const kdop<26>&, const sphere3&);
 } // namespace incidence::detail

@@ -1,11 +1,15 @@
 // intersects: sphere_pairs
 module;
+#include <array>
 #include <optional>
 export module incidence.detail:intersects.sphere_pairs;
 import incidence.core;
 import incidence.arith;
 import incidence.shapes;
 import :engines.sphere;
+import :engines.kdop;
+import :engines.halfspace_slabs;
+import :engines.ball_halfspaces;
 import :exactly;
 
 export namespace incidence::detail {
@@ -89,6 +93,36 @@ template <class K>
     }) != sign::negative;
 }
 
+// convex_polyhedron3, frustum3 and kdop<K> against sphere3 (the closed ball): the half-space rows
+// of ball_halfspaces.cppm (a k-DOP's slabs as its 2 x K/2 rows, read exactly).
+// Semantics: the closed half-space set of convex_polyhedron_point.cppm (possibly empty or
+// unbounded), the frustum's view volume, the closed k-DOP; a non-finite number, a count outside
+// [0, capacity] or an empty k-DOP slab: no set, so no. Unchecked negative radii act as |r|.
+// Touching at a face, an edge or a vertex counts.
+
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const convex_polyhedron3& p, const sphere3& s) {
+    if (!halfspaces::well_formed(p.planes.data(), p.count, convex_polyhedron3::capacity) || !ball::usable(s)) return false;
+    return ball_rows::meets(k, p.planes.data(), p.count, s);
+}
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const frustum3& f, const sphere3& s) {
+    if (!halfspaces::well_formed(f.planes.data(), 6, 6) || !ball::usable(s)) return false;
+    return ball_rows::meets(k, f.planes.data(), 6, s);
+}
+template <int N>
+[[nodiscard]] constexpr bool usable_kdop(const kdop<N>& b) {
+    for (unsigned i = 0; i < N / 2; ++i)
+        if (!is_finite(b.min[i]) || !is_finite(b.max[i]) || b.min[i] > b.max[i]) return false;
+    return true;
+}
+template <class K, int N>
+[[nodiscard]] constexpr bool intersects(K& k, const kdop<N>& b, const sphere3& s) {
+    if (!usable_kdop(b) || !ball::usable(s)) return false;
+    const std::array<plane3, N> rows = kdop_slabs::halfspaces(b);
+    return ball_rows::meets(k, rows.data(), N, s);
+}
+
 } // namespace incidence::detail
 
 // The exact tier's fallback, compiled once in the library (CMakeLists.txt generates the definitions).
@@ -97,4 +131,10 @@ extern template bool exactly<intersects_body>(const aabb3&, const sphere3&);
 extern template bool exactly<intersects_body>(const point3&, const sphere3&);
 extern template bool exactly<intersects_body>(const ray3&, const sphere3&);
 extern template bool exactly<intersects_body>(const sphere3&, const sphere3&);
+extern template bool exactly<intersects_body>(const convex_polyhedron3&, const sphere3&);
+extern template bool exactly<intersects_body>(const frustum3&, const sphere3&);
+extern template bool exactly<intersects_body>(const kdop<6>&, const sphere3&);
+extern template bool exactly<intersects_body>(const kdop<14>&, const sphere3&);
+extern template bool exactly<intersects_body>(const kdop<18>&, const sphere3&);
+extern template bool exactly<intersects_body>(const kdop<26>&, const sphere3&);
 } // namespace incidence::detail

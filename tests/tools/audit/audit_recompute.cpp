@@ -1,6 +1,6 @@
 // Recomputes one point of the audit's stability curves independently of the audit's truth: the
 // same generated cases (tools/audit/generators.hpp, same seed streams), with the true answer
-// from CGAL Epeck instead of the exact tier. Prints one JSON object per level, one per line:
+// from CGAL Epeck (the exact LP or QP for the OBB, k-DOP and half-space pairs) instead of the exact tier. Prints one JSON object per level, one per line:
 //   {"family": ..., "level": L, "skipped": n, "methods": {"name": [cases, wrong, fp, fn], ...}}
 // Usage: audit_recompute SEED CASES FAMILY_INDEX LEVEL[,LEVEL...]   or   audit_recompute --families
 #include "testkit/oracle/cgal_oracle.hpp"
@@ -123,6 +123,16 @@ requires(std::is_same_v<A, obb3> || std::is_same_v<B, obb3> || std::is_same_v<A,
 int truth(const A& a, const B& b) {
     return oracle::lp_intersect(support::lp(a), support::lp(b));
 }
+
+// A ball against a half-space set: the exact QP (the squared distance from the centre) against r^2.
+template <class P>
+int ball_truth(const P& a, const sphere3& s) {
+    const auto t = oracle::qp_ball_meets(support::lp(a), support::a3(s.center), s.radius);
+    return t ? int(*t) : -1;
+}
+int truth(const frustum3& a, const sphere3& s) { return ball_truth(a, s); }
+int truth(const convex_polyhedron3& a, const sphere3& s) { return ball_truth(a, s); }
+int truth(const kdop<14>& a, const sphere3& s) { return ball_truth(a, s); }
 
 // The other flat pairs: CGAL Epeck (tests/oracle/cgal_flat.cpp).
 template <class A, class B>

@@ -1,0 +1,304 @@
+// sphere3 against a set of half-spaces n_i . x <= d_i: the test that convex_polyhedron_sphere,
+// frustum_sphere and kdop_sphere share (a k-DOP's slabs are such rows, exactly), and the ball in
+// such a set (contains).
+// Semantics: the closed ball |x - c| <= |r| (an unchecked negative radius acts as |r|, as in
+// point_sphere) and the closed half-space set, possibly empty or unbounded (a zero normal is all of
+// space when its offset is >= 0 and nothing otherwise). Touching counts.
+// Method (exact tiers): the ball meets P iff P is not empty and dist(c, P)^2 <= r^2. The point x*
+// of P nearest c is the projection of c onto the affine subspace of some set S of at most three
+// rows with independent normals (Karush-Kuhn-Tucker: c - x* = sum over S of l_i n_i, l_i >= 0;
+// Caratheodory leaves independent rows): with G = N_S N_S^T, e = N_S c - d_S, l = G^-1 e, and x*
+// in P. No such S: P is empty. With e_i = n_i . c - d_i (degree 2, each offset times a lifted 1 so
+// every sign is homogeneous):
+//   S = {}:      every e_i <= 0 (c in P): yes.
+//   S = {i}:     e_i >= 0; e_h |n_i|^2 - (n_h . n_i) e_i <= 0 for the other rows h; then
+//                r^2 |n_i|^2 - e_i^2 >= 0 decides (degree 4).
+//   S = {i, j}:  det = |n_i x n_j|^2 > 0; l' = (g e_i - b e_j, a e_j - b e_i) >= 0 (a = |n_i|^2,
+//                b = n_i . n_j, g = |n_j|^2); e_h det - (n_h . n_i) l'_i - (n_h . n_j) l'_j <= 0;
+//                then r^2 det - (l'_i e_i + l'_j e_j) >= 0 decides (degree 6).
+//   S = {i,j,l}: D = det(n_i, n_j, n_l) != 0, x* = V / D (V as in aabb_convex_polyhedron.cppm);
+//                (n_j x n_l) . (c D - V) >= 0 and its turns (l >= 0, degree 6); sign(d_h D - n_h . V)
+//                zero or sign(D) (degree 5); then r^2 D^2 - |c D - V|^2 >= 0 decides (degree 8).
+// Every S that the projection may use contains a row with e_i > 0 (its distance l . e is
+// positive), so only those are tried, those of rows c lies beyond alone first; first the set that
+// plain double names (the same search on rounded signs), then, if the kernel's signs refute it,
+// every set in turn. First, a row with the
+// whole ball beyond it (e_i > 0 and e_i^2 > r^2 |n_i|^2) says no.
+// contains: for every row, -e_i >= 0 and e_i^2 >= r^2 |n_i|^2 (degree 4): the ball is in each
+// half-space, so in P (and P is then not empty).
+// Source: Ericson, Real-Time Collision Detection (2005), section 5.1 (closest points, the
+// closest-feature case analysis by Voronoi regions); Boyd and Vandenberghe, Convex Optimization
+// (2004), section 5.5.3 (KKT conditions for the projection onto a polyhedron).
+// Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
+// magnitudes lie in [2^-500, 2^500], wrong only when a deciding sign is within 2^-40 of its
+// permanent (tests/query/intersects/frustum_sphere.cpp).
+module;
+#include <array>
+#include <type_traits>
+#include <utility>
+export module incidence.detail:engines.ball_halfspaces;
+import incidence.core;
+import incidence.arith;
+import incidence.shapes;
+
+export namespace incidence::detail {
+
+namespace ball_rows {
+
+inline constexpr unsigned most = 32; // the most rows: a convex polyhedron's capacity
+
+// The active set the projection of c onto the rows uses: n rows, at[0..n).
+struct active {
+    unsigned n = 0;
+    std::array<unsigned, 3> at{};
+};
+
+// What the search found: the projection's active set and its verdict, or no set (P is empty).
+struct found {
+    bool any = false;
+    active set;
+    bool meets = false;
+};
+
+template <class L>
+[[nodiscard]] constexpr auto excess(L l, const plane3& h, point3 c) { // e = n . c - d, times a lifted 1
+    return arith::dot(arith::lift(l, h.normal), arith::lift(l, c)) - l(h.offset) * l(1.0);
+}
+
+// The rows at hand: the finite planes, zero normals left out (each all of space or, with a negative
+// offset, nothing: `empty`).
+struct rows {
+    const plane3* p;
+    std::array<unsigned, most> at{};
+    unsigned n = 0;
+    bool empty = false;
+    constexpr rows(const plane3* planes, int m) : p(planes) {
+        for (unsigned i = 0; i < static_cast<unsigned>(m); ++i) {
+            const vec3 v = planes[i].normal;
+            if (v.x == 0.0 && v.y == 0.0 && v.z == 0.0) empty = empty || planes[i].offset < 0.0;
+            else at[n++] = i;
+        }
+    }
+    [[nodiscard]] constexpr const plane3& operator[](unsigned x) const { return p[at[x]]; }
+};
+
+// Is S = {i} (row indexes into r) the projection's active set? Then its verdict.
+template <class K>
+[[nodiscard]] constexpr found one_row(K& k, const rows& r, point3 c, double rad, unsigned i) {
+    const plane3 a = r[i];
+    for (unsigned h = 0; h < r.n; ++h) {
+        if (h == i) continue;
+        const plane3 b = r[h];
+        if (k.sgn([=](auto L) {
+                const auto na = arith::lift(L, a.normal), nb = arith::lift(L, b.normal);
+                return excess(L, b, c) * arith::dot(na, na) - arith::dot(nb, na) * excess(L, a, c);
+            }) == sign::positive)
+            return {};
+    }
+    const bool meets = k.sgn([=](auto L) {
+        const auto na = arith::lift(L, a.normal);
+        const auto e = excess(L, a, c);
+        return L(rad) * L(rad) * arith::dot(na, na) - e * e;
+    }) != sign::negative;
+    return {true, active{1, {i, 0, 0}}, meets};
+}
+
+template <class K>
+[[nodiscard]] constexpr found two_rows(K& k, const rows& r, point3 c, double rad, unsigned i, unsigned j) {
+    const plane3 a = r[i], b = r[j];
+    const auto gram = [=](auto L) {
+        const auto na = arith::lift(L, a.normal), nb = arith::lift(L, b.normal);
+        return std::array{arith::dot(na, na), arith::dot(na, nb), arith::dot(nb, nb)};
+    };
+    const auto det = [=](auto L) {
+        const auto w = arith::cross(arith::lift(L, a.normal), arith::lift(L, b.normal));
+        return arith::dot(w, w);
+    };
+    if (arith::is_zero<arith::hint::often_zero>(k, det)) return {}; // parallel normals
+    // l' = adj(G) e
+    const auto mult = [=](auto L) {
+        const auto g = gram(L);
+        const auto ea = excess(L, a, c), eb = excess(L, b, c);
+        return std::array{g[2] * ea - g[1] * eb, g[0] * eb - g[1] * ea};
+    };
+    if (k.sgn([=](auto L) { return mult(L)[0]; }) == sign::negative) return {};
+    if (k.sgn([=](auto L) { return mult(L)[1]; }) == sign::negative) return {};
+    for (unsigned h = 0; h < r.n; ++h) {
+        if (h == i || h == j) continue;
+        const plane3 o = r[h];
+        if (k.sgn([=](auto L) {
+                const auto l = mult(L);
+                const auto no = arith::lift(L, o.normal);
+                return excess(L, o, c) * det(L) - arith::dot(no, arith::lift(L, a.normal)) * l[0] -
+                       arith::dot(no, arith::lift(L, b.normal)) * l[1];
+            }) == sign::positive)
+            return {};
+    }
+    const bool meets = k.sgn([=](auto L) {
+        const auto l = mult(L);
+        return L(rad) * L(rad) * det(L) - (l[0] * excess(L, a, c) + l[1] * excess(L, b, c));
+    }) != sign::negative;
+    return {true, active{2, {i, j, 0}}, meets};
+}
+
+template <class K>
+[[nodiscard]] constexpr found three_rows(K& k, const rows& r, point3 c, double rad, unsigned i, unsigned j, unsigned l) {
+    const plane3 a = r[i], b = r[j], e = r[l];
+    // two parallel normals first (a camera frustum's near and far planes): their cross product is
+    // exactly zero in double, where the determinant's rounding may leave it open
+    for (const auto& [u, v] : {std::pair{a.normal, b.normal}, std::pair{b.normal, e.normal}, std::pair{a.normal, e.normal}})
+        if (arith::is_zero<arith::hint::often_zero>(k, [=](auto L) {
+                const auto w = arith::cross(arith::lift(L, u), arith::lift(L, v));
+                return arith::dot(w, w);
+            }))
+            return {};
+    const auto det = [=](auto L) { return arith::det3(arith::lift(L, a.normal), arith::lift(L, b.normal), arith::lift(L, e.normal)); };
+    const sign sd = arith::sgn<arith::hint::often_zero>(k, det);
+    if (sd == sign::zero) return {};
+    // V = d_a (n_b x n_e) + d_b (n_e x n_a) + d_e (n_a x n_b), each offset times a lifted 1
+    const auto vertex = [=](auto L) {
+        const auto na = arith::lift(L, a.normal), nb = arith::lift(L, b.normal), ne = arith::lift(L, e.normal);
+        const auto one = L(1.0);
+        return arith::scaled(arith::cross(nb, ne), L(a.offset) * one) + arith::scaled(arith::cross(ne, na), L(b.offset) * one) +
+               arith::scaled(arith::cross(na, nb), L(e.offset) * one);
+    };
+    const auto gap = [=](auto L) { return arith::scaled(arith::lift(L, c), det(L)) - vertex(L); }; // (c - x*) D
+    const vec3 turns[3][2] = {{b.normal, e.normal}, {e.normal, a.normal}, {a.normal, b.normal}};
+    for (const auto& t : turns) {
+        const vec3 u = t[0], v = t[1];
+        if (k.sgn([=](auto L) { return arith::dot(arith::cross(arith::lift(L, u), arith::lift(L, v)), gap(L)); }) == sign::negative)
+            return {};
+    }
+    for (unsigned h = 0; h < r.n; ++h) {
+        if (h == i || h == j || h == l) continue;
+        const plane3 o = r[h];
+        const sign s = k.sgn([=](auto L) { return L(o.offset) * L(1.0) * det(L) - arith::dot(arith::lift(L, o.normal), vertex(L)); });
+        if (s != sign::zero && s != sd) return {};
+    }
+    const bool meets = k.sgn([=](auto L) {
+        const auto g = gap(L);
+        const auto dd = det(L);
+        return L(rad) * L(rad) * (dd * dd) - arith::dot(g, g);
+    }) != sign::negative;
+    return {true, active{3, {i, j, l}}, meets};
+}
+
+// The set S as the kernel sees it, or no set.
+template <class K>
+[[nodiscard]] constexpr found try_set(K& k, const rows& r, point3 c, double rad, const active& s) {
+    switch (s.n) {
+    case 1: return one_row(k, r, c, rad, s.at[0]);
+    case 2: return two_rows(k, r, c, rad, s.at[0], s.at[1]);
+    default: return three_rows(k, r, c, rad, s.at[0], s.at[1], s.at[2]);
+    }
+}
+
+// Every set in turn (those with a row c lies beyond); `beyond[x]`: e_x > 0. First the sets of
+// rows c lies beyond alone (the nearest face, edge or vertex of a ball outside usually), then
+// those with some other row.
+template <class K>
+[[nodiscard]] constexpr found search(K& k, const rows& r, point3 c, double rad, const std::array<bool, most>& beyond) {
+    for (unsigned i = 0; i < r.n; ++i)
+        if (beyond[i])
+            if (const found f = one_row(k, r, c, rad, i); f.any) return f;
+    for (const bool all_beyond : {true, false}) {
+        const auto wanted = [&](unsigned i, unsigned j) { return all_beyond ? beyond[i] && beyond[j] : beyond[i] != beyond[j]; };
+        for (unsigned i = 0; i < r.n; ++i)
+            for (unsigned j = i + 1; j < r.n; ++j)
+                if (wanted(i, j))
+                    if (const found f = two_rows(k, r, c, rad, i, j); f.any) return f;
+    }
+    for (const bool all_beyond : {true, false}) {
+        const auto wanted = [&](unsigned i, unsigned j, unsigned l) {
+            const bool any = beyond[i] || beyond[j] || beyond[l], all = beyond[i] && beyond[j] && beyond[l];
+            return all_beyond ? all : any && !all;
+        };
+        for (unsigned i = 0; i < r.n; ++i)
+            for (unsigned j = i + 1; j < r.n; ++j)
+                for (unsigned l = j + 1; l < r.n; ++l)
+                    if (wanted(i, j, l))
+                        if (const found f = three_rows(k, r, c, rad, i, j, l); f.any) return f;
+    }
+    return {};
+}
+
+// The rows' side of c: beyond[x] iff e_x > 0; whether c is beyond some row with the whole ball
+// beyond it too (`apart`).
+struct sides {
+    std::array<bool, most> beyond{};
+    bool outside = false, apart = false;
+};
+template <class K>
+[[nodiscard]] constexpr sides sides_of(K& k, const rows& r, point3 c, double rad) {
+    sides s;
+    for (unsigned x = 0; x < r.n && !s.apart; ++x) {
+        const plane3 h = r[x];
+        if (k.sgn([=](auto L) { return excess(L, h, c); }) != sign::positive) continue;
+        s.beyond[x] = s.outside = true;
+        s.apart = k.sgn([=](auto L) {
+            const auto e = excess(L, h, c);
+            const auto n = arith::lift(L, h.normal);
+            return e * e - L(rad) * L(rad) * arith::dot(n, n);
+        }) == sign::positive;
+    }
+    return s;
+}
+
+// Does the ball meet the set of the m half-spaces (finite: the caller checks)?
+template <class K>
+[[nodiscard]] constexpr bool meets(K& k, const plane3* planes, int m, const sphere3& ball) {
+    const rows r(planes, m);
+    if (r.empty) return false;
+    const point3 c = ball.center;
+    const double rad = ball.radius;
+    const sides s = sides_of(k, r, c, rad);
+    if (s.apart) return false;
+    if (!s.outside) return true; // c in every half-space
+    if constexpr (!std::is_same_v<K, arith::approx_kernel>) {
+        // the set that plain double names, proven by k's signs
+        arith::approx_kernel a;
+        const sides guess_sides = sides_of(a, r, c, rad);
+        if (const found g = search(a, r, c, rad, guess_sides.beyond); g.any)
+            if (const found f = try_set(k, r, c, rad, g.set); f.any) return f.meets;
+    }
+    return search(k, r, c, rad, s.beyond).meets; // no set: the rows are empty
+}
+
+// Is the ball inside each of the m half-spaces (finite: the caller checks)?
+template <class K>
+[[nodiscard]] constexpr bool inside(K& k, const plane3* planes, int m, const sphere3& ball) {
+    for (unsigned x = 0; x < static_cast<unsigned>(m); ++x) {
+        const plane3 h = planes[x];
+        const point3 c = ball.center;
+        const double rad = ball.radius;
+        if (k.sgn([=](auto L) { return excess(L, h, c); }) == sign::positive) return false;
+        if (k.sgn([=](auto L) {
+                const auto e = excess(L, h, c);
+                const auto n = arith::lift(L, h.normal);
+                return e * e - L(rad) * L(rad) * arith::dot(n, n);
+            }) == sign::negative)
+            return false;
+    }
+    return true;
+}
+
+} // namespace ball_rows
+
+// The classic culling test, an alternative to frustum_sphere (method::frustum_sphere_planes): the
+// ball is culled when it lies wholly beyond one of the six planes, n . c - d > |r| |n|, in plain
+// double. It keeps balls near the frustum's edges and corners that miss it (no plane alone has them
+// beyond), and decides within rounding near each plane.
+// Source: Akenine-Moeller, Haines, Hoffman et al., Real-Time Rendering, 4th ed. (2018), chapter 22
+// (frustum/sphere intersection).
+[[nodiscard]] constexpr bool frustum_sphere_planes(const frustum3& f, const sphere3& s) {
+    if (!is_finite(s.center) || !is_finite(s.radius)) return false;
+    const double rad = s.radius < 0.0 ? -s.radius : s.radius;
+    for (const plane3& h : f.planes) {
+        if (!is_finite(h.normal) || !is_finite(h.offset)) return false;
+        const double e = dot(h.normal, s.center - point3{0, 0, 0}) - h.offset;
+        if (e > rad * arith::sqrt(dot(h.normal, h.normal))) return false;
+    }
+    return true;
+}
+
+} // namespace incidence::detail
