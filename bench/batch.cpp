@@ -8,7 +8,8 @@
 // (ray_aabbs, ray_spheres; and its first hit among them, <tier>/batch_intersection/ray_aabbs and
 // ray_spheres beside <tier>/scalar_loop_intersection/...); boxes against a frustum (frustum_aabbs, and the classic culling test's
 // loop, approximate/method_culling_loop/frustum_aabbs) and oriented boxes against it
-// (frustum_obbs); oriented boxes against one box (aabb_obbs). The triangles in every tier,
+// (frustum_obbs) and balls (frustum_spheres, and the classic test's loop); oriented boxes against
+// one box (aabb_obbs). The triangles in every tier,
 // beside the loop over the scalar query that it replaces, on each SIMD target the processor has:
 //   <tier>/batch_intersects/ray_triangles/<dist>              the dispatched (best) target
 //   <tier>/batch_intersects/ray_triangles_<TARGET>/<dist>     one target (AVX3 = AVX-512, AVX2, SSE4)
@@ -637,6 +638,31 @@ std::vector<std::pair<frustum3, std::vector<aabb3>>> frustum_boxes_set(bool near
     }
     return out;
 }
+// Balls from a set's boxes: centred at each box's middle, radius half its extent (random); near
+// each box's plane point p, a ball centred out along the plane's unit normal by its radius, so
+// tangent to the plane at p (rounded; often the frustum's face, else beyond an edge or a corner).
+std::vector<std::pair<frustum3, std::vector<sphere3>>> balls_of(const std::vector<std::pair<frustum3, std::vector<aabb3>>>& sets,
+                                                                bool near) {
+    std::vector<std::pair<frustum3, std::vector<sphere3>>> out;
+    for (const auto& [f, boxes] : sets) {
+        std::vector<sphere3> balls;
+        for (const aabb3& b : boxes) {
+            const double e = 0.5 * (b.max.x - b.min.x);
+            const point3 m{0.5 * (b.min.x + b.max.x), 0.5 * (b.min.y + b.max.y), 0.5 * (b.min.z + b.max.z)};
+            if (!near) {
+                balls.push_back(sphere3{m, e});
+                continue;
+            }
+            const plane3& h = f.planes[static_cast<unsigned>(irand(0, 5))];
+            const double t = (dot(h.normal, m - point3{0, 0, 0}) - h.offset) / dot(h.normal, h.normal);
+            const point3 q = m - h.normal * t;
+            const vec3 u = h.normal * (1.0 / std::sqrt(dot(h.normal, h.normal)));
+            balls.push_back(sphere3{np(q.x + u.x * e, q.y + u.y * e, q.z + u.z * e), e});
+        }
+        out.emplace_back(f, std::move(balls));
+    }
+    return out;
+}
 // Oriented boxes from a set's boxes: each box's centre and extents, its axes a random rotation
 // (`turned`; frustum_obbs: the near set's box, whose corner touches a plane before the rotation,
 // so rotated about its centre it reaches across) or the unit axes in a random signed order (the
@@ -669,15 +695,18 @@ std::vector<std::pair<One, std::vector<obb3>>> obbs_of(const std::vector<std::pa
     }
     return out;
 }
-// The classic culling test in double (method::aabb_frustum_culling: plane rejection alone, not a
-// tier: it says yes for boxes beyond an edge or corner) over the same sets, for comparison.
-void reg_culling_method(const std::string& name, const std::vector<std::pair<frustum3, std::vector<aabb3>>>& sets) {
-    benchmark::RegisterBenchmark(name.c_str(), [sets](benchmark::State& st) {
+// A classic culling test in double over the same sets, for comparison: a box's plane rejection
+// (method::aabb_frustum_culling), a ball beyond one plane (method::frustum_sphere_planes); not a
+// tier: each says yes for some shapes beyond an edge or corner.
+template <class Many>
+void reg_culling_method(const std::string& name, const std::vector<std::pair<frustum3, std::vector<Many>>>& sets,
+                        bool (*keeps)(const frustum3&, const Many&)) {
+    benchmark::RegisterBenchmark(name.c_str(), [sets, keeps](benchmark::State& st) {
         std::vector<std::uint8_t> out(sets.front().second.size());
         std::size_t k = 0;
         for (auto _ : st) {
-            const auto& [f, boxes] = sets[k];
-            for (std::size_t i = 0; i < out.size(); ++i) out[i] = method::aabb_frustum_culling(boxes[i], f) ? 1 : 0;
+            const auto& [f, many] = sets[k];
+            for (std::size_t i = 0; i < out.size(); ++i) out[i] = keeps(f, many[i]) ? 1 : 0;
             benchmark::ClobberMemory();
             if (++k == sets.size()) k = 0;
         }
@@ -721,8 +750,13 @@ void register_batch(bool near) {
     reg_first_solid_tiers("ray_spheres", dist, ray_balls);
     const auto culling = frustum_boxes_set(near);
     reg_one_many_tiers("frustum_aabbs", dist, culling);
-    reg_culling_method("approximate/method_culling_loop/frustum_aabbs/" + dist, culling);
+    reg_culling_method<aabb3>("approximate/method_culling_loop/frustum_aabbs/" + dist, culling,
+                              [](const frustum3& f, const aabb3& b) { return method::aabb_frustum_culling(b, f); });
     reg_one_many_tiers("frustum_obbs", dist, obbs_of(culling, true));
+    const auto balls = balls_of(culling, near);
+    reg_one_many_tiers("frustum_spheres", dist, balls);
+    reg_culling_method<sphere3>("approximate/method_culling_loop/frustum_spheres/" + dist, balls,
+                                [](const frustum3& f, const sphere3& b) { return method::frustum_sphere_planes(f, b); });
     reg_one_many_tiers("aabb_obbs", dist, obbs_of(solids_set<aabb3, aabb3>(near), !near));
 }
 

@@ -7,7 +7,12 @@
 // and both spheres against five boxes and five balls of the same doubles, the ray against those,
 // and six rays of the same doubles against each box and ball, on a SIMD target the first byte
 // picks, every lane equal to the scalar answer in every tier; and the ray's first hit among those
-// boxes and balls (batches.hpp, first_hit_contracts). Any finding aborts.
+// boxes and balls (batches.hpp, first_hit_contracts). And a ball against half-spaces
+// (frustum_sphere, convex_polyhedron_sphere, kdop_sphere): a frustum, a polyhedron of 1 to 6 planes
+// and a 14-DOP from the doubles, every tier on any bits, and the culling batch of five balls against
+// the frustum (byte 3 picks the target); on finite ones, one of the three (byte 2)
+// against the exact QP (the squared distance to the set) and contains against the rows in
+// rationals. Any finding aborts.
 #include "testkit/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <cmath>
@@ -17,6 +22,7 @@
 import incidence;
 #include "contracts.hpp"
 #include "batches.hpp"
+#include "testkit/lp_shapes.hpp"
 
 using namespace incidence;
 
@@ -77,6 +83,29 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         for (const aabb3& one : {b1, b2}) batch_contracts(one, std::span<const ray3>(rays), pick);
         for (const sphere3& one : {s1, s2}) batch_contracts(one, std::span<const ray3>(rays), pick);
     }
+    // A ball against half-spaces: a frustum, a polyhedron of 1 to 6 planes (byte 1) and a 14-DOP
+    // (each slab the two doubles i and i + 7 in order), every tier on any bits.
+    frustum3 fr{};
+    for (unsigned i = 0; i < 6; ++i)
+        fr.planes[i] = plane3{{v[(4 * i) % 16], v[(4 * i + 1) % 16], v[(4 * i + 2) % 16]}, v[(4 * i + 3) % 16]};
+    convex_polyhedron3 cp{};
+    cp.count = size < 2 ? 1 : 1 + data[1] % 6;
+    for (unsigned i = 0; i < static_cast<unsigned>(cp.count); ++i)
+        cp.planes[i] = plane3{{v[(3 * i + 5) % 16], v[(3 * i + 6) % 16], v[(3 * i + 7) % 16]}, v[(5 * i + 2) % 16]};
+    kdop<14> kd{};
+    for (unsigned i = 0; i < 7; ++i) kd.min[i] = std::fmin(v[i], v[i + 7]), kd.max[i] = std::fmax(v[i], v[i + 7]);
+    {
+        const sphere3 many[5] = {s1, s2, {p, r2}, {q, r1}, {c, std::fabs(r1) + std::fabs(r2)}};
+        batch_contracts(fr, std::span<const sphere3>(many), size < 4 ? 0 : data[3]); // the culling batch
+    }
+    for (const sphere3& s : {s1, s2}) {
+        (void)intersects<approximate>(fr, s);
+        (void)intersects<conservative>(s, cp);
+        (void)classify(kd, s);
+        (void)contains<aggressive>(fr, s);
+        (void)contains<approximate>(kd, s);
+        (void)method::frustum_sphere_planes(fr, s);
+    }
     // Every tier and every find must finish on any bits.
     (void)intersects<approximate>(ray, s1);
     (void)intersects<approximate>(b1, ray);
@@ -111,6 +140,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     contracts(p, a, oracle::point_in_ball(P, C, a.radius));
     contracts(a, b, oracle::ball_ball(C, a.radius, E, b.radius));
     if (contains(a, b) != oracle::ball_contains_ball(C, a.radius, E, b.radius)) std::abort();
+    // the ball against the half-spaces: the exact QP (one set per input, byte 2), the rows in rationals
+    {
+        const auto ball = [&](const auto& set) {
+            for (const sphere3& s : {s1, a}) {
+                if (const auto t = oracle::qp_ball_meets(support::lp(set), support::a3(s.center), s.radius)) contracts(set, s, *t);
+                contains_contracts_with(set, s, oracle::ball_in_rows(support::lp(set), support::a3(s.center), s.radius));
+            }
+        };
+        switch (size < 3 ? 0 : data[2] % 3) {
+        case 0: ball(fr); break;
+        case 1: ball(cp); break;
+        default: ball(kd); break;
+        }
+    }
     const aabb3 box = ordered(c, e), other = ordered(p, q);
     double mn[3], mx[3], omn[3], omx[3];
     arr(box.min, mn);

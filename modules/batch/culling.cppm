@@ -1,6 +1,7 @@
 // Many boxes against one frustum (view-frustum culling): batch::intersects<Tier>(frustum, boxes,
 // out) and batch::intersects<Tier>(boxes, frustum, out), for boxes as an array of aabb3 or a
-// structure-of-arrays packet (boxes_soa), and oriented boxes as obb3 or obbs_soa. out[i] is 1 where boxes[i] meets the closed view volume,
+// structure-of-arrays packet (boxes_soa), oriented boxes as obb3 or obbs_soa, and balls as sphere3 or
+// spheres_soa. out[i] is 1 where boxes[i] meets the closed view volume,
 // else 0: the answer of the scalar intersects<Tier>(frustum, boxes[i]), bit for bit, in every tier
 // (tests/batch/culling.cpp checks it on every SIMD target).
 // Method (culling_simd.cpp): the culling test's two outcomes in lanes (Assarsson and Moeller,
@@ -12,7 +13,10 @@
 // frustum's edges or corners that no stage decides (or whose sign the filter cannot prove) goes
 // to the scalar query, whose exact linear program decides. An oriented box: the first two stages
 // only, as its scalar query has them (a plane with the box's least value beyond it, degree 3; the
-// centre inside every plane, degree 2).
+// centre inside every plane, degree 2). A ball: the first stage of its scalar query (the centre
+// inside every plane says yes, degree 2; a plane with the whole ball beyond it says no, degree 4);
+// the rest, a ball near the frustum's faces, edges and corners, to the scalar query's search for
+// its nearest point (engines/ball_halfspaces.cppm).
 module;
 #include <cstddef>
 #include <cstdint>
@@ -38,6 +42,8 @@ void frustum_boxes(const double* planes, const double* edges, int edge_count, co
                    std::uint8_t* out);
 // obbs: fifteen arrays of n (centre x, y, z, axis 0 x, y, z, axis 1, axis 2, half extents 0, 1, 2).
 void frustum_obbs(const double* planes, const double* const* obbs, std::size_t n, bool filter, std::uint8_t* out);
+// balls: four arrays of n (centre x, y, z, radius).
+void frustum_balls(const double* planes, const double* const* balls, std::size_t n, bool filter, std::uint8_t* out);
 } // namespace incidence::batch::simd
 }
 
@@ -58,6 +64,12 @@ std::size_t culling_block(const frustum3& f, const double* const* boxes, std::si
         std::memset(out, 2, n); // no set: the scalar query says so without a sign
     } else if constexpr (std::is_same_v<Box, obb3>) {
         simd::frustum_obbs(planes, boxes, n, !std::is_same_v<Tier, approximate>, out);
+    } else if constexpr (std::is_same_v<Box, sphere3>) {
+        bool zero_normal = false; // a plane the scalar query leaves out (all of space, or none): to the scalar query
+        for (unsigned p = 0; p < 6; ++p)
+            zero_normal = zero_normal || (planes[4 * p] == 0.0 && planes[4 * p + 1] == 0.0 && planes[4 * p + 2] == 0.0);
+        if (zero_normal) std::memset(out, 2, n);
+        else simd::frustum_balls(planes, boxes, n, !std::is_same_v<Tier, approximate>, out);
     } else {
         // the implied planes, in the kernel of the scalar query's first pass
         const auto implied = [&] {
@@ -137,6 +149,24 @@ template <tier Tier = exact>
 template <tier Tier = exact>
 [[nodiscard]] result<std::size_t> intersects(const obbs_soa& boxes, const frustum3& f, std::span<std::uint8_t> out) {
     return detail::culling<Tier>(f, boxes, out);
+}
+
+// Does each ball meet the frustum? The same way, balls as sphere3 or spheres_soa.
+template <tier Tier = exact>
+[[nodiscard]] result<std::size_t> intersects(const frustum3& f, std::span<const sphere3> balls, std::span<std::uint8_t> out) {
+    return detail::culling<Tier>(f, balls, out);
+}
+template <tier Tier = exact>
+[[nodiscard]] result<std::size_t> intersects(const frustum3& f, const spheres_soa& balls, std::span<std::uint8_t> out) {
+    return detail::culling<Tier>(f, balls, out);
+}
+template <tier Tier = exact>
+[[nodiscard]] result<std::size_t> intersects(std::span<const sphere3> balls, const frustum3& f, std::span<std::uint8_t> out) {
+    return detail::culling<Tier>(f, balls, out);
+}
+template <tier Tier = exact>
+[[nodiscard]] result<std::size_t> intersects(const spheres_soa& balls, const frustum3& f, std::span<std::uint8_t> out) {
+    return detail::culling<Tier>(f, balls, out);
 }
 
 } // namespace incidence::batch

@@ -1,5 +1,5 @@
-// Boxes against one frustum (or any six half-spaces), in SIMD lanes: the kernel behind
-// batch::intersects(frustum, boxes) (modules/batch/culling.cppm declares it). Highway compiles this
+// Boxes and balls against one frustum (or any six half-spaces), in SIMD lanes: the kernels behind
+// batch::intersects(frustum, boxes | obbs | balls) (modules/batch/culling.cppm declares it). Highway compiles this
 // file once per target and dispatches at run time, as ray_triangles_simd.cpp.
 //
 // A lane does the three stages of the scalar query (halfspaces::box_meets in
@@ -328,6 +328,57 @@ void frustum_obb(const double* planes, const double* const* obbs, std::size_t n,
     }
 }
 
+// Balls against the six planes: the scalar query's first stage (ball_rows::sides_of in
+// modules/engines/ball_halfspaces.cppm), operation for operation. For each plane in order,
+// e = n . c - c_p 1 (gamma_4); where e > 0, e e - (r r) (n . n) (gamma_10): positive says no (the
+// ball wholly beyond the plane), and the scalar loop stops there. Every e proven negative says yes
+// (the centre inside); a lane with the centre beyond some plane and no plane with the ball wholly
+// beyond it goes to the scalar query (its search for the nearest face, edge or vertex), and so
+// does a lane with a sign unproven before it is decided, as the scalar filter pass fails there.
+// The filter's bounds are each lane's own permanents. A ball with a non-finite number meets
+// nothing. The caller passes finite planes with nonzero normals only.
+void frustum_ball(const double* planes, const double* const* balls, std::size_t n, bool filter, std::uint8_t* out) {
+    const D d;
+    constexpr double gamma_side = gamma_of(4), gamma_apart = gamma_of(10);
+    const M none = hn::Not(hn::Eq(hn::Zero(d), hn::Zero(d)));
+    fields all{{}, {}, 4};
+    for (int k = 0; k < 4; ++k) all.p[k] = balls[k], all.per_lane[k] = true;
+    auto in = [&](double v) { return fv{hn::Set(d, v), hn::Set(d, v < 0 ? -v : v)}; };
+    auto lane = [&](V v) { return fv{v, hn::Abs(v)}; };
+    over_fields(d, all, n, [&](const fields& g, std::size_t i, std::size_t lane_at, std::size_t count) {
+        V c[3];
+        M usable = hn::FirstN(d, count);
+        for (int k = 0; k < 3; ++k) c[k] = g.at(d, k, i), usable = hn::And(usable, hn::IsFinite(c[k]));
+        const V r = g.at(d, 3, i);
+        usable = hn::And(usable, hn::IsFinite(r));
+        // live: the lanes the scalar loop still runs; open: left to the scalar query
+        M live = usable, open = none, outside = none, apart = none;
+        // the lanes of `among` where x > 0: in plain double, or proven (a sign left unproven leaves
+        // its lane to the scalar query, as the scalar filter pass fails there)
+        auto positive = [&](const fv& x, double gamma, M among) {
+            if (!filter) return hn::And(among, hn::Gt(x.v, hn::Zero(d)));
+            const M pos = own_positive(d, gamma, x), unproven = hn::AndNot(hn::Or(pos, own_negative(d, gamma, x)), among);
+            open = hn::Or(open, unproven);
+            live = hn::AndNot(unproven, live);
+            return hn::And(hn::AndNot(unproven, among), pos);
+        };
+        for (int p = 0; p < 6 && !hn::AllFalse(d, live); ++p) {
+            const double* h = planes + 4 * p;
+            const fv nx = in(h[0]), ny = in(h[1]), nz = in(h[2]);
+            const fv e = (nx * lane(c[0]) + ny * lane(c[1]) + nz * lane(c[2])) - in(h[3]) * in(1.0);
+            const M beyond = positive(e, gamma_side, live);
+            if (hn::AllFalse(d, beyond)) continue;
+            outside = hn::Or(outside, beyond);
+            const M wholly = positive(e * e - (lane(r) * lane(r)) * (nx * nx + ny * ny + nz * nz), gamma_apart, beyond);
+            apart = hn::Or(apart, wholly);
+            live = hn::AndNot(wholly, live);
+        }
+        const M yes = hn::AndNot(hn::Or(open, hn::Or(apart, outside)), usable);
+        open = hn::Or(open, hn::AndNot(apart, hn::And(usable, outside)));
+        store_answers(d, yes, open, out + lane_at, count);
+    });
+}
+
 } // namespace incidence::batch::simd::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 
@@ -335,6 +386,7 @@ HWY_AFTER_NAMESPACE();
 namespace incidence::batch::simd {
 HWY_EXPORT(frustum_box);
 HWY_EXPORT(frustum_obb);
+HWY_EXPORT(frustum_ball);
 
 // The entry point (declared extern "C++" in modules/batch/culling.cppm).
 void frustum_boxes(const double* planes, const double* edges, int edge_count, const double* const* boxes, std::size_t n, bool filter,
@@ -343,6 +395,9 @@ void frustum_boxes(const double* planes, const double* edges, int edge_count, co
 }
 void frustum_obbs(const double* planes, const double* const* obbs, std::size_t n, bool filter, std::uint8_t* out) {
     HWY_DYNAMIC_DISPATCH(frustum_obb)(planes, obbs, n, filter, out);
+}
+void frustum_balls(const double* planes, const double* const* balls, std::size_t n, bool filter, std::uint8_t* out) {
+    HWY_DYNAMIC_DISPATCH(frustum_ball)(planes, balls, n, filter, out);
 }
 } // namespace incidence::batch::simd
 #endif

@@ -7,7 +7,9 @@
 // ulps off, at scales 2^-500..2^500, and on special values (NaN, infinities, inverted boxes,
 // non-finite planes); oriented boxes the same way (random rotations around a camera's view; exact
 // frames whose corner, edge or face point is on the integer frustum's boundary; special numbers
-// and negative extents). The near-degenerate lanes are counted: those whose filter verdict is
+// and negative extents); balls the same way (around a camera's view; tangent to a small-integer
+// frustum's corners, edges and faces, exactly or within ulps; special numbers and negative radii).
+// The near-degenerate lanes are counted: those whose filter verdict is
 // uncertain (the batch must leave them to the scalar query).
 #include <catch2/catch_test_macros.hpp>
 #include <algorithm>
@@ -23,6 +25,7 @@ import incidence.detail;
 #include "testkit/obb_cases.hpp"
 #include "testkit/simd_targets.hpp"
 #include "testkit/batch_packets.hpp"
+#include "testkit/ball_halfspace_cases.hpp"
 
 namespace test_batch_culling { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 
@@ -255,6 +258,51 @@ culling_set<obb3> special_obb_set(support::rng& r) {
     return s;
 }
 
+// A camera and balls around what it sees (radii up to a tenth of the view's size).
+culling_set<sphere3> camera_ball_set(support::rng& r) {
+    culling_set<sphere3> s;
+    point3 lo, hi;
+    s.frustum = camera(r, lo, hi);
+    const double size = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+    const int n = r.integer(1, 200);
+    for (int i = 0; i < n; ++i)
+        s.boxes.push_back(sphere3{{r.uniform(lo.x - 0.2 * size, hi.x + 0.2 * size), r.uniform(lo.y - 0.2 * size, hi.y + 0.2 * size),
+                                   r.uniform(lo.z - 0.2 * size, hi.z + 0.2 * size)},
+                                  r.uniform(0, 0.1 * size)});
+    return s;
+}
+// A small-integer frustum (testkit/ball_halfspace_cases.hpp) and balls tangent at its corners,
+// edges and faces, exactly (Pythagorean) or within ulps, inside or apart, moved by one transform.
+culling_set<sphere3> touching_ball_set(support::rng& r) {
+    const support::proto_rows p = support::near_rows<frustum3>(r);
+    std::vector<sphere3> balls;
+    for (int i = r.integer(1, 100); i > 0; --i) balls.push_back(support::ball_touching(r, p));
+    support::transform tr = support::random_transform(r, true, true);
+    for (;;) {
+        const auto f = support::realise_rows<frustum3>(p, tr);
+        if (!f) {
+            tr = support::random_transform(r, true, false);
+            continue;
+        }
+        culling_set<sphere3> s{*f, {}};
+        for (const sphere3& b : balls) s.boxes.push_back(sphere3{support::moved(b.center, tr), tr.scale_only(b.radius)});
+        return s;
+    }
+}
+// Camera or touching sets with special numbers in some balls (NaN, infinities, huge, subnormal,
+// negative radii).
+culling_set<sphere3> special_ball_set(support::rng& r) {
+    culling_set<sphere3> s = r.coin() ? camera_ball_set(r) : touching_ball_set(r);
+    for (sphere3& b : s.boxes)
+        if (r.integer(0, 3) == 0) {
+            double v[4] = {b.center.x, b.center.y, b.center.z, b.radius};
+            v[r.integer(0, 3)] = support::special_or_uniform(r);
+            if (r.coin()) v[3] = -v[3];
+            b = sphere3{{v[0], v[1], v[2]}, v[3]};
+        }
+    return s;
+}
+
 struct counts {
     long lanes = 0, wrong = 0, uncertain = 0, met = 0;
 };
@@ -363,6 +411,15 @@ TEST_CASE("batch culling: every lane is the scalar answer, oriented boxes of spe
     every_tier_on_every_target("obb special", support::cases(100), [](support::rng& r, long) { return special_obb_set(r); });
 }
 
+TEST_CASE("batch culling: every lane is the scalar answer, balls, camera frustums, every target", "[batch]") {
+    every_tier_on_every_target("ball camera", support::cases(150), [](support::rng& r, long) { return camera_ball_set(r); });
+}
+TEST_CASE("batch culling: every lane is the scalar answer, balls touching an integer frustum, every target", "[batch]") {
+    near_sets_on_every_target("ball touching", support::cases(100), touching_ball_set);
+}
+TEST_CASE("batch culling: every lane is the scalar answer, balls of special values, every target", "[batch]") {
+    every_tier_on_every_target("ball special", support::cases(100), [](support::rng& r, long) { return special_ball_set(r); });
+}
 TEST_CASE("batch culling: sizes", "[batch]") {
     const frustum3 f = frustum3::from_camera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 1.0, 1.0, 1.0, 10.0).value();
     const std::vector<aabb3> boxes{aabb3{{-1, -1, -5}, {1, 1, -4}}, aabb3{{-1, -1, 1}, {1, 1, 2}}, aabb3{{50, 50, -5}, {51, 51, -4}}};
