@@ -1,10 +1,11 @@
-// convex_polyhedron3 x sphere3 (the ball): fixtures (the unit cube with a corner cut, a ball tangent
-// at the cut's vertex (Pythagorean) and one ulp short; an empty set; a half-space; a wedge whose
-// nearest point is its edge); every tier against the exact QP (CGAL's QP_solver over Gmpzf, the
-// squared distance from the centre to the half-spaces) on random polyhedra and near-degenerate ones
-// (supporting planes of small dyadic clouds, unbounded, flat and empty sets among them) with balls
-// tangent at a face, an edge or a vertex, exactly or within ulps (testkit/ball_halfspace_cases.hpp);
-// contains(polyhedron, ball) against the rows in rationals.
+// convex_polyhedron3 x sphere3 (the ball): fixtures (the unit cube with a corner cut, a ball
+// tangent at the cut's vertex (Pythagorean) and one ulp short; an empty set; a half-space; a wedge
+// whose nearest point is its edge); every tier against the exact QP (CGAL's QP_solver over Gmpzf,
+// the squared distance from the centre to the half-spaces) on 20,000 random polyhedra and 20,000
+// near-degenerate ones (supporting planes of small dyadic clouds, unbounded, flat and empty sets
+// among them) with balls tangent at a face, an edge or a vertex, exactly or within ulps
+// (testkit/ball_halfspace_cases.hpp); contains(polyhedron, ball) against the rows in rationals on
+// 20,000 + 20,000 such cases.
 #include <catch2/catch_test_macros.hpp>
 #include "testkit/oracle/cgal_oracle.hpp"
 import incidence;

@@ -1,10 +1,11 @@
 // frustum3 x sphere3 (the ball): fixtures (balls tangent to a face, an edge and a corner of the
 // integer frustum, Pythagorean, and one ulp short; one that the classic plane-by-plane culling test
 // keeps though it misses); every tier against the exact QP (the squared distance from the centre to
-// the frustum's half-spaces, CGAL's QP_solver over Gmpzf) on random camera frustums and
-// near-degenerate integer frustums with balls tangent at a face, an edge or a corner, exactly or
-// within ulps (testkit/ball_halfspace_cases.hpp); contains(frustum, ball) against the rows in
-// rationals; the classic culling test as the catalog's alternative never drops a ball that meets.
+// the frustum's half-spaces, CGAL's QP_solver over Gmpzf) on 20,000 random camera frustums and
+// 20,000 near-degenerate integer frustums with balls tangent at a face, an edge or a corner,
+// exactly or within ulps (testkit/ball_halfspace_cases.hpp); contains(frustum, ball) against the
+// rows in rationals on 20,000 + 20,000 such cases; the classic culling test as the catalog's
+// alternative never drops a ball that meets.
 #include <catch2/catch_test_macros.hpp>
 #include "testkit/oracle/cgal_oracle.hpp"
 import incidence;

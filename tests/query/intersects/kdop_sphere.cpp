@@ -1,9 +1,9 @@
 // kdop<K> x sphere3 (the ball), K = 6, 14, 18, 26: fixtures (a ball tangent at a corner of the unit
 // 6-DOP and at a vertex of a 14-DOP's cut, Pythagorean, and one ulp short; an empty slab); every
 // tier against the exact QP (CGAL's QP_solver over Gmpzf, the squared distance from the centre to
-// the slabs) on the k-DOPs of random and small dyadic clouds with balls tangent at a face, an edge
-// or a vertex, exactly or within ulps (testkit/ball_halfspace_cases.hpp); contains(k-DOP, ball)
-// against the slabs in rationals.
+// the slabs) on the k-DOPs of 5,000 random and 5,000 small dyadic clouds per K with balls tangent
+// at a face, an edge or a vertex, exactly or within ulps (testkit/ball_halfspace_cases.hpp);
+// contains(k-DOP, ball) against the slabs in rationals (K = 14 and 26, 5,000 + 5,000 each).
 #include <catch2/catch_test_macros.hpp>
 #include "testkit/oracle/cgal_oracle.hpp"
 import incidence;
