@@ -35,6 +35,10 @@ using support::packet;
 
 namespace {
 
+// The number of shapes in a set: 1 to `most`, or 1 to 16 where the cases are scaled down (the
+// sanitizer build, whose scalar exact queries on the open lanes are slow at -O0).
+int set_size(support::rng& r, int most) { return r.integer(1, static_cast<int>(std::max(16L, support::cases(100L * most) / 100))); }
+
 template <class Box = aabb3>
 struct culling_set {
     frustum3 frustum;
@@ -68,7 +72,7 @@ culling_set<> camera_set(support::rng& r) {
     point3 lo, hi;
     s.frustum = camera(r, lo, hi);
     const double size = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
-    const int n = r.integer(1, 200);
+    const int n = set_size(r, 200);
     for (int i = 0; i < n; ++i) {
         double a[3], e[3];
         const double l[3] = {lo.x, lo.y, lo.z}, h[3] = {hi.x, hi.y, hi.z};
@@ -85,7 +89,7 @@ culling_set<obb3> camera_obb_set(support::rng& r) {
     point3 lo, hi;
     s.frustum = camera(r, lo, hi);
     const double size = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
-    const int n = r.integer(1, 200);
+    const int n = set_size(r, 200);
     for (int i = 0; i < n; ++i) {
         const point3 c{r.uniform(lo.x - 0.2 * size, hi.x + 0.2 * size), r.uniform(lo.y - 0.2 * size, hi.y + 0.2 * size),
                        r.uniform(lo.z - 0.2 * size, hi.z + 0.2 * size)};
@@ -118,7 +122,7 @@ culling_set<> touching_set(support::rng& r) {
     s.frustum = audit::touching_frustum(r).shape;
     point3 corner[8];
     REQUIRE(detail::frustum_corners(s.frustum, corner));
-    const int n = r.integer(1, 64);
+    const int n = set_size(r, 64);
     for (int i = 0; i < n; ++i) {
         const point3 p = frustum_boundary_point(r, corner);
         double a[3] = {p.x, p.y, p.z}, b[3] = {p.x, p.y, p.z};
@@ -153,7 +157,7 @@ culling_set<obb3> touching_obb_set(support::rng& r) {
     s.frustum = audit::touching_frustum(r).shape;
     point3 corner[8];
     REQUIRE(detail::frustum_corners(s.frustum, corner));
-    const int n = r.integer(1, 64);
+    const int n = set_size(r, 64);
     for (int i = 0; i < n; ++i) {
         const point3 p = frustum_boundary_point(r, corner);
         obb3 b = support::near_obb(r);
@@ -194,7 +198,7 @@ culling_set<> edge_set(support::rng& r) {
     const vec3 n0 = s.frustum.planes[0].normal, n1 = s.frustum.planes[1].normal;
     const double alpha = std::abs(a == 0 ? n1.x : a == 1 ? n1.y : n1.z), beta = std::abs(a == 0 ? n0.x : a == 1 ? n0.y : n0.z);
     const vec3 g = n0 * alpha + n1 * beta; // exact: small integers
-    const int n = r.integer(1, 64);
+    const int n = set_size(r, 64);
     for (int i = 0; i < n; ++i) {
         const double gv[3] = {g.x, g.y, g.z}, x[3] = {X.x, X.y, X.z};
         double lo[3], hi[3];
@@ -264,7 +268,7 @@ culling_set<sphere3> camera_ball_set(support::rng& r) {
     point3 lo, hi;
     s.frustum = camera(r, lo, hi);
     const double size = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
-    const int n = r.integer(1, 200);
+    const int n = set_size(r, 200);
     for (int i = 0; i < n; ++i)
         s.boxes.push_back(sphere3{{r.uniform(lo.x - 0.2 * size, hi.x + 0.2 * size), r.uniform(lo.y - 0.2 * size, hi.y + 0.2 * size),
                                    r.uniform(lo.z - 0.2 * size, hi.z + 0.2 * size)},
@@ -276,7 +280,7 @@ culling_set<sphere3> camera_ball_set(support::rng& r) {
 culling_set<sphere3> touching_ball_set(support::rng& r) {
     const support::proto_rows p = support::near_rows<frustum3>(r);
     std::vector<sphere3> balls;
-    for (int i = r.integer(1, 100); i > 0; --i) balls.push_back(support::ball_touching(r, p));
+    for (int i = set_size(r, 100); i > 0; --i) balls.push_back(support::ball_touching(r, p));
     support::transform tr = support::random_transform(r, true, true);
     for (;;) {
         const auto f = support::realise_rows<frustum3>(p, tr);
