@@ -27,6 +27,7 @@ import incidence.detail;
 #include "testkit/polyhedron_cases.hpp"
 #include "testkit/polygon3_cases.hpp"
 #include "testkit/ball_halfspace_cases.hpp"
+#include "testkit/capsule_cases.hpp"
 
 using namespace incidence;
 
@@ -402,6 +403,35 @@ template <class P>
         pair, near ? "near_degenerate" : "random", cs, [&](const std::pair<P, sphere3>&) { return bool(truth[i++]); },
         [](auto tier, const std::pair<P, sphere3>& c) { return intersects<decltype(tier)>(c.first, c.second); });
     return cs;
+}
+// A ball against a flat shape or a tetrahedron, as ball_tiers, and CGAL Epick's do_intersect(Sphere_3, X).
+template <class S>
+void ball_flat_tiers(const std::string& pair, bool near) {
+    const auto cs = ball_tiers<S>(pair, near);
+    std::vector<bool> t;
+    for (const auto& c : cs) t.push_back(intersects(c.first, c.second)); // the exact tier, checked against the QP in ball_tiers
+    reg("cgal_epick/intersects/" + pair + "/" + (near ? "near_degenerate" : "random"), cs, t, check::approximate,
+        [](const std::pair<S, sphere3>& c) {
+            return oracle::ball_flat_epick(support::to_flat(c.first), support::a3(c.second.center), c.second.radius);
+        });
+}
+// A capsule against a partner (testkit/capsule_cases.hpp: grown from a touching ball, or random),
+// the exact QP between the cores as truth (a case it declines is drawn again).
+template <class B>
+[[gnu::noinline]] void capsule_tiers(const std::string& pair, bool near) {
+    support::rng r = set_rng(near);
+    std::vector<std::pair<capsule3, B>> cs;
+    std::vector<bool> truth;
+    while (cs.size() < set_size)
+        if (const auto c = near ? support::capsule_near<B>(r) : support::capsule_random<B>(r)) {
+            const auto [core, rb] = support::core_of(c->second);
+            if (const auto t = oracle::qp_sets_within(support::lp(segment3{c->first.a, c->first.b}), core, c->first.radius, rb))
+                cs.push_back(*c), truth.push_back(*t);
+        }
+    std::size_t i = 0; // the truths in the order tiers() asks for them
+    tiers(
+        pair, near ? "near_degenerate" : "random", cs, [&](const std::pair<capsule3, B>&) { return bool(truth[i++]); },
+        [](auto tier, const std::pair<capsule3, B>& c) { return intersects<decltype(tier)>(c.first, c.second); });
 }
 inline void obb_arrays(const obb3& b, double* c, double* a, double* h) {
     arr(b.center, c);

@@ -1,5 +1,5 @@
-// FCL 0.7 (Debian libfcl-dev) as a benchmark peer: fcl::OBB<double>::overlap and
-// fcl::detail::Intersect<double>::intersect_Triangle, called as FCL's users call them.
+// FCL 0.7 (Debian libfcl-dev) as a benchmark peer: fcl::OBB<double>::overlap,
+// fcl::detail::sphereBoxIntersect and fcl::detail::Intersect<double>::intersect_Triangle, called as FCL's users call them.
 #include "fcl_peer.hpp"
 
 #include <fcl/geometry/bvh/BVH_model.h>
@@ -9,6 +9,7 @@
 #include <fcl/narrowphase/collision_object.h>
 #include <memory>
 #include <fcl/narrowphase/detail/traversal/collision/intersect.h>
+#include <fcl/narrowphase/detail/primitive_shape_algorithm/sphere_box.h>
 
 namespace fcl_peer {
 
@@ -24,6 +25,15 @@ fcl::Vector3<double> v(const double p[3]) { return {p[0], p[1], p[2]}; }
 
 bool obb_obb(const double ca[3], const double aa[9], const double ha[3], const double cb[3], const double ab[9], const double hb[3]) {
     return box(ca, aa, ha).overlap(box(cb, ab, hb));
+}
+bool sphere_obb(const double c[3], double r, const double cb[3], const double ab[9], const double hb[3]) {
+    fcl::Transform3<double> ball = fcl::Transform3<double>::Identity(), box = fcl::Transform3<double>::Identity();
+    ball.translation() = v(c);
+    for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 3; ++k) box.linear()(k, i) = ab[3 * i + k]; // the columns are the axes
+    box.translation() = v(cb);
+    return fcl::detail::sphereBoxIntersect<double>(fcl::Sphere<double>(r), ball, fcl::Box<double>(2 * hb[0], 2 * hb[1], 2 * hb[2]), box,
+                                                   nullptr);
 }
 bool triangle_triangle(const double p1[3], const double p2[3], const double p3[3], const double q1[3], const double q2[3],
                        const double q3[3]) {

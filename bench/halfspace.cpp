@@ -48,6 +48,35 @@ void register_halfspace(bool near) {
     ball_tiers<convex_polyhedron3>("convex_polyhedron_sphere", near);
     ball_tiers<kdop<14>>("kdop_sphere_14", near);
     ball_tiers<kdop<26>>("kdop_sphere_26", near);
+    ball_flat_tiers<segment3>("segment_sphere", near);
+    ball_flat_tiers<line3>("line_sphere", near);
+    ball_flat_tiers<plane3>("plane_sphere", near);
+    ball_flat_tiers<triangle3>("sphere_triangle", near);
+    ball_flat_tiers<tetrahedron3>("sphere_tetrahedron", near);
+    capsule_tiers<point3>("capsule_point", near);
+    capsule_tiers<sphere3>("capsule_sphere", near);
+    capsule_tiers<capsule3>("capsule_capsule", near);
+    capsule_tiers<segment3>("capsule_segment", near);
+    capsule_tiers<ray3>("capsule_ray", near);
+    capsule_tiers<line3>("capsule_line", near);
+    capsule_tiers<plane3>("capsule_plane", near);
+    capsule_tiers<triangle3>("capsule_triangle", near);
+    capsule_tiers<tetrahedron3>("capsule_tetrahedron", near);
+    capsule_tiers<aabb3>("aabb_capsule", near);
+    {
+        const auto cs = ball_tiers<obb3>("obb_sphere", near);
+        std::vector<bool> t;
+        for (const auto& c : cs) t.push_back(intersects(c.first, c.second)); // the exact tier, checked against the QP above
+        const std::string dist = near ? "near_degenerate" : "random";
+        reg("closest_point/intersects/obb_sphere/" + dist, cs, t, check::approximate,
+            [](const std::pair<obb3, sphere3>& c) { return method::obb_sphere_closest_point(c.first, c.second); });
+        reg("fcl/intersects/obb_sphere/" + dist, cs, t, check::approximate, [](const std::pair<obb3, sphere3>& c) {
+            double cb[3], ab[9], hb[3], cc[3];
+            obb_arrays(c.first, cb, ab, hb);
+            arr(c.second.center, cc);
+            return fcl_peer::sphere_obb(cc, c.second.radius, cb, ab, hb);
+        });
+    }
     {
         const auto cs = ball_tiers<frustum3>("frustum_sphere", near);
         std::vector<bool> t;

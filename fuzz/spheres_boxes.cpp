@@ -8,11 +8,17 @@
 // and six rays of the same doubles against each box and ball, on a SIMD target the first byte
 // picks, every lane equal to the scalar answer in every tier; and the ray's first hit among those
 // boxes and balls (batches.hpp, first_hit_contracts). And a ball against half-spaces
-// (frustum_sphere, convex_polyhedron_sphere, kdop_sphere): a frustum, a polyhedron of 1 to 6 planes
-// and a 14-DOP from the doubles, every tier on any bits, and the culling batch of five balls against
-// the frustum (byte 3 picks the target); on finite ones, one of the three (byte 2)
-// against the exact QP (the squared distance to the set) and contains against the rows in
-// rationals. Any finding aborts.
+// (frustum_sphere, convex_polyhedron_sphere, kdop_sphere) and against an oriented box (obb_sphere):
+// a frustum, a polyhedron of 1 to 6 planes, a 14-DOP and a box of any (skew, flat) axes from the
+// doubles, every tier on any bits, and the culling batch of five balls against the frustum (byte 3
+// picks the target); on finite ones, one of the four (byte 2) against the exact QP (the squared
+// distance to the set) and contains against the rows in rationals (the half-space sets). And a ball
+// against a segment, a line, a plane, a triangle and a tetrahedron of the same doubles
+// (segment_sphere, line_sphere, plane_sphere, sphere_triangle, sphere_tetrahedron), every tier on
+// any bits, against CGAL's squared distance from the centre over Epeck on finite ones. And a capsule
+// of the doubles against a point, a ball, a capsule, a segment, a ray, a line, a plane, a triangle, a
+// tetrahedron and a box of them, every tier on any bits, one partner (byte 4) against the exact QP
+// on finite ones. Any finding aborts.
 #include "testkit/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <cmath>
@@ -23,6 +29,7 @@ import incidence;
 #include "contracts.hpp"
 #include "batches.hpp"
 #include "testkit/lp_shapes.hpp"
+#include "testkit/flat_shapes.hpp"
 
 using namespace incidence;
 
@@ -94,6 +101,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         cp.planes[i] = plane3{{v[(3 * i + 5) % 16], v[(3 * i + 6) % 16], v[(3 * i + 7) % 16]}, v[(5 * i + 2) % 16]};
     kdop<14> kd{};
     for (unsigned i = 0; i < 7; ++i) kd.min[i] = std::fmin(v[i], v[i + 7]), kd.max[i] = std::fmax(v[i], v[i + 7]);
+    const obb3 ob{
+        p, {vec3{v[3], v[4], v[5]}, vec3{v[9], v[10], v[11]}, vec3{v[13], v[14], v[15]}}, {std::fabs(v[12]), std::fabs(v[0]), v[7]}};
     {
         const sphere3 many[5] = {s1, s2, {p, r2}, {q, r1}, {c, std::fabs(r1) + std::fabs(r2)}};
         batch_contracts(fr, std::span<const sphere3>(many), size < 4 ? 0 : data[3]); // the culling batch
@@ -105,6 +114,23 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         (void)contains<aggressive>(fr, s);
         (void)contains<approximate>(kd, s);
         (void)method::frustum_sphere_planes(fr, s);
+        (void)intersects<approximate>(ob, s);
+        (void)classify(s, ob);
+        (void)intersects<approximate>(segment3{p, q}, s);
+        (void)intersects<aggressive>(s, line3{q, vec3{v[0], v[1], v[2]}});
+        (void)classify(plane3{vec3{v[9], v[10], v[11]}, v[15]}, s);
+        (void)intersects<conservative>(s, triangle3{p, q, e});
+        (void)intersects<approximate>(tetrahedron3{p, q, c, e}, s);
+        const capsule3 cap{c, e, s.radius};
+        (void)intersects<approximate>(cap, p);
+        (void)intersects<conservative>(s, cap);
+        (void)classify(cap, capsule3{p, q, r2});
+        (void)intersects<aggressive>(segment3{p, q}, cap);
+        (void)intersects<approximate>(cap, ray);
+        (void)classify(cap, plane3{vec3{v[9], v[10], v[11]}, v[15]});
+        (void)intersects<conservative>(triangle3{p, q, e}, cap);
+        (void)intersects<aggressive>(cap, tetrahedron3{p, q, c, e});
+        (void)intersects<approximate>(b1, cap);
     }
     // Every tier and every find must finish on any bits.
     (void)intersects<approximate>(ray, s1);
@@ -140,6 +166,40 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     contracts(p, a, oracle::point_in_ball(P, C, a.radius));
     contracts(a, b, oracle::ball_ball(C, a.radius, E, b.radius));
     if (contains(a, b) != oracle::ball_contains_ball(C, a.radius, E, b.radius)) std::abort();
+    // the ball against the flat shapes and the tetrahedron of the same doubles
+    {
+        const auto flat = [&](const auto& x) {
+            for (const sphere3& s : {s1, a}) contracts(x, s, oracle::ball_flat(support::to_flat(x), support::a3(s.center), s.radius));
+        };
+        flat(segment3{p, q});
+        flat(line3{p, vec3{v[3], v[4], v[5]}});
+        flat(plane3{vec3{v[9], v[10], v[11]}, v[15]});
+        flat(triangle3{p, q, e});
+        flat(tetrahedron3{p, q, c, e});
+    }
+    // a capsule against one partner (byte 4): the exact QP between its segment and the partner's core
+    {
+        const capsule3 cap{c, e, std::fabs(r1)};
+        const auto axis = support::lp(segment3{c, e});
+        const auto within = [&](const auto& x, const oracle::convex_set& core, double r) {
+            if (const auto t = oracle::qp_sets_within(axis, core, cap.radius, r)) contracts(cap, x, *t);
+        };
+        switch (size < 5 ? 0 : data[4] % 10) {
+        case 0: within(p, support::lp(p), 0); break;
+        case 1: within(sphere3{p, std::fabs(r2)}, support::lp(p), std::fabs(r2)); break;
+        case 2: within(capsule3{p, q, std::fabs(r2)}, support::lp(segment3{p, q}), std::fabs(r2)); break;
+        case 3: within(segment3{p, q}, support::lp(segment3{p, q}), 0); break;
+        case 4: within(ray, support::lp(ray), 0); break;
+        case 5: within(line, support::lp(line), 0); break;
+        case 6:
+            if (!(vec3{v[9], v[10], v[11]} == vec3{0, 0, 0}))
+                within(plane3{vec3{v[9], v[10], v[11]}, v[15]}, support::lp(plane3{vec3{v[9], v[10], v[11]}, v[15]}), 0);
+            break;
+        case 7: within(triangle3{p, q, e}, support::lp(triangle3{p, q, e}), 0); break;
+        case 8: within(tetrahedron3{p, q, c, e}, support::lp(tetrahedron3{p, q, c, e}), 0); break;
+        default: within(ordered(p, q), support::lp(ordered(p, q)), 0); break;
+        }
+    }
     // the ball against the half-spaces: the exact QP (one set per input, byte 2), the rows in rationals
     {
         const auto ball = [&](const auto& set) {
@@ -148,10 +208,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 contains_contracts_with(set, s, oracle::ball_in_rows(support::lp(set), support::a3(s.center), s.radius));
             }
         };
-        switch (size < 3 ? 0 : data[2] % 3) {
+        switch (size < 3 ? 0 : data[2] % 4) {
         case 0: ball(fr); break;
         case 1: ball(cp); break;
-        default: ball(kd); break;
+        case 2: ball(kd); break;
+        default:
+            for (const sphere3& s : {s1, a})
+                if (const auto t = oracle::qp_ball_meets(support::lp(ob), support::a3(s.center), s.radius)) contracts(ob, s, *t);
         }
     }
     const aabb3 box = ordered(c, e), other = ordered(p, q);

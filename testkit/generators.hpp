@@ -39,6 +39,7 @@ inline constexpr double base_size = 1024.0; // the objects' size, in the units b
 // --- per-shape moves -------------------------------------------------------------------------
 inline point3 moved(point3 p, vec3 v) { return p + v; }
 inline sphere3 moved(sphere3 s, vec3 v) { return {s.center + v, s.radius}; }
+inline capsule3 moved(capsule3 c, vec3 v) { return {c.a + v, c.b + v, c.radius}; }
 inline aabb3 moved(aabb3 b, vec3 v) { return {b.min + v, b.max + v}; }
 inline ray3 moved(ray3 r, vec3 v) { return {r.origin + v, r.direction}; }
 inline segment3 moved(segment3 s, vec3 v) { return {s.a + v, s.b + v}; }
@@ -399,6 +400,193 @@ struct near_boundary<obb3, point3> {
     static std::pair<obb3, point3> touching(rng& r) {
         const auto t = touching_obb(r);
         return {t.box, t.p};
+    }
+};
+template <>
+struct near_boundary<obb3, sphere3> {
+    static std::pair<obb3, sphere3> touching(rng& r) { // centred out along o from p, its radius the distance (rounded)
+        const auto t = touching_obb(r);
+        const double k = r.integer(1, 60);
+        return {t.box, sphere3{t.p + t.o * k, k * std::sqrt(dot(t.o, t.o))}};
+    }
+};
+// A ball touching a flat shape or a tetrahedron at x: centred at x + k w for w in the shape's normal
+// cone at x, its radius k |w| (rounded unless |w| is an integer). A capsule grown from that centre
+// along v with v . w >= 0 keeps the ball's distance (the shape lies in w . (y - x) <= 0).
+inline sphere3 ball_at(rng& r, point3 x, vec3 w) {
+    const double k = r.integer(1, 40);
+    return sphere3{x + w * k, k * std::sqrt(dot(w, w))};
+}
+inline capsule3 capsule_at(rng& r, point3 x, vec3 w) {
+    const sphere3 b = ball_at(r, x, w);
+    vec3 v = r.integer(0, 3) == 0 ? vec3{0, 0, 0} : int_vec(r, 40);
+    if (dot(v, w) < 0) v = v * -1.0;
+    return capsule3{b.center, b.center + v, b.radius};
+}
+inline vec3 across(rng& r, vec3 d) { // a nonzero vector perpendicular to d
+    for (;;) {
+        const vec3 w = cross(d, int_vec(r, 8));
+        if (w.x != 0 || w.y != 0 || w.z != 0) return w;
+    }
+}
+// A shape, a point x of it and a direction w in its normal cone at x.
+template <class S>
+struct contact {
+    S shape;
+    point3 x;
+    vec3 w;
+};
+inline contact<segment3> segment_contact(rng& r) { // at an end (w leaning away) or inside
+    const point3 a = int_point(r, 400);
+    const vec3 d = int_vec(r, 400);
+    const segment3 s{a, a + d};
+    const int at = r.integer(0, 2);
+    if (at == 2) return {s, a + d * (r.integer(1, 3) * 0.25), across(r, d)};
+    const vec3 out = at == 0 ? d * -1.0 : d;
+    return {s, at == 0 ? s.a : s.b, across(r, d) * double(r.integer(0, 2)) + out * double(r.integer(1, 2))};
+}
+inline contact<line3> line_contact(rng& r) {
+    const line3 l{int_point(r, 400), int_vec(r, 400)};
+    return {l, l.origin + l.direction * double(r.integer(-3, 3)), across(r, l.direction)};
+}
+inline contact<plane3> plane_contact(rng& r) {
+    const vec3 n = int_vec(r, 12);
+    const point3 x = int_point(r, 400);
+    return {plane3{n, dot(n, x - point3{0, 0, 0})}, x, r.coin() ? n : n * -1.0};
+}
+inline contact<triangle3> triangle_contact(rng& r) { // at a vertex, an edge point or inside, off either side
+    const triangle3 t = int_triangle(r);
+    const point3 v[3] = {t.a, t.b, t.c};
+    const vec3 n = cross(t.b - t.a, t.c - t.a);
+    const auto out = [&](int i) { return cross(v[(i + 1) % 3] - v[i], n); }; // edge i's outward normal in the plane
+    const int i = r.integer(0, 2), where = r.integer(0, 2);
+    vec3 w = n * double(r.integer(-2, 2));
+    point3 x = v[i];
+    if (where == 0) w = w + (out(i) + out((i + 2) % 3)) * double(r.integer(0, 1)); // the vertex v[i]
+    else if (where == 1) x = v[i] + (v[(i + 1) % 3] - v[i]) * (r.integer(1, 3) * 0.25), w = w + out(i) * double(r.integer(0, 1));
+    else x = point3{(t.a.x + t.b.x + 2 * t.c.x) / 4, (t.a.y + t.b.y + 2 * t.c.y) / 4, (t.a.z + t.b.z + 2 * t.c.z) / 4};
+    if (w.x == 0 && w.y == 0 && w.z == 0) w = n;
+    return {t, x, w};
+}
+inline contact<tetrahedron3> tetrahedron_contact(rng& r) { // at a face point, an edge point or a vertex
+    for (;;) {
+        const point3 a = int_point(r, 400);
+        const tetrahedron3 t{a, a + int_vec(r, 400), a + int_vec(r, 400), a + int_vec(r, 400)};
+        const point3 v[4] = {t.a, t.b, t.c, t.d};
+        if (dot(cross(v[1] - v[0], v[2] - v[0]), v[3] - v[0]) == 0) continue;
+        const auto outward = [&](int skip) { // the face without v[skip]: its normal, away from v[skip]
+            const point3 p = v[(skip + 1) % 4], q = v[(skip + 2) % 4], s = v[(skip + 3) % 4];
+            const vec3 m = cross(q - p, s - p);
+            return dot(m, v[skip] - p) > 0 ? m * -1.0 : m;
+        };
+        const int i = r.integer(0, 3), j = (i + 1 + r.integer(0, 2)) % 4, where = r.integer(0, 2);
+        if (where == 0) { // a point of the face without v[i]
+            const point3 p = v[(i + 1) % 4], q = v[(i + 2) % 4], s = v[(i + 3) % 4];
+            return {t, point3{(p.x + q.x + 2 * s.x) / 4, (p.y + q.y + 2 * s.y) / 4, (p.z + q.z + 2 * s.z) / 4}, outward(i)};
+        }
+        vec3 w{0, 0, 0};
+        point3 x = v[i];
+        if (where == 1) { // the edge v[i] v[j]: the two faces through it
+            x = v[i] + (v[j] - v[i]) * (r.integer(1, 3) * 0.25);
+            for (int f = 0; f < 4; ++f)
+                if (f != i && f != j) w = w + outward(f) * double(r.integer(1, 2));
+        } else { // the vertex v[i]: its three faces
+            for (int f = 0; f < 4; ++f)
+                if (f != i) w = w + outward(f) * double(r.integer(1, 2));
+        }
+        return {t, x, w};
+    }
+}
+inline contact<point3> point_contact(rng& r) {
+    const point3 p = int_point(r, 400);
+    return {p, p, int_vec(r, 12)};
+}
+inline contact<aabb3> box_contact(rng& r) { // at a face, an edge or a corner, w pointing away on those axes
+    const point3 lo = int_point(r);
+    const aabb3 b{lo, lo + vec3{double(r.integer(1, 400)), double(r.integer(1, 400)), double(r.integer(1, 400))}};
+    const vec3 u = int_vec(r, 6);
+    const double mn[3] = {b.min.x, b.min.y, b.min.z}, mx[3] = {b.max.x, b.max.y, b.max.z}, uc[3] = {u.x, u.y, u.z};
+    double q[3];
+    for (int i = 0; i < 3; ++i) q[i] = uc[i] > 0 ? mx[i] : (uc[i] < 0 ? mn[i] : std::floor((mn[i] + mx[i]) / 2));
+    return {b, point3{q[0], q[1], q[2]}, u};
+}
+template <class S, class F>
+struct ball_contact { // near_boundary for S and a ball, from F's contact
+    static std::pair<S, sphere3> touching(rng& r) {
+        const auto c = F{}(r);
+        return {c.shape, ball_at(r, c.x, c.w)};
+    }
+};
+struct segment_contact_f {
+    contact<segment3> operator()(rng& r) const { return segment_contact(r); }
+};
+struct line_contact_f {
+    contact<line3> operator()(rng& r) const { return line_contact(r); }
+};
+struct plane_contact_f {
+    contact<plane3> operator()(rng& r) const { return plane_contact(r); }
+};
+struct triangle_contact_f {
+    contact<triangle3> operator()(rng& r) const { return triangle_contact(r); }
+};
+struct tetrahedron_contact_f {
+    contact<tetrahedron3> operator()(rng& r) const { return tetrahedron_contact(r); }
+};
+template <>
+struct near_boundary<segment3, sphere3> : ball_contact<segment3, segment_contact_f> {};
+template <>
+struct near_boundary<line3, sphere3> : ball_contact<line3, line_contact_f> {};
+template <>
+struct near_boundary<plane3, sphere3> : ball_contact<plane3, plane_contact_f> {};
+template <>
+struct near_boundary<sphere3, triangle3> {
+    static std::pair<sphere3, triangle3> touching(rng& r) {
+        const auto c = triangle_contact(r);
+        return {ball_at(r, c.x, c.w), c.shape};
+    }
+};
+template <>
+struct near_boundary<sphere3, tetrahedron3> {
+    static std::pair<sphere3, tetrahedron3> touching(rng& r) {
+        const auto c = tetrahedron_contact(r);
+        return {ball_at(r, c.x, c.w), c.shape};
+    }
+};
+// A capsule grown from a ball touching the partner (capsule_at); a ball or capsule partner: the
+// point or segment where it touched with half the radius, the capsule the other half (exact).
+template <class B>
+struct near_boundary<capsule3, B> {
+    static std::pair<capsule3, B> touching(rng& r) {
+        if constexpr (std::is_same_v<B, sphere3> || std::is_same_v<B, capsule3>) {
+            const auto c = [&] {
+                if constexpr (std::is_same_v<B, sphere3>) return point_contact(r);
+                else return segment_contact(r);
+            }();
+            capsule3 k = capsule_at(r, c.x, c.w);
+            k.radius *= 0.5;
+            if constexpr (std::is_same_v<B, sphere3>) return {k, sphere3{c.shape, k.radius}};
+            else return {k, capsule3{c.shape.a, c.shape.b, k.radius}};
+        } else if constexpr (std::is_same_v<B, ray3>) { // along a touched segment, beyond its end
+            const auto c = segment_contact(r);
+            return {capsule_at(r, c.x, c.w), ray3{c.shape.a, c.shape.b - c.shape.a}};
+        } else {
+            const auto c = [&] {
+                if constexpr (std::is_same_v<B, point3>) return point_contact(r);
+                else if constexpr (std::is_same_v<B, segment3>) return segment_contact(r);
+                else if constexpr (std::is_same_v<B, line3>) return line_contact(r);
+                else if constexpr (std::is_same_v<B, plane3>) return plane_contact(r);
+                else if constexpr (std::is_same_v<B, triangle3>) return triangle_contact(r);
+                else return tetrahedron_contact(r);
+            }();
+            return {capsule_at(r, c.x, c.w), c.shape};
+        }
+    }
+};
+template <>
+struct near_boundary<aabb3, capsule3> {
+    static std::pair<aabb3, capsule3> touching(rng& r) {
+        const auto c = box_contact(r);
+        return {c.shape, capsule_at(r, c.x, c.w)};
     }
 };
 template <>

@@ -37,6 +37,7 @@ namespace method {
 [[nodiscard]] constexpr bool aabb_frustum_decomposition(const aabb3& b, const frustum3& f) {
     return detail::aabb_frustum_decomposition(b, f);
 }
+[[nodiscard]] constexpr bool obb_sphere_closest_point(const obb3& b, const sphere3& s) { return detail::obb_sphere_closest_point(b, s); }
 [[nodiscard]] constexpr bool frustum_sphere_planes(const frustum3& f, const sphere3& s) { return detail::frustum_sphere_planes(f, s); }
 [[nodiscard]] constexpr bool frustum_obb_sat(const frustum3& f, const obb3& b) { return detail::frustum_obb_sat(f, b); }
 [[nodiscard]] constexpr bool frustum_obb_decomposition(const frustum3& f, const obb3& b) { return detail::frustum_obb_decomposition(f, b); }

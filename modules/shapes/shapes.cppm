@@ -5,6 +5,7 @@ export import :line3;
 export import :segment3;
 export import :plane3;
 export import :sphere3;
+export import :capsule3;
 export import :aabb3;
 export import :triangle3;
 export import :kdop;

@@ -6,6 +6,7 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/intersections.h>
+#include <CGAL/squared_distance_3.h>
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -342,6 +343,43 @@ bool user_meets(const flat& a, const flat& b) {
         return false;
     }
     return meets<K, false>(x, y);
+}
+
+namespace {
+template <class K>
+bool ball_meets(const flat& f, const std::array<double, 3>& c, double r) {
+    const typename K::FT R(r), R2 = R * R;
+    const typename K::Point_3 C(c[0], c[1], c[2]);
+    const auto x = to_cgal<K>(f);
+    if (std::holds_alternative<lp_only>(x)) { // a coplanar tetrahedron: its four faces
+        const int idx[4][3] = {{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}};
+        for (const auto& face : idx) {
+            flat t{flat::triangle, {}};
+            for (int j = 0; j < 3; ++j)
+                for (int k = 0; k < 3; ++k) t.v[3 * j + k] = f.v[3 * face[j] + k];
+            if (ball_meets<K>(t, c, r)) return true;
+        }
+        return false;
+    }
+    return std::visit(
+        [&](const auto& o) -> bool {
+            using T = std::decay_t<decltype(o)>;
+            if constexpr (std::is_same_v<T, everything>) return true;
+            else if constexpr (std::is_same_v<T, nothing> || std::is_same_v<T, lp_only>) return false;
+            else if constexpr (std::is_same_v<T, typename K::Iso_cuboid_3>) return CGAL::do_intersect(typename K::Sphere_3(C, R2), o);
+            else if constexpr (std::is_same_v<T, typename K::Tetrahedron_3>) // CGAL's distance reads it positively oriented
+                return CGAL::squared_distance(C, o.orientation() == CGAL::NEGATIVE ? typename K::Tetrahedron_3(o[1], o[0], o[2], o[3])
+                                                                                   : o) <= R2;
+            else return CGAL::squared_distance(C, o) <= R2;
+        },
+        x);
+}
+} // namespace
+bool ball_flat(const flat& a, const std::array<double, 3>& c, double r) {
+    return ball_meets<CGAL::Exact_predicates_exact_constructions_kernel>(a, c, r);
+}
+bool ball_flat_epick(const flat& a, const std::array<double, 3>& c, double r) {
+    return ball_meets<CGAL::Exact_predicates_inexact_constructions_kernel>(a, c, r);
 }
 
 bool flat_do_intersect_cgal(const flat& a, const flat& b) { return user_meets<CGAL::Exact_predicates_exact_constructions_kernel>(a, b); }

@@ -23,24 +23,24 @@ namespace oracle {
 namespace {
 using program = CGAL::Quadratic_program<double>;
 
-// Adds the rows and variables of s meeting the common point x (variables 0, 1, 2).
-void add(program& lp, int& var, int& row, const convex_set& s) {
+// Adds the rows and variables of s meeting the common point x (variables x0, x0 + 1, x0 + 2).
+void add(program& lp, int& var, int& row, const convex_set& s, int x0 = 0) {
     for (const auto& sl : s.slabs) // lo <= n . x <= hi, two rows
         for (const auto [bound, rel] : {std::pair{sl.lo, CGAL::LARGER}, std::pair{sl.hi, CGAL::SMALLER}}) {
-            for (int k = 0; k < 3; ++k) lp.set_a(k, row, sl.n[static_cast<unsigned>(k)]);
+            for (int k = 0; k < 3; ++k) lp.set_a(x0 + k, row, sl.n[static_cast<unsigned>(k)]);
             lp.set_b(row, bound);
             lp.set_r(row, rel);
             ++row;
         }
     for (const auto& h : s.halfspaces) { // n . x <= offset
-        for (int k = 0; k < 3; ++k) lp.set_a(k, row, h.n[static_cast<unsigned>(k)]);
+        for (int k = 0; k < 3; ++k) lp.set_a(x0 + k, row, h.n[static_cast<unsigned>(k)]);
         lp.set_b(row, h.offset);
         lp.set_r(row, CGAL::SMALLER);
         ++row;
     }
     if (!s.plane && s.points.empty() && s.generators.empty()) return; // the slabs or half-spaces alone
     if (s.plane) {
-        for (int k = 0; k < 3; ++k) lp.set_a(k, row, s.normal[static_cast<unsigned>(k)]);
+        for (int k = 0; k < 3; ++k) lp.set_a(x0 + k, row, s.normal[static_cast<unsigned>(k)]);
         lp.set_b(row, s.offset);
         lp.set_r(row, CGAL::EQUAL);
         ++row;
@@ -60,7 +60,7 @@ void add(program& lp, int& var, int& row, const convex_set& s) {
         ++var;
     }
     for (int k = 0; k < 3; ++k) {
-        lp.set_a(k, row + k, 1.0);
+        lp.set_a(x0 + k, row + k, 1.0);
         lp.set_b(row + k, 0.0);
         lp.set_r(row + k, CGAL::EQUAL);
     }
@@ -326,15 +326,14 @@ std::optional<std::array<mpq_class, 3>> lp_point(const convex_set& s) {
     throw std::runtime_error("lp_point: no pricing strategy gave a verified answer");
 }
 
-std::optional<bool> qp_ball_meets(const convex_set& s, const std::array<double, 3>& c, double r) {
-    // minimise |x|^2 / 2 - c . x = (|x - c|^2 - |c|^2) / 2 over the set (x: variables 0, 1, 2)
-    program qp(CGAL::EQUAL, false, 0.0, false, 0.0);
-    int var = 3, row = 0;
-    add(qp, var, row, s);
-    for (int k = 0; k < 3; ++k) {
-        qp.set_d(k, k, 1.0); // CGAL's D is twice the quadratic form
-        qp.set_c(k, -c[static_cast<unsigned>(k)]);
-    }
+namespace {
+// The exact minimum of the QP's objective, once CGAL's certificate check accepts a pricing
+// strategy's solution: std::nullopt when none is accepted, an empty set as infeasible.
+struct qp_minimum {
+    bool infeasible = false;
+    mpq_class value;
+};
+std::optional<qp_minimum> minimum(const program& qp) {
     const auto gmpq = [](const CGAL::Gmpzf& f) { // m 2^e, exactly
         mpq_class q(mpz_class(f.man()));
         if (f.exp() >= 0) mpq_mul_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(f.exp()));
@@ -346,15 +345,48 @@ std::optional<bool> qp_ball_meets(const convex_set& s, const std::array<double, 
         options.set_pricing_strategy(pricing);
         auto sol = CGAL::solve_quadratic_program(qp, CGAL::Gmpzf(), options);
         if (!sol.solves_quadratic_program(qp)) continue; // CGAL's own certificate check
-        if (sol.is_infeasible()) return false;
+        if (sol.is_infeasible()) return qp_minimum{true, 0};
         if (!sol.is_optimal()) continue;
         const auto v = sol.objective_value();
-        const mpq_class half = gmpq(v.numerator()) / gmpq(v.denominator());
-        const qpoint q = rational(c);
-        const mpq_class rr = mpq_class(r) * mpq_class(r);
-        return 2 * half + dot(q, q) <= rr;
+        return qp_minimum{false, gmpq(v.numerator()) / gmpq(v.denominator())};
     }
     return std::nullopt;
+}
+} // namespace
+
+std::optional<bool> qp_ball_meets(const convex_set& s, const std::array<double, 3>& c, double r) {
+    // minimise |x|^2 / 2 - c . x = (|x - c|^2 - |c|^2) / 2 over the set (x: variables 0, 1, 2)
+    program qp(CGAL::EQUAL, false, 0.0, false, 0.0);
+    int var = 3, row = 0;
+    add(qp, var, row, s);
+    for (int k = 0; k < 3; ++k) {
+        qp.set_d(k, k, 1.0); // CGAL's D is twice the quadratic form
+        qp.set_c(k, -c[static_cast<unsigned>(k)]);
+    }
+    const auto m = minimum(qp);
+    if (!m) return std::nullopt;
+    if (m->infeasible) return false;
+    const qpoint q = rational(c);
+    const mpq_class rr = mpq_class(r) * mpq_class(r);
+    return 2 * m->value + dot(q, q) <= rr;
+}
+
+std::optional<bool> qp_sets_within(const convex_set& a, const convex_set& b, double r1, double r2) {
+    // minimise |x - y|^2 / 2 over x in a (variables 0, 1, 2) and y in b (3, 4, 5)
+    program qp(CGAL::EQUAL, false, 0.0, false, 0.0);
+    int var = 6, row = 0;
+    add(qp, var, row, a, 0);
+    add(qp, var, row, b, 3);
+    for (int k = 0; k < 3; ++k) { // CGAL's D is twice the quadratic form, its lower triangle
+        qp.set_d(k, k, 1.0);
+        qp.set_d(k + 3, k + 3, 1.0);
+        qp.set_d(k + 3, k, -1.0);
+    }
+    const auto m = minimum(qp);
+    if (!m) return std::nullopt;
+    if (m->infeasible) return false;
+    const mpq_class reach = abs(mpq_class(r1)) + abs(mpq_class(r2));
+    return 2 * m->value <= reach * reach;
 }
 
 bool ball_in_rows(const convex_set& s, const std::array<double, 3>& c, double r) {

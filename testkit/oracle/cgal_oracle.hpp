@@ -85,6 +85,10 @@ std::optional<bool> lp_intersect_verified(const convex_set& a, const convex_set&
 // QP_solver over Gmpzf, the solution accepted once CGAL's certificate check does), compared with
 // r^2 in rationals; std::nullopt when every pricing strategy's answer is rejected.
 std::optional<bool> qp_ball_meets(const convex_set& s, const std::array<double, 3>& c, double r);
+// Do the sets a and b come within |r1| + |r2| of each other (the sum exact)? The exact minimum of
+// |x - y|^2 over x in a and y in b (CGAL's QP_solver over Gmpzf, certificate-checked), in
+// rationals; std::nullopt when every pricing strategy's answer is rejected.
+std::optional<bool> qp_sets_within(const convex_set& a, const convex_set& b, double r1, double r2 = 0.0);
 // Is that ball inside every half-space and slab of s (given by those alone)? n . c + |r| |n| <= bound
 // for each side, in rationals.
 bool ball_in_rows(const convex_set& s, const std::array<double, 3>& c, double r);
@@ -112,6 +116,12 @@ convex_set lp_set(const flat& f);
 bool flat_contains(const flat& a, const flat& b);
 bool flat_intersect(const flat& a, const flat& b);
 bool flat_intersect_epick(const flat& a, const flat& b);
+// The ball |x - c| <= |r| against a flat shape or a solid: CGAL's squared_distance(Point_3, X)
+// against r r (exact over Epeck; rounded over Epick, a peer for timing), a coplanar tetrahedron as
+// its four faces. (Not CGAL's do_intersect(Sphere_3, X): for a triangle and a tetrahedron it reads
+// Sphere_3 as the surface, so a triangle inside the ball does not meet it.)
+bool ball_flat(const flat& a, const std::array<double, 3>& c, double r);
+bool ball_flat_epick(const flat& a, const std::array<double, 3>& c, double r);
 // CGAL's do_intersect itself, also for the ray-ray and line-ray pairs where it is wrong (the
 // fixtures show it).
 bool flat_do_intersect_cgal(const flat& a, const flat& b);

@@ -64,6 +64,16 @@ std::string described(const S& s) {
         out += " " + described(s.center) + " r " + std::to_string(s.radius);
     return out;
 }
+// Whether the shape is a point set: a polygon3 whose vertices are not coplanar is none (its queries
+// answer for a procedure, shapes/polygon3.cppm), so intersects and intersection need not agree on it.
+template <class S>
+bool a_set(const S&) {
+    return true;
+}
+bool a_set(const polygon3& g) {
+    const auto made = polygon3::make(g.vertices, g.ring_ends);
+    return made.has_value() || made.error().code != errc::non_planar_polygon;
+}
 // On every input, whatever it is: aggressive => exact => conservative, and classify never
 // contradicts exact (yes => exact yes, no => exact no). Broken promises are counted here.
 long contract_broken = 0;
@@ -83,7 +93,7 @@ void every_tier(const A& a, const B& b, long& yes) {
         const bool ha = intersection<aggressive>(a, b).has_value();
         (void)intersection<approximate>(a, b);
         promise(ha, he, hc, certainty::uncertain, "intersection");
-        if (he != ex && ++contract_broken <= 5)
+        if (he != ex && a_set(a) && a_set(b) && ++contract_broken <= 5)
             std::printf("  intersection %d, intersects %d: %s %s\n", he, ex, described(a).c_str(), described(b).c_str());
     }
 }
@@ -290,7 +300,25 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
         every_contains(fr, ball, yes);
         every_contains(kd, ball, yes);
         yes += method::frustum_sphere_planes(fr, ball);
-        n += 6 * 5 + 1;
+        every_tier(ob, ball, yes);
+        every_tier(ball, ob, yes);
+        yes += method::obb_sphere_closest_point(ob, ball);
+        n += 8 * 5 + 2;
+        // a ball against the flat shapes and the tetrahedron, and a capsule against every partner
+        const capsule3 cap{p(), p(), special(r)};
+        every_tier(seg, ball, yes);
+        every_tier(ball, pl, yes);
+        every_tier(t, ball, yes);
+        every_tier(ball, te, yes);
+        every_tier(cap, q, yes);
+        every_tier(ball, cap, yes);
+        every_tier(cap, cap, yes);
+        every_tier(seg, cap, yes);
+        every_tier(cap, pl, yes);
+        every_tier(t, cap, yes);
+        every_tier(cap, te, yes);
+        every_tier(b, cap, yes);
+        n += 12 * 5;
         // in the plane
         auto p2 = [&] { return point2{special(r), special(r)}; };
         auto v2 = [&] { return vec2{special(r), special(r)}; };

@@ -34,6 +34,10 @@ TEST_CASE("shapes: make() reports why input is invalid", "[shapes]") {
     refused(plane3::make({0, 0, 0}, 1), errc::zero_normal);
     refused(plane3::make({0, 0, 1}, nan_), errc::not_finite);
     refused(sphere3::make({0, 0, 0}, -1), errc::negative_radius);
+    refused(capsule3::make({0, 0, 0}, {1, 1, 1}, -1), errc::negative_radius);
+    refused(capsule3::make({0, 0, 0}, {1, 1, 1}, nan_), errc::not_finite);
+    refused(capsule3::make({0, 0, inf_}, {1, 1, 1}, 1), errc::not_finite);
+    CHECK(capsule3::make({0, 0, 0}, {0, 0, 0}, 0).has_value()); // a point
     refused(sphere3::make({0, 0, 0}, nan_), errc::not_finite);
     refused(aabb3::make({0, 0, 1}, {1, 1, 0}), errc::inverted_box);
     refused(aabb3::make({0, 0, 0}, {1, inf_, 1}), errc::not_finite);

@@ -54,6 +54,7 @@ using namespace audit_run;
 
 std::string shape_name(const point3*) { return "point3"; }
 std::string shape_name(const sphere3*) { return "sphere3"; }
+std::string shape_name(const capsule3*) { return "capsule3"; }
 std::string shape_name(const aabb3*) { return "aabb3"; }
 std::string shape_name(const ray3*) { return "ray3"; }
 std::string shape_name(const segment3*) { return "segment3"; }

@@ -63,6 +63,7 @@ constexpr const char* shape_name() {
     else if constexpr (std::is_same_v<T, aabb3>) return "aabb";
     else if constexpr (std::is_same_v<T, obb3>) return "obb";
     else if constexpr (std::is_same_v<T, sphere3>) return "sphere";
+    else if constexpr (std::is_same_v<T, capsule3>) return "capsule";
     else if constexpr (std::is_same_v<T, convex_polyhedron3>) return "convex_polyhedron";
     else if constexpr (std::is_same_v<T, frustum3>) return "frustum";
     else if constexpr (std::is_same_v<T, mesh3>) return "mesh";

@@ -10,6 +10,11 @@ import :engines.sphere;
 import :engines.kdop;
 import :engines.halfspace_slabs;
 import :engines.ball_halfspaces;
+import :engines.ball_obb;
+import :engines.ball_flat;
+import :engines.linear;
+import :engines.separating_axes;
+import :engines.tetrahedron;
 import :exactly;
 
 export namespace incidence::detail {
@@ -93,6 +98,44 @@ template <class K>
     }) != sign::negative;
 }
 
+// segment3, line3, plane3, triangle3 and tetrahedron3 against sphere3 (closed shapes, the closed
+// ball): ball_flat.cppm's closest features. Semantics: touching counts; a segment whose ends agree
+// is a point, a line with a zero direction its origin, a plane with a zero normal everything when
+// its offset is 0 and nothing otherwise, a collinear triangle or a flat tetrahedron its hull;
+// unchecked negative radii act as |r|; a NaN or infinite number: no shape, so no.
+
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const segment3& g, const sphere3& s) {
+    return finite(g) && ball::usable(s) && ball_flat::meets(k, as_linear(g), s.center, s.radius);
+}
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const line3& g, const sphere3& s) {
+    return finite(g) && ball::usable(s) && ball_flat::meets(k, as_linear(g), s.center, s.radius);
+}
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const plane3& p, const sphere3& s) {
+    return finite(p.normal) && finite(p.offset) && ball::usable(s) && ball_flat::meets(k, p, s.center, s.radius);
+}
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const sphere3& s, const triangle3& t) {
+    return finite(t) && ball::usable(s) && ball_flat::meets(k, t, s.center, s.radius);
+}
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const sphere3& s, const tetrahedron3& t) {
+    return finite(t) && ball::usable(s) && ball_flat::meets(k, t, s.center, s.radius);
+}
+
+// obb3 against sphere3 (closed box read as the parallelepiped its axes span, closed ball):
+// ball_obb.cppm's box coordinates. Semantics: touching at a face, an edge or a corner counts; a box
+// with dependent axes is the flat set they span; unchecked negative radii act as |r|; NaN,
+// infinite or negative extents and non-finite input: no box, so no.
+
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const obb3& b, const sphere3& s) {
+    if (!sat::well_formed(b) || !finite(b) || !ball::usable(s)) return false;
+    return ball_obb::meets(k, b, s);
+}
+
 // convex_polyhedron3, frustum3 and kdop<K> against sphere3 (the closed ball): the half-space rows
 // of ball_halfspaces.cppm (a k-DOP's slabs as its 2 x K/2 rows, read exactly).
 // Semantics: the closed half-space set of convex_polyhedron_point.cppm (possibly empty or
@@ -131,6 +174,12 @@ extern template bool exactly<intersects_body>(const aabb3&, const sphere3&);
 extern template bool exactly<intersects_body>(const point3&, const sphere3&);
 extern template bool exactly<intersects_body>(const ray3&, const sphere3&);
 extern template bool exactly<intersects_body>(const sphere3&, const sphere3&);
+extern template bool exactly<intersects_body>(const obb3&, const sphere3&);
+extern template bool exactly<intersects_body>(const segment3&, const sphere3&);
+extern template bool exactly<intersects_body>(const line3&, const sphere3&);
+extern template bool exactly<intersects_body>(const plane3&, const sphere3&);
+extern template bool exactly<intersects_body>(const sphere3&, const triangle3&);
+extern template bool exactly<intersects_body>(const sphere3&, const tetrahedron3&);
 extern template bool exactly<intersects_body>(const convex_polyhedron3&, const sphere3&);
 extern template bool exactly<intersects_body>(const frustum3&, const sphere3&);
 extern template bool exactly<intersects_body>(const kdop<6>&, const sphere3&);

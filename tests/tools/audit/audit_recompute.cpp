@@ -1,6 +1,6 @@
 // Recomputes one point of the audit's stability curves independently of the audit's truth: the
 // same generated cases (tools/audit/generators.hpp, same seed streams), with the true answer
-// from CGAL Epeck (the exact LP or QP for the OBB, k-DOP and half-space pairs) instead of the exact tier. Prints one JSON object per level, one per line:
+// from CGAL Epeck (the exact LP or QP for the OBB, k-DOP, half-space and ball-box pairs) instead of the exact tier. Prints one JSON object per level, one per line:
 //   {"family": ..., "level": L, "skipped": n, "methods": {"name": [cases, wrong, fp, fn], ...}}
 // Usage: audit_recompute SEED CASES FAMILY_INDEX LEVEL[,LEVEL...]   or   audit_recompute --families
 #include "testkit/oracle/cgal_oracle.hpp"
@@ -133,6 +133,27 @@ int ball_truth(const P& a, const sphere3& s) {
 int truth(const frustum3& a, const sphere3& s) { return ball_truth(a, s); }
 int truth(const convex_polyhedron3& a, const sphere3& s) { return ball_truth(a, s); }
 int truth(const kdop<14>& a, const sphere3& s) { return ball_truth(a, s); }
+int truth(const obb3& a, const sphere3& s) { return ball_truth(a, s); }
+int truth(const segment3& a, const sphere3& s) { return ball_truth(a, s); }
+int truth(const line3& a, const sphere3& s) { return ball_truth(a, s); }
+int truth(const plane3& a, const sphere3& s) { return ball_truth(a, s); }
+int truth(const sphere3& s, const triangle3& a) { return ball_truth(a, s); }
+int truth(const sphere3& s, const tetrahedron3& a) { return ball_truth(a, s); }
+// A capsule: the exact QP (the squared distance between its segment and the partner's core).
+template <class B>
+int capsule_truth(const capsule3& c, const B& b) {
+    std::optional<bool> t;
+    const auto seg = support::lp(segment3{c.a, c.b});
+    if constexpr (std::is_same_v<B, sphere3>) t = oracle::qp_sets_within(seg, support::lp(b.center), c.radius, b.radius);
+    else if constexpr (std::is_same_v<B, capsule3>) t = oracle::qp_sets_within(seg, support::lp(segment3{b.a, b.b}), c.radius, b.radius);
+    else t = oracle::qp_sets_within(seg, support::lp(b), c.radius);
+    return t ? int(*t) : -1;
+}
+template <class B>
+int truth(const capsule3& c, const B& b) {
+    return capsule_truth(c, b);
+}
+int truth(const aabb3& b, const capsule3& c) { return capsule_truth(c, b); }
 
 // The other flat pairs: CGAL Epeck (tests/oracle/cgal_flat.cpp).
 template <class A, class B>

@@ -1,0 +1,243 @@
+// obb3 against sphere3 (closed box read as the parallelepiped its axes span, closed ball).
+// Semantics: the points o + A s, |s_j| <= h_j (A's columns the axes exactly as given, so the box
+// may be skew, flat or a point), and |x - c| <= |r| (an unchecked negative radius acts as |r|, as
+// in point_sphere). Touching at a face, an edge or a corner counts.
+// Method (exact tiers): the ball meets the box iff min over the box of |c - o - A s|^2 <= r^2, a
+// convex quadratic program in the box's coordinates s. Its minimiser satisfies KKT with each
+// coordinate at -h_j, at +h_j or free (27 cases: the box's 8 corners, 12 edges, 6 faces and its
+// inside), and some minimiser has independent free axes (move along A's null space within the free
+// coordinates until one is bound), so only those sets are tried. With w = (c - o) 1 - sum over
+// bound j of a_j (+-h_j) (degree 2) and q = c - x* the residual:
+//   none free (corner): q = w; sign(a_l . w) agrees with the bound's side or is zero (degree 3);
+//                       then r^2 - |w|^2 >= 0 decides (degree 4).
+//   a_j free (edge):    a_j != 0; |a_j . w| <= h_j |a_j|^2 (degree 3); for bound l,
+//                       |a_j|^2 (a_l . w) - (a_l . a_j)(a_j . w) on the bound's side (degree 5);
+//                       then |a_j|^2 (r^2 - |w|^2) + (a_j . w)^2 >= 0 decides (degree 6).
+//   a_j, a_k free:      n = a_j x a_k != 0; the free coordinates times |n|^2 by Cramer's rule,
+//   (face)              |a_k|^2 (a_j . w) - (a_j . a_k)(a_k . w), within h_j |n|^2 (degree 5);
+//                       q = (n . w) n / |n|^2, so sign(n . w) sign(a_l . n) on the bound's side;
+//                       then r^2 |n|^2 - (n . w)^2 >= 0 decides (degree 8).
+//   all free (inside):  det A != 0; |(a_k x a_l) . (c - o)| <= h_j |det A| for each j (degree 4,
+//                       as contains(obb3, point3)): yes.
+// Every value is times a lifted 1 where its degree needs it, so each sign is homogeneous. The set
+// that plain double names (the centre's clamped coordinates) is tried first, then all 27.
+// Source: Ericson, Real-Time Collision Detection (2005), sections 5.1.4 (closest point on an OBB)
+// and 5.2.5 (sphere against box); Boyd and Vandenberghe, Convex Optimization (2004), section
+// 5.5.3 (KKT conditions).
+// Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
+// magnitudes lie in [2^-500, 2^500], wrong only when a deciding sign is within 2^-40 of its
+// permanent (tests/query/intersects/obb_sphere.cpp).
+module;
+#include <array>
+#include <type_traits>
+export module incidence.detail:engines.ball_obb;
+import incidence.core;
+import incidence.arith;
+import incidence.shapes;
+import :engines.separating_axes;
+
+export namespace incidence::detail {
+
+namespace ball_obb {
+
+// Each box coordinate: -1 (at -h_j), +1 (at +h_j) or 0 (free).
+using active = std::array<int, 3>;
+
+// What a set says: whether it is the minimiser's (KKT holds) and then whether the ball meets.
+struct found {
+    bool any = false;
+    bool meets = false;
+};
+
+struct frame {
+    point3 o, c;
+    vec3 a[3];
+    double h[3];
+    double r;
+};
+
+// w = (c - o) 1 - sum over bound j of a_j (+-h_j): c less the bound coordinates' part of x*.
+template <class L>
+[[nodiscard]] constexpr auto residual(L l, const frame& f, const active& at) {
+    const double t0 = at[0] * f.h[0], t1 = at[1] * f.h[1], t2 = at[2] * f.h[2];
+    const auto e = arith::lift(l, f.c) - arith::lift(l, f.o);
+    return arith::scaled(e, l(1.0)) - arith::scaled(arith::lift(l, f.a[0]), l(t0)) - arith::scaled(arith::lift(l, f.a[1]), l(t1)) -
+           arith::scaled(arith::lift(l, f.a[2]), l(t2));
+}
+
+// A value's side agrees with the bound's (+1: >= 0, -1: <= 0).
+[[nodiscard]] constexpr bool agrees(sign s, int side) { return s == sign::zero || (side > 0) == (s == sign::positive); }
+
+template <class K>
+[[nodiscard]] constexpr found corner(K& k, const frame& f, const active& at) {
+    for (unsigned l = 0; l < 3; ++l) {
+        const vec3 al = f.a[l];
+        if (!agrees(k.sgn([=](auto L) { return arith::dot(arith::lift(L, al), residual(L, f, at)); }), at[l])) return {};
+    }
+    const double r = f.r;
+    return {true, k.sgn([=](auto L) {
+                const auto w = residual(L, f, at);
+                const auto one = L(1.0);
+                return L(r) * L(r) * (one * one) - arith::dot(w, w);
+            }) != sign::negative};
+}
+
+template <class K>
+[[nodiscard]] constexpr found edge(K& k, const frame& f, const active& at, unsigned j) {
+    const vec3 aj = f.a[j];
+    if (aj.x == 0.0 && aj.y == 0.0 && aj.z == 0.0) return {};
+    const double h = f.h[j];
+    const auto along = [=](auto L) { return arith::dot(arith::lift(L, aj), residual(L, f, at)); };
+    const auto room = [=](auto L) { return L(h) * arith::dot(arith::lift(L, aj), arith::lift(L, aj)); };
+    if (k.sgn([=](auto L) { return room(L) - along(L); }) == sign::negative) return {};
+    if (k.sgn([=](auto L) { return room(L) + along(L); }) == sign::negative) return {};
+    for (unsigned l = 0; l < 3; ++l) {
+        if (l == j) continue;
+        const vec3 al = f.a[l];
+        if (!agrees(k.sgn([=](auto L) {
+                const auto A = arith::lift(L, aj), B = arith::lift(L, al);
+                return arith::dot(A, A) * arith::dot(B, residual(L, f, at)) - arith::dot(B, A) * along(L);
+            }),
+                    at[l]))
+            return {};
+    }
+    const double r = f.r;
+    return {true, k.sgn([=](auto L) {
+                const auto A = arith::lift(L, aj);
+                const auto w = residual(L, f, at);
+                const auto one = L(1.0);
+                const auto t = along(L);
+                return arith::dot(A, A) * (L(r) * L(r) * (one * one) - arith::dot(w, w)) + t * t;
+            }) != sign::negative};
+}
+
+template <class K>
+[[nodiscard]] constexpr found face(K& k, const frame& f, const active& at, unsigned j, unsigned m, unsigned l) {
+    const vec3 aj = f.a[j], am = f.a[m], al = f.a[l];
+    const auto normal = [=](auto L) { return arith::cross(arith::lift(L, aj), arith::lift(L, am)); };
+    const auto nn = [=](auto L) {
+        const auto n = normal(L);
+        return arith::dot(n, n);
+    };
+    if (arith::is_zero<arith::hint::often_zero>(k, nn)) return {}; // parallel axes
+    // the free coordinates times |n|^2, against +-h |n|^2
+    const vec3 free[2][2] = {{aj, am}, {am, aj}};
+    const double hs[2] = {f.h[j], f.h[m]};
+    for (unsigned x = 0; x < 2; ++x) {
+        const vec3 u = free[x][0], v = free[x][1];
+        const double h = hs[x];
+        const auto coord = [=](auto L) {
+            const auto U = arith::lift(L, u), V = arith::lift(L, v);
+            const auto w = residual(L, f, at);
+            return arith::dot(V, V) * arith::dot(U, w) - arith::dot(U, V) * arith::dot(V, w);
+        };
+        if (k.sgn([=](auto L) { return L(h) * nn(L) - coord(L); }) == sign::negative) return {};
+        if (k.sgn([=](auto L) { return L(h) * nn(L) + coord(L); }) == sign::negative) return {};
+    }
+    const sign across = k.sgn([=](auto L) { return arith::dot(normal(L), residual(L, f, at)); });
+    if (across != sign::zero) {
+        const sign turn = k.sgn([=](auto L) { return arith::dot(arith::lift(L, al), normal(L)); });
+        const sign q = turn == sign::zero ? sign::zero : (across == turn ? sign::positive : sign::negative);
+        if (!agrees(q, at[l])) return {};
+    }
+    const double r = f.r;
+    return {true, k.sgn([=](auto L) {
+                const auto one = L(1.0);
+                const auto t = arith::dot(normal(L), residual(L, f, at));
+                return L(r) * L(r) * (one * one) * nn(L) - t * t;
+            }) != sign::negative};
+}
+
+// Is c inside the box? (No answer for a flat box: its faces cover it.)
+template <class K>
+[[nodiscard]] constexpr found inside(K& k, const frame& f) {
+    const vec3 a0 = f.a[0], a1 = f.a[1], a2 = f.a[2];
+    const auto det = [=](auto L) { return arith::det3(arith::lift(L, a0), arith::lift(L, a1), arith::lift(L, a2)); };
+    if (arith::is_zero<arith::hint::often_zero>(k, det)) return {};
+    for (unsigned j = 0; j < 3; ++j) {
+        const vec3 u = f.a[(j + 1) % 3], v = f.a[(j + 2) % 3];
+        const double h = f.h[j];
+        if (k.sgn([=](auto L) {
+                const auto n = arith::cross(arith::lift(L, u), arith::lift(L, v));
+                return L(h) * sat::magnitude(det(L)) - L(1.0) * sat::magnitude(arith::dot(n, arith::lift(L, f.c) - arith::lift(L, f.o)));
+            }) == sign::negative)
+            return {};
+    }
+    return {true, true};
+}
+
+// Is the set `at` the minimiser's, and its verdict?
+template <class K>
+[[nodiscard]] constexpr found try_set(K& k, const frame& f, const active& at) {
+    unsigned free[3], n = 0, bound = 0;
+    for (unsigned j = 0; j < 3; ++j)
+        if (at[j] == 0) free[n++] = j;
+        else bound = j;
+    switch (n) {
+    case 0: return corner(k, f, at);
+    case 1: return edge(k, f, at, free[0]);
+    case 2: return face(k, f, at, free[0], free[1], bound);
+    default: return inside(k, f);
+    }
+}
+
+// The set plain double names: the centre's coordinates along each axis (the axes are near
+// orthonormal for a checked box), clamped; a zero axis is bound.
+[[nodiscard]] constexpr active guess(const frame& f) {
+    active at{};
+    const vec3 e = f.c - f.o;
+    for (unsigned j = 0; j < 3; ++j) {
+        const double aa = dot(f.a[j], f.a[j]);
+        const double s = aa > 0.0 ? dot(f.a[j], e) / aa : 0.0;
+        at[j] = !(aa > 0.0) ? 1 : s >= f.h[j] ? 1 : s <= -f.h[j] ? -1 : 0;
+    }
+    return at;
+}
+
+// Does the ball meet the box (finite, extents >= 0: the caller checks)?
+template <class K>
+[[nodiscard]] constexpr bool meets(K& k, const obb3& b, const sphere3& s) {
+    const frame f{
+        b.center, s.center, {b.axes[0], b.axes[1], b.axes[2]}, {b.half_extents[0], b.half_extents[1], b.half_extents[2]}, s.radius};
+    const active first = guess(f);
+    if (const found g = try_set(k, f, first); g.any) return g.meets;
+    for (int code = 0; code < 27; ++code) {
+        const active at{code % 3 - 1, code / 3 % 3 - 1, code / 9 - 1};
+        if (at == first) continue;
+        if (const found g = try_set(k, f, at); g.any) return g.meets;
+    }
+    // only plain double's signs, within rounding of zero, can refute every set (some set is the
+    // minimiser's): the guess's bound coordinates' corner distance then, or yes when it is inside
+    if constexpr (std::is_same_v<K, arith::approx_kernel>) {
+        if (first == active{}) return true;
+        const double r = f.r;
+        return k.sgn([=](auto L) {
+            const auto w = residual(L, f, first);
+            const auto one = L(1.0);
+            return L(r) * L(r) * (one * one) - arith::dot(w, w);
+        }) != sign::negative;
+    }
+    return false;
+}
+
+} // namespace ball_obb
+
+// The classic test, an alternative to obb_sphere (method::obb_sphere_closest_point): the box's point
+// nearest the centre by clamping the centre's coordinates along each axis (exact for orthonormal
+// axes only), then |q - c|^2 <= r^2, in plain double.
+// Source: Ericson, Real-Time Collision Detection (2005), sections 5.1.4 (ClosestPtPointOBB) and
+// 5.2.5 (TestSphereOBB).
+[[nodiscard]] constexpr bool obb_sphere_closest_point(const obb3& b, const sphere3& s) {
+    const vec3 d = s.center - b.center;
+    vec3 q{0, 0, 0}; // the nearest point, less the centre
+    for (unsigned i = 0; i < 3; ++i) {
+        const double h = b.half_extents[i];
+        double t = dot(d, b.axes[i]);
+        t = t > h ? h : (t < -h ? -h : t);
+        q = q + b.axes[i] * t;
+    }
+    const vec3 v = d - q;
+    return dot(v, v) <= s.radius * s.radius;
+}
+
+} // namespace incidence::detail
