@@ -40,6 +40,7 @@ export import :intersects.polygon2_pairs;
 export import :intersects.polygon_pairs;
 export import :intersects.sphere_pairs;
 export import :intersects.capsule_pairs;
+export import :contains.capsule_pairs;
 export import :intersects.tetrahedron_pairs;
 export import :intersects.triangle_pairs;
 export import :contains.box_pairs;

@@ -321,8 +321,8 @@ bool contains_truth(const A& a, const B& b) {
         box_arrays(b, c, x);
         const double tv[12] = {a.a.x, a.a.y, a.a.z, a.b.x, a.b.y, a.b.z, a.c.x, a.c.y, a.c.z, a.d.x, a.d.y, a.d.z};
         return oracle::box_in_tetrahedron(c, x, b.half_extents.data(), tv);
-    } else if constexpr (std::is_same_v<A, sphere3>) {
-        const auto v = corners(b);
+    } else if constexpr (std::is_same_v<A, sphere3>) { // a box, a segment, a triangle or a tetrahedron: its vertices
+        const auto v = vertices(b);
         std::vector<double> xyz;
         for (const auto& p : v) xyz.insert(xyz.end(), {p.x, p.y, p.z});
         double sc[3];

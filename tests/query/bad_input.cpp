@@ -318,7 +318,17 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
         every_tier(t, cap, yes);
         every_tier(cap, te, yes);
         every_tier(b, cap, yes);
-        n += 12 * 5;
+        every_contains(ball, seg, yes);
+        every_contains(ball, t, yes);
+        every_contains(ball, te, yes);
+        every_contains(cap, q, yes);
+        every_contains(cap, seg, yes);
+        every_contains(cap, t, yes);
+        every_contains(cap, te, yes);
+        every_contains(cap, b, yes);
+        every_contains(b, cap, yes);
+        every_contains(ob, cap, yes);
+        n += 12 * 5 + 10 * 5;
         // in the plane
         auto p2 = [&] { return point2{special(r), special(r)}; };
         auto v2 = [&] { return vec2{special(r), special(r)}; };

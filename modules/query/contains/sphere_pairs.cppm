@@ -142,6 +142,30 @@ template <class K>
     }) != sign::negative;
 }
 
+// contains(sphere3, segment3 | triangle3 | tetrahedron3): the ball is convex, so it holds the hull
+// of the vertices iff it holds each vertex (|v - c|^2 <= r^2, degree 2). Semantics: a vertex on the
+// sphere counts; unchecked negative radii act as |r|; a NaN or infinite number holds nothing.
+
+template <class K, std::size_t N>
+[[nodiscard]] constexpr bool holds_all(K& k, const sphere3& s, const std::array<point3, N>& v) {
+    if (!ball::usable(s)) return false;
+    for (const point3& p : v)
+        if (!finite(p) || !intersects(k, p, s)) return false;
+    return true;
+}
+template <class K>
+[[nodiscard]] constexpr bool contains(K& k, const sphere3& s, const segment3& g) {
+    return holds_all(k, s, std::array{g.a, g.b});
+}
+template <class K>
+[[nodiscard]] constexpr bool contains(K& k, const sphere3& s, const triangle3& t) {
+    return holds_all(k, s, std::array{t.a, t.b, t.c});
+}
+template <class K>
+[[nodiscard]] constexpr bool contains(K& k, const sphere3& s, const tetrahedron3& t) {
+    return holds_all(k, s, std::array{t.a, t.b, t.c, t.d});
+}
+
 // contains(convex_polyhedron3 | frustum3 | kdop<K>, sphere3): the ball in every half-space
 // (ball_halfspaces.cppm; semantics of intersects/sphere_pairs.cppm: a set touching the ball from
 // inside holds it).
@@ -173,6 +197,9 @@ extern template bool exactly<contains_body>(const obb3&, const sphere3&);
 extern template bool exactly<contains_body>(const sphere3&, const obb3&);
 extern template bool exactly<contains_body>(const sphere3&, const point3&);
 extern template bool exactly<contains_body>(const sphere3&, const sphere3&);
+extern template bool exactly<contains_body>(const sphere3&, const segment3&);
+extern template bool exactly<contains_body>(const sphere3&, const triangle3&);
+extern template bool exactly<contains_body>(const sphere3&, const tetrahedron3&);
 extern template bool exactly<contains_body>(const convex_polyhedron3&, const sphere3&);
 extern template bool exactly<contains_body>(const frustum3&, const sphere3&);
 extern template bool exactly<contains_body>(const kdop<6>&, const sphere3&);

@@ -23,8 +23,11 @@ TEST_CASE("aabb_capsule: fixtures", "[aabb_capsule]") {
     const aabb3 b{{0, 0, 0}, {4, 4, 4}};
     CHECK(intersects(b, capsule3{{-10, -3, -4}, {10, -3, -4}, 5})); // along the edge y = z = 0
     CHECK_FALSE(intersects(b, capsule3{{-10, -3, -4}, {10, -3, -4}, 0x1.3ffffffffffffp+2}));
-    CHECK(intersects(capsule3{{2, 2, -5}, {2, 2, 50}, 0}, b));     // through it
-    CHECK(intersects(b, capsule3{{-3, -4, 0}, {-30, -40, 0}, 5})); // an end at the corner
+    CHECK(intersects(capsule3{{2, 2, -5}, {2, 2, 50}, 0}, b)); // through it
+    CHECK(contains(b, capsule3{{1, 2, 2}, {3, 2, 2}, 1}));     // touching the faces x = 0 and x = 4 from inside
+    CHECK_FALSE(contains(b, capsule3{{1, 2, 2}, {3, 2, 2}, 0x1.0000000000001p+0}));
+    CHECK(contains(capsule3{{2, 2, -1}, {2, 2, 5}, 3}, aabb3{{2, 2, 0}, {2, 2, 4}})); // a flat box on the axis
+    CHECK(intersects(b, capsule3{{-3, -4, 0}, {-30, -40, 0}, 5}));                    // an end at the corner
     CHECK_FALSE(intersects(b, capsule3{{-3, -4, 0}, {-30, -40, 0}, 0x1.3ffffffffffffp+2}));
     // parallel to the face x = 4, at distance 3 from it
     CHECK(intersects(b, capsule3{{7, -4, 2}, {7, 4, 2}, 3}));
@@ -34,6 +37,11 @@ TEST_CASE("aabb_capsule: fixtures", "[aabb_capsule]") {
 }
 TEST_CASE("aabb_capsule: oracle, random and near-degenerate", "[aabb_capsule][oracle]") {
     support::capsule_oracle<aabb3>("aabb_capsule", support::cases(10000), approx_bound);
+}
+
+TEST_CASE("aabb_capsule: contains", "[aabb_capsule][oracle]") {
+    support::capsule_contains<aabb3>("aabb_capsule", support::cases(10000), approx_bound);
+    support::capsule_contained<aabb3>("aabb_capsule", support::cases(10000), approx_bound);
 }
 
 } // namespace test_query_aabb_capsule

@@ -25,12 +25,18 @@ TEST_CASE("capsule_point: fixtures", "[capsule_point]") {
     CHECK_FALSE(intersects(c, point3{5, 3, 0x1.0000000000001p+2}));
     CHECK(intersects(point3{13, 4, 0}, c)); // on the cap beyond b
     CHECK_FALSE(intersects(point3{13, 0x1.0000000000001p+2, 0}, c));
-    CHECK(intersects(capsule3{{1, 1, 1}, {1, 1, 1}, 3}, point3{1, 1, 4}));   // a ball
+    CHECK(intersects(capsule3{{1, 1, 1}, {1, 1, 1}, 3}, point3{1, 1, 4})); // a ball
+    CHECK(contains(c, point3{5, 3, 4}));
+    CHECK_FALSE(contains(c, point3{5, 3, 0x1.0000000000001p+2}));
     CHECK(intersects(capsule3{{0, 0, 0}, {10, 0, 0}, -5}, point3{5, 3, 4})); // an unchecked negative radius acts as |r|
     CHECK_FALSE(intersects(capsule3{{0, 0, 0}, {10, 0, __builtin_nan("")}, 5}, point3{0, 0, 0}));
 }
 TEST_CASE("capsule_point: oracle, random and near-degenerate", "[capsule_point][oracle]") {
     support::capsule_oracle<point3>("capsule_point", support::cases(10000), approx_bound);
+}
+
+TEST_CASE("capsule_point: contains", "[capsule_point][oracle]") {
+    support::capsule_contains<point3>("capsule_point", support::cases(10000), approx_bound);
 }
 
 } // namespace test_query_capsule_point

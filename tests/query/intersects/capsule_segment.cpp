@@ -32,4 +32,8 @@ TEST_CASE("capsule_segment: oracle, random and near-degenerate", "[capsule_segme
     support::capsule_oracle<segment3>("capsule_segment", support::cases(10000), approx_bound);
 }
 
+TEST_CASE("capsule_segment: contains", "[capsule_segment][oracle]") {
+    support::capsule_contains<segment3>("capsule_segment", support::cases(10000), approx_bound);
+}
+
 } // namespace test_query_capsule_segment

@@ -34,4 +34,8 @@ TEST_CASE("capsule_tetrahedron: oracle, random and near-degenerate", "[capsule_t
     support::capsule_oracle<tetrahedron3>("capsule_tetrahedron", support::cases(10000), approx_bound);
 }
 
+TEST_CASE("capsule_tetrahedron: contains", "[capsule_tetrahedron][oracle]") {
+    support::capsule_contains<tetrahedron3>("capsule_tetrahedron", support::cases(10000), approx_bound);
+}
+
 } // namespace test_query_capsule_tetrahedron

@@ -35,4 +35,8 @@ TEST_CASE("capsule_triangle: oracle, random and near-degenerate", "[capsule_tria
     support::capsule_oracle<triangle3>("capsule_triangle", support::cases(10000), approx_bound);
 }
 
+TEST_CASE("capsule_triangle: contains", "[capsule_triangle][oracle]") {
+    support::capsule_contains<triangle3>("capsule_triangle", support::cases(10000), approx_bound);
+}
+
 } // namespace test_query_capsule_triangle

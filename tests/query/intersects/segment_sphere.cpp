@@ -9,7 +9,7 @@ import incidence;
 import incidence.detail;
 #include "testkit/testing.hpp"
 #include "testkit/check.hpp"
-#include "testkit/ball_halfspace_checks.hpp"
+#include "testkit/capsule_checks.hpp"
 
 namespace test_query_segment_sphere { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 
@@ -34,9 +34,15 @@ TEST_CASE("segment_sphere: fixtures", "[segment_sphere]") {
     CHECK(intersects(s, sphere3{{2, 0, 0}, 0})); // a point ball on the segment
     CHECK_FALSE(intersects(segment3{{0, 0, __builtin_nan("")}, {1, 1, 1}}, sphere3{{0, 0, 0}, 9}));
     CHECK_FALSE(intersects(s, sphere3{{0, 0, 0}, __builtin_inf()}));
+    CHECK(contains(sphere3{{0, 0, 0}, 5}, segment3{{3, 4, 0}, {0, 0, 5}})); // both ends on the sphere
+    CHECK_FALSE(contains(sphere3{{0, 0, 0}, 5}, segment3{{3, 4, 0x1p-1074}, {0, 0, 5}}));
 }
 TEST_CASE("segment_sphere: oracle, random and near-degenerate", "[segment_sphere][oracle]") {
     support::ball_halfspace_oracle<segment3>("segment_sphere", support::cases(20000), approx_bound);
+}
+
+TEST_CASE("segment_sphere: contains", "[segment_sphere][oracle]") {
+    support::sphere_contains<segment3>("segment_sphere", support::cases(10000), approx_bound);
 }
 
 } // namespace test_query_segment_sphere

@@ -9,7 +9,7 @@ import incidence;
 import incidence.detail;
 #include "testkit/testing.hpp"
 #include "testkit/check.hpp"
-#include "testkit/ball_halfspace_checks.hpp"
+#include "testkit/capsule_checks.hpp"
 
 namespace test_query_sphere_tetrahedron { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 
@@ -34,6 +34,10 @@ TEST_CASE("sphere_tetrahedron: fixtures", "[sphere_tetrahedron]") {
 }
 TEST_CASE("sphere_tetrahedron: oracle, random and near-degenerate", "[sphere_tetrahedron][oracle]") {
     support::ball_halfspace_oracle<tetrahedron3>("sphere_tetrahedron", support::cases(20000), approx_bound);
+}
+
+TEST_CASE("sphere_tetrahedron: contains", "[sphere_tetrahedron][oracle]") {
+    support::sphere_contains<tetrahedron3>("sphere_tetrahedron", support::cases(10000), approx_bound);
 }
 
 } // namespace test_query_sphere_tetrahedron

@@ -10,7 +10,7 @@ import incidence;
 import incidence.detail;
 #include "testkit/testing.hpp"
 #include "testkit/check.hpp"
-#include "testkit/ball_halfspace_checks.hpp"
+#include "testkit/capsule_checks.hpp"
 
 namespace test_query_sphere_triangle { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
 
@@ -38,6 +38,10 @@ TEST_CASE("sphere_triangle: fixtures", "[sphere_triangle]") {
 }
 TEST_CASE("sphere_triangle: oracle, random and near-degenerate", "[sphere_triangle][oracle]") {
     support::ball_halfspace_oracle<triangle3>("sphere_triangle", support::cases(20000), approx_bound);
+}
+
+TEST_CASE("sphere_triangle: contains", "[sphere_triangle][oracle]") {
+    support::sphere_contains<triangle3>("sphere_triangle", support::cases(10000), approx_bound);
 }
 
 } // namespace test_query_sphere_triangle
