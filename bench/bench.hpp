@@ -28,6 +28,7 @@ import incidence.detail;
 #include "testkit/polygon3_cases.hpp"
 #include "testkit/ball_halfspace_cases.hpp"
 #include "testkit/capsule_cases.hpp"
+#include "testkit/ball_view_cases.hpp"
 
 using namespace incidence;
 
@@ -432,6 +433,40 @@ template <class B>
     tiers(
         pair, near ? "near_degenerate" : "random", cs, [&](const std::pair<capsule3, B>&) { return bool(truth[i++]); },
         [](auto tier, const std::pair<capsule3, B>& c) { return intersects<decltype(tier)>(c.first, c.second); });
+}
+// A ball or a capsule against a polygon or a solid mesh (testkit/ball_view_cases.hpp: touching star
+// polygons with holes or closed star meshes, or random), ball_view_truth.hpp's oracle as truth (a
+// case it declines is drawn again).
+template <class V, class Round>
+[[gnu::noinline]] void round_view_tiers(const std::string& pair, bool near) {
+    struct stored {
+        support::view_store s;
+        Round x;
+        [[nodiscard]] V view() const {
+            if constexpr (std::is_same_v<V, polygon3>) return s.polygon.view();
+            else return s.mesh.view();
+        }
+    };
+    support::rng r = set_rng(near);
+    std::vector<stored> cs;
+    std::vector<bool> truth;
+    while (cs.size() < set_size) {
+        stored c;
+        std::optional<Round> x;
+        if constexpr (std::is_same_v<V, polygon3>)
+            x = near ? support::round_near_polygon<Round>(r, c.s) : support::round_random_polygon<Round>(r, c.s);
+        else x = near ? support::round_near_mesh<Round>(r, c.s) : support::round_random_mesh<Round>(r, c.s);
+        if (!x) continue;
+        c.x = *x;
+        std::optional<bool> t;
+        if constexpr (std::is_same_v<V, polygon3>) t = support::round_polygon_truth(c.view(), c.x);
+        else t = support::round_mesh_truth(c.view(), c.x);
+        if (t) cs.push_back(std::move(c)), truth.push_back(*t); // the views are taken again from the moved stores
+    }
+    std::size_t i = 0; // the truths in the order tiers() asks for them
+    tiers(
+        pair, near ? "near_degenerate" : "random", cs, [&](const stored&) { return bool(truth[i++]); },
+        [](auto tier, const stored& c) { return intersects<decltype(tier)>(c.view(), c.x); });
 }
 inline void obb_arrays(const obb3& b, double* c, double* a, double* h) {
     arr(b.center, c);

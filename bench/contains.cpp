@@ -39,6 +39,13 @@ void capsule_contains(const std::string& pair, bool near) {
         [](support::rng& r, bool nr) { return std::optional{nr ? support::capsule_holding<S>(r) : support::capsule_random_around<S>(r)}; },
         [](const capsule3& c, const S& s) { return support::capsule_holds(c, s); });
 }
+template <class X>
+void capsule_contained(const std::string& pair, bool near) {
+    contains_tiers<X, capsule3>(
+        pair, near,
+        [](support::rng& r, bool nr) { return std::optional{nr ? support::capsule_inside<X>(r) : support::capsule_random_in<X>(r)}; },
+        [](const X& x, const capsule3& c) { return support::holds_capsule(x, c); });
+}
 template <class B>
 void obb_contains(const std::string& pair, bool near) {
     box_contains<obb3, B>(
@@ -217,8 +224,9 @@ void register_contains(bool near) {
     kdop_contains<26, tetrahedron3>("kdop_tetrahedron", near);
     halfspace_contains<frustum3, point3>("frustum_point", near);
     ball_contains<frustum3>("frustum_sphere", near);
-    // the ball around a segment, a triangle, a tetrahedron; the capsule around them and a box; a box
-    // around a capsule (testkit/capsule_cases.hpp)
+    // the ball around a segment, a triangle, a tetrahedron; the capsule around them, a box, a ball
+    // and a capsule; a box, a ball, a capsule and the half-space sets around a capsule
+    // (testkit/capsule_cases.hpp)
     box_contains<sphere3, segment3>("sphere_segment", near, support::sphere_random_around<segment3>, support::sphere_holding<segment3>);
     box_contains<sphere3, triangle3>("sphere_triangle", near, support::sphere_random_around<triangle3>, support::sphere_holding<triangle3>);
     box_contains<sphere3, tetrahedron3>("sphere_tetrahedron", near, support::sphere_random_around<tetrahedron3>,
@@ -228,18 +236,14 @@ void register_contains(bool near) {
     capsule_contains<triangle3>("capsule_triangle", near);
     capsule_contains<tetrahedron3>("capsule_tetrahedron", near);
     capsule_contains<aabb3>("capsule_aabb", near);
-    contains_tiers<aabb3, capsule3>(
-        "aabb_capsule", near,
-        [](support::rng& r, bool nr) {
-            return std::optional{nr ? support::capsule_inside<aabb3>(r) : support::capsule_random_inside<aabb3>(r)};
-        },
-        [](const aabb3& x, const capsule3& c) { return support::holds_capsule(x, c); });
-    contains_tiers<obb3, capsule3>(
-        "obb_capsule", near,
-        [](support::rng& r, bool nr) {
-            return std::optional{nr ? support::capsule_inside<obb3>(r) : support::capsule_random_inside<obb3>(r)};
-        },
-        [](const obb3& x, const capsule3& c) { return support::holds_capsule(x, c); });
+    capsule_contains<sphere3>("capsule_sphere", near);
+    capsule_contains<capsule3>("capsule_capsule", near);
+    capsule_contained<aabb3>("aabb_capsule", near);
+    capsule_contained<obb3>("obb_capsule", near);
+    capsule_contained<sphere3>("sphere_capsule", near);
+    capsule_contained<convex_polyhedron3>("convex_polyhedron_capsule", near);
+    capsule_contained<frustum3>("frustum_capsule", near);
+    capsule_contained<kdop<14>>("kdop_capsule_14", near);
     ball_contains<convex_polyhedron3>("convex_polyhedron_sphere", near);
     ball_contains<kdop<14>>("kdop_sphere_14", near);
     halfspace_contains<frustum3, triangle3>("frustum_triangle", near);

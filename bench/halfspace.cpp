@@ -63,6 +63,9 @@ void register_halfspace(bool near) {
     capsule_tiers<triangle3>("capsule_triangle", near);
     capsule_tiers<tetrahedron3>("capsule_tetrahedron", near);
     capsule_tiers<aabb3>("aabb_capsule", near);
+    capsule_tiers<convex_polyhedron3>("capsule_convex_polyhedron", near);
+    capsule_tiers<frustum3>("capsule_frustum", near);
+    capsule_tiers<kdop<14>>("capsule_kdop_14", near);
     {
         const auto cs = ball_tiers<obb3>("obb_sphere", near);
         std::vector<bool> t;

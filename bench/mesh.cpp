@@ -1,4 +1,5 @@
-// Benchmarks: the mesh pairs (tests/support/mesh_cases.hpp), the mesh oracle as truth.
+// Benchmarks: the mesh pairs (tests/support/mesh_cases.hpp), the mesh oracle as truth; a ball and
+// a capsule against a mesh or a polygon (testkit/ball_view_cases.hpp).
 #include "bench.hpp"
 
 namespace bench {
@@ -15,5 +16,9 @@ void register_mesh(bool near) {
     mesh_tiers<convex_polyhedron3>("convex_polyhedron_mesh", near);
     mesh_tiers<frustum3>("frustum_mesh", near);
     mesh_tiers<kdop<14>>("kdop_mesh", near);
+    round_view_tiers<mesh3, sphere3>("mesh_sphere", near);
+    round_view_tiers<mesh3, capsule3>("capsule_mesh", near);
+    round_view_tiers<polygon3, sphere3>("polygon_sphere", near);
+    round_view_tiers<polygon3, capsule3>("capsule_polygon", near);
 }
 } // namespace bench

@@ -18,7 +18,13 @@
 // any bits, against CGAL's squared distance from the centre over Epeck on finite ones. And a capsule
 // of the doubles against a point, a ball, a capsule, a segment, a ray, a line, a plane, a triangle, a
 // tetrahedron and a box of them, every tier on any bits, one partner (byte 4) against the exact QP
-// on finite ones. Any finding aborts.
+// on finite ones. And a ball and a capsule against a polygon3 (four vertices at one height, unchecked
+// on any bits; where make() accepts them, against the CGAL triangulation) and the closed mesh of
+// the tetrahedron p q c e (polygon_sphere, capsule_polygon, mesh_sphere, capsule_mesh), against
+// testkit/ball_view_truth.hpp's oracle on finite ones. And contains with a capsule: the capsule
+// around a point, a segment, a triangle, a box, a ball and a capsule, a ball and the half-space
+// set of byte 2 around it, against Epeck and rationals; and that capsule against that set, against
+// the exact QP. Any finding aborts.
 #include "testkit/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <cmath>
@@ -26,10 +32,18 @@
 #include <cstring>
 #include <span>
 import incidence;
+import incidence.detail;
 #include "contracts.hpp"
 #include "batches.hpp"
+#include "testkit/testing.hpp"
+#include "testkit/flat_cases.hpp"
 #include "testkit/lp_shapes.hpp"
 #include "testkit/flat_shapes.hpp"
+#include "testkit/mesh_cases.hpp"
+#include "testkit/polygon3_cases.hpp"
+#include "testkit/ball_view_truth.hpp"
+#include <array>
+#include <cstdint>
 
 using namespace incidence;
 
@@ -39,6 +53,8 @@ void arr(point3 p, double* o) {
     o[1] = p.y;
     o[2] = p.z;
 }
+// The closed mesh of a tetrahedron's four corners.
+constexpr std::array<std::array<std::uint32_t, 3>, 4> tetrahedron_faces{{{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}}};
 aabb3 ordered(point3 a, point3 b) {
     return {{std::fmin(a.x, b.x), std::fmin(a.y, b.y), std::fmin(a.z, b.z)},
             {std::fmax(a.x, b.x), std::fmax(a.y, b.y), std::fmax(a.z, b.z)}};
@@ -107,7 +123,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const sphere3 many[5] = {s1, s2, {p, r2}, {q, r1}, {c, std::fabs(r1) + std::fabs(r2)}};
         batch_contracts(fr, std::span<const sphere3>(many), size < 4 ? 0 : data[3]); // the culling batch
     }
+    // a polygon (four vertices at one height, unchecked: make() may refuse them) and a mesh of the doubles
+    const point3 quad[4] = {{v[0], v[1], v[2]}, {v[3], v[4], v[2]}, {v[9], v[10], v[2]}, {v[12], v[13], v[2]}};
+    const polygon3 poly{quad, {}, {0, 1, 2}, 2};
+    const point3 corners[4] = {p, q, c, e};
+    const mesh3 tet{corners, tetrahedron_faces};
     for (const sphere3& s : {s1, s2}) {
+        (void)intersects<approximate>(poly, s);
+        (void)classify(s, tet);
+        (void)intersects<conservative>(capsule3{p, e, s.radius}, poly);
+        (void)intersects<aggressive>(tet, capsule3{q, {v[15], v[0], v[6]}, s.radius});
         (void)intersects<approximate>(fr, s);
         (void)intersects<conservative>(s, cp);
         (void)classify(kd, s);
@@ -131,6 +156,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         (void)intersects<conservative>(triangle3{p, q, e}, cap);
         (void)intersects<aggressive>(cap, tetrahedron3{p, q, c, e});
         (void)intersects<approximate>(b1, cap);
+        (void)intersects<approximate>(cap, fr);
+        (void)classify(cp, cap);
+        (void)intersects<conservative>(cap, kd);
+        (void)intersects<aggressive>(fr, cap);
     }
     // Every tier and every find must finish on any bits.
     (void)intersects<approximate>(ray, s1);
@@ -200,13 +229,54 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         default: within(ordered(p, q), support::lp(ordered(p, q)), 0); break;
         }
     }
+    // a ball and a capsule against the polygon (where make() accepts it) and the tetrahedron's mesh
+    {
+        const point3 far{v[12], v[13], v[14]};
+        const sphere3 ball{far, std::fabs(r1)};
+        const capsule3 cap{far, {v[15], v[0], v[6]}, std::fabs(r2)};
+        const auto made = polygon3::make(quad);
+        if (made.has_value()) {
+            if (const auto t = support::round_polygon_truth(made.value(), ball)) contracts(made.value(), ball, *t);
+            if (const auto t = support::round_polygon_truth(made.value(), cap)) contracts(cap, made.value(), *t);
+        }
+        if (const auto t = support::round_mesh_truth(tet, ball)) contracts(tet, ball, *t);
+        if (const auto t = support::round_mesh_truth(tet, cap)) contracts(cap, tet, *t);
+    }
+    // containment with a capsule: around a point, a segment, a triangle and a box (every vertex
+    // within its radius of its segment), around a ball and a capsule (their centres within the
+    // radii's difference), over Epeck; a ball around the capsule (both end balls, in rationals)
+    {
+        const capsule3 cap{c, e, std::fabs(r1)};
+        const auto axis = support::to_flat(segment3{c, e});
+        const auto held = [&](point3 x) { return oracle::ball_flat(axis, support::a3(x), cap.radius); };
+        const auto ball_held = [&](point3 x, double r) { return oracle::flat_holds_ball(axis, support::a3(x), cap.radius, r); };
+        contains_contracts_with(cap, p, held(p));
+        contains_contracts_with(cap, segment3{p, q}, held(p) && held(q));
+        contains_contracts_with(cap, triangle3{p, q, {v[12], v[13], v[14]}}, held(p) && held(q) && held({v[12], v[13], v[14]}));
+        const aabb3 pq = ordered(p, q);
+        bool box_held = true;
+        for (int m = 0; m < 8; ++m)
+            box_held = box_held && held({(m & 1) ? pq.max.x : pq.min.x, (m & 2) ? pq.max.y : pq.min.y, (m & 4) ? pq.max.z : pq.min.z});
+        contains_contracts_with(cap, pq, box_held);
+        contains_contracts_with(cap, sphere3{p, r2}, ball_held(p, r2));
+        contains_contracts_with(cap, capsule3{p, q, r2}, ball_held(p, r2) && ball_held(q, r2));
+        const double around = std::fabs(r2);
+        contains_contracts_with(sphere3{p, r2}, cap,
+                                oracle::ball_contains_ball(P, around, C, cap.radius) &&
+                                    oracle::ball_contains_ball(P, around, E, cap.radius));
+    }
     // the ball against the half-spaces: the exact QP (one set per input, byte 2), the rows in rationals
     {
+        const capsule3 cap{c, e, std::fabs(r1)};
         const auto ball = [&](const auto& set) {
+            const auto rows = support::lp(set);
             for (const sphere3& s : {s1, a}) {
-                if (const auto t = oracle::qp_ball_meets(support::lp(set), support::a3(s.center), s.radius)) contracts(set, s, *t);
-                contains_contracts_with(set, s, oracle::ball_in_rows(support::lp(set), support::a3(s.center), s.radius));
+                if (const auto t = oracle::qp_ball_meets(rows, support::a3(s.center), s.radius)) contracts(set, s, *t);
+                contains_contracts_with(set, s, oracle::ball_in_rows(rows, support::a3(s.center), s.radius));
             }
+            contains_contracts_with(
+                set, cap, oracle::ball_in_rows(rows, support::a3(c), cap.radius) && oracle::ball_in_rows(rows, support::a3(e), cap.radius));
+            if (const auto t = oracle::qp_sets_within(support::lp(segment3{c, e}), rows, cap.radius)) contracts(cap, set, *t);
         };
         switch (size < 3 ? 0 : data[2] % 4) {
         case 0: ball(fr); break;

@@ -10,6 +10,7 @@ export import :engines.ball_halfspaces;
 export import :engines.ball_obb;
 export import :engines.box;
 export import :engines.capsule;
+export import :engines.capsule_rows;
 export import :engines.box_triangle;
 export import :engines.clip;
 export import :engines.contact;

@@ -1,7 +1,10 @@
 // Cases for a capsule against a shape (capsule_point, capsule_sphere, capsule_capsule,
 // capsule_segment, capsule_ray, capsule_line, capsule_plane, capsule_triangle,
-// capsule_tetrahedron, aabb_capsule); the checks are in capsule_checks.hpp. Include after
-// testing.hpp and the CGAL oracle header.
+// capsule_tetrahedron, aabb_capsule, capsule_convex_polyhedron, capsule_frustum, capsule_kdop);
+// the checks are in capsule_checks.hpp. Include after testing.hpp and the CGAL oracle header.
+// A half-space set or a k-DOP: near_rows' set (ball_halfspace_cases.hpp) and a capsule grown from a
+// ball touching it (capsule_touching), as below; random: ball_random's set and ball, grown to a
+// capsule along a vector of up to twice the radius, with half the radius.
 //
 // Near-degenerate: the partner in small dyadics as rows whose normal cone at each spot is its own
 // (flat_rows of ball_halfspace_cases.hpp; a box its six face rows; a point or a ball the six axis
@@ -54,8 +57,21 @@ inline proto_rows axis_rows(incidence::point3 x) {
     return p;
 }
 
+// A capsule grown from a ball touching the rows (ball_touching, along w in their normal cone at the
+// spot): from c to c + v with v . w >= 0 (a small dyadic v, zero one time in six), so that its
+// segment keeps the ball's distance.
+inline incidence::capsule3 capsule_touching(rng& r, const proto_rows& rows) {
+    using namespace incidence;
+    vec3 w{0, 0, 0};
+    const sphere3 ball = ball_touching(r, rows, &w);
+    vec3 v = small_dir(r) * 0.5;
+    if (dot(v, w) < 0) v = v * -1.0;
+    if (r.integer(0, 5) == 0) v = vec3{0, 0, 0};
+    return {ball.center, ball.center + v, ball.radius};
+}
+
 template <class B>
-std::optional<std::pair<incidence::capsule3, B>> capsule_near(rng& r) {
+std::optional<std::pair<incidence::capsule3, B>> capsule_near_shape(rng& r) {
     using namespace incidence;
     proto_rows rows;
     typename proto_of<B>::type partner{};
@@ -82,15 +98,11 @@ std::optional<std::pair<incidence::capsule3, B>> capsule_near(rng& r) {
         rows = f.rows;
         partner = f.shape;
     }
-    vec3 w{0, 0, 0};
-    const sphere3 ball = ball_touching(r, rows, &w);
-    vec3 v = small_dir(r) * 0.5;
-    if (dot(v, w) < 0) v = v * -1.0;
-    if (r.integer(0, 5) == 0) v = vec3{0, 0, 0};
-    capsule3 c{ball.center, ball.center + v, ball.radius};
+    capsule3 c = capsule_touching(r, rows);
     if (halves) {
-        c.radius = ball.radius * 0.5;
-        if constexpr (std::is_same_v<B, sphere3> || std::is_same_v<B, capsule3>) partner.radius = ball.radius * 0.5;
+        const double whole = c.radius;
+        c.radius = whole * 0.5;
+        if constexpr (std::is_same_v<B, sphere3> || std::is_same_v<B, capsule3>) partner.radius = whole * 0.5;
     }
     transform tr = random_transform(r, true, true);
     const capsule3 m = realise(c, tr);
@@ -107,7 +119,22 @@ std::optional<std::pair<incidence::capsule3, B>> capsule_near(rng& r) {
 }
 
 template <class B>
-std::optional<std::pair<incidence::capsule3, B>> capsule_random(rng& r) {
+std::optional<std::pair<incidence::capsule3, B>> capsule_near(rng& r) {
+    using namespace incidence;
+    if constexpr (is_halfspace_shape<B>::value || is_kdop<B>::value) { // near_rows' set, as ball_near
+        const proto_rows p = near_rows<B>(r);
+        const capsule3 c = capsule_touching(r, p);
+        transform tr = random_transform(r, true, true);
+        const auto b = realise_rows<B>(p, tr);
+        const capsule3 m = realise(c, tr);
+        if (!b || !is_finite(m.a) || !is_finite(m.b) || !std::isfinite(m.radius)) return std::nullopt;
+        return std::pair{m, *b};
+    } else {
+        return capsule_near_shape<B>(r);
+    }
+}
+template <class B>
+std::optional<std::pair<incidence::capsule3, B>> capsule_random_shape(rng& r) {
     using namespace incidence;
     transform tr = random_transform(r, false, true);
     auto p = [&] { return point3{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)}; };
@@ -124,6 +151,21 @@ std::optional<std::pair<incidence::capsule3, B>> capsule_random(rng& r) {
     if constexpr (!std::is_same_v<B, sphere3> && !std::is_same_v<B, capsule3>)
         if (!finite_shape(b)) return std::nullopt;
     return std::pair{c, b};
+}
+template <class B>
+std::optional<std::pair<incidence::capsule3, B>> capsule_random(rng& r) {
+    using namespace incidence;
+    if constexpr (is_halfspace_shape<B>::value || is_kdop<B>::value) { // ball_random's set and ball, grown
+        const auto c = ball_random<B>(r);
+        if (!c) return std::nullopt;
+        const sphere3 s = c->second;
+        const vec3 v{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)};
+        const capsule3 k{s.center, s.center + v * (2 * s.radius), s.radius * 0.5};
+        if (!is_finite(k.b)) return std::nullopt;
+        return std::pair{k, c->first};
+    } else {
+        return capsule_random_shape<B>(r);
+    }
 }
 
 // --- containment -------------------------------------------------------------------------------
@@ -181,6 +223,23 @@ std::pair<incidence::capsule3, S> capsule_holding(rng& r) {
         const double u = 3 * m * (r.integer(0, 3) == 0 ? 1.0 : 0.5), w = 4 * m; // on the cylinder one time in four
         const point3 lo = a + across(-u, -w), hi = a + along(len) + across(u, w);
         return {realise(c, tr), realise(aabb3{lo, hi}, tr)};
+    } else if constexpr (std::is_same_v<S, sphere3> || std::is_same_v<S, capsule3>) {
+        // balls 5q from the segment (across by (3q, 4q) at a point of it, or beyond an end by 3q and
+        // across by 4q) of radius 5m - 5q: touching from inside; halved one time in four, grown by
+        // an ulp one time in four. A capsule: two such centres, the same radius.
+        const double q = m * r.integer(0, 4) * 0.25;
+        const double u = (r.coin() ? 3 : -3) * q, w = (r.coin() ? 4 : -4) * q;
+        auto centre = [&] {
+            return r.coin() ? a + along(r.integer(0, 8) * len / 8) + across(u, w)
+                            : a + along(r.coin() ? -3 * q : len + 3 * q) + across(0, w);
+        };
+        double rs = 5 * m - 5 * q;
+        tr.nudged = r.integer(0, 2) == 0; // touching stays touching two times in three
+        const int how = r.integer(0, 3);
+        if (how == 0) rs *= 0.5;
+        else if (how == 1) rs = nudge(rs, 1);
+        if constexpr (std::is_same_v<S, sphere3>) return {realise(c, tr), realise(sphere3{centre(), rs}, tr)};
+        else return {realise(c, tr), realise(capsule3{centre(), centre(), rs}, tr)};
     } else {
         std::array<point3, 4> p;
         for (auto& x : p) x = a + along(r.integer(0, 8) * len / 8) + across(r.integer(-5, 5) * m * 0.5, r.integer(-5, 5) * m * 0.25);
@@ -220,26 +279,83 @@ std::pair<X, incidence::capsule3> capsule_random_inside(rng& r) {
 }
 template <class X>
 std::pair<X, incidence::capsule3> capsule_inside(rng& r) {
-    if constexpr (std::is_same_v<X, incidence::obb3>) {
+    using namespace incidence;
+    if constexpr (std::is_same_v<X, obb3>) {
         const auto [x, s] = obb_holding_ball(r);
         return {x, capsule_from(r, s)};
-    } else {
+    } else if constexpr (std::is_same_v<X, aabb3>) {
         const auto [x, s] = aabb_holding_ball(r);
         return {x, capsule_from(r, s)};
+    } else if constexpr (std::is_same_v<X, sphere3>) { // sphere_holding's ball around a capsule: two ends, radius to touch
+        const auto [x, s] = sphere_holding<segment3>(r);
+        const double room = std::fmax(std::sqrt(dot(s.a - x.center, s.a - x.center)), std::sqrt(dot(s.b - x.center, s.b - x.center)));
+        return {x, capsule3{s.a, s.b, std::fmax(0.0, x.radius - room) * (r.coin() ? 1.0 : 0.5)}};
+    } else { // a half-space set (near_rows): from the middle of its spots (points of the set) to a spot or halfway
+        for (;;) {
+            const proto_rows p = near_rows<X>(r);
+            vec3 sum{0, 0, 0};
+            for (const point3 x : p.spots) sum = sum + (x - point3{0, 0, 0});
+            const point3 m = point3{0, 0, 0} + sum * (1.0 / double(p.spots.size()));
+            const point3 s = p.spots[static_cast<std::size_t>(r.integer(0, static_cast<int>(p.spots.size()) - 1))];
+            const vec3 d = s - m;
+            const double radius = r.integer(0, 2) == 0 ? 0.0 : std::sqrt(dot(d, d)) * 0.0625; // zero: touching at s
+            const capsule3 c{m, r.coin() ? s : m + d * 0.5, radius};
+            transform tr = random_transform(r, true, true);
+            const auto x = realise_rows<X>(p, tr);
+            const capsule3 k = realise(c, tr);
+            if (x && is_finite(k.a) && is_finite(k.b) && std::isfinite(k.radius)) return {*x, k};
+        }
+    }
+}
+// The random counterparts of capsule_inside.
+template <class X>
+std::pair<X, incidence::capsule3> capsule_random_in(rng& r) {
+    using namespace incidence;
+    if constexpr (std::is_same_v<X, aabb3> || std::is_same_v<X, obb3>) {
+        return capsule_random_inside<X>(r);
+    } else if constexpr (std::is_same_v<X, sphere3>) {
+        const auto [c, s] = capsule_random_around<sphere3>(r);
+        return {s, c};
+    } else {
+        for (;;)
+            if (const auto c = ball_random<X>(r)) return {c->first, capsule_from(r, c->second)};
     }
 }
 // The truths: every vertex within r of the capsule's segment (CGAL's squared distance over Epeck,
 // oracle::ball_flat); a box around both end balls (contain_cases.hpp's contains_truth).
+// A ball in X: the rows in rationals for a half-space set (oracle::ball_in_rows), the ball in a
+// ball, the centre within the difference of the radii of a capsule's segment (over Epeck,
+// oracle::flat_holds_ball), else contain_cases.hpp's contains_truth.
+template <class X>
+bool holds_ball(const X& x, const incidence::sphere3& s) {
+    if constexpr (is_halfspace_shape<X>::value || is_kdop<X>::value) {
+        return oracle::ball_in_rows(lp(x), a3(s.center), s.radius);
+    } else if constexpr (std::is_same_v<X, incidence::sphere3>) {
+        const double c1[3] = {x.center.x, x.center.y, x.center.z}, c2[3] = {s.center.x, s.center.y, s.center.z};
+        return oracle::ball_contains_ball(c1, std::fabs(x.radius), c2, std::fabs(s.radius));
+    } else if constexpr (std::is_same_v<X, incidence::capsule3>) {
+        return oracle::flat_holds_ball(to_flat(incidence::segment3{x.a, x.b}), a3(s.center), x.radius, s.radius);
+    } else {
+        return contains_truth(x, s);
+    }
+}
 template <class S>
 bool capsule_holds(const incidence::capsule3& c, const S& s) {
-    for (const auto& p : vertices(s))
-        if (!oracle::ball_flat(to_flat(incidence::segment3{c.a, c.b}), a3(p), c.radius)) return false;
-    return true;
+    if constexpr (std::is_same_v<S, incidence::sphere3>) {
+        return holds_ball(c, s);
+    } else if constexpr (std::is_same_v<S, incidence::capsule3>) {
+        const double r = std::fabs(s.radius);
+        return holds_ball(c, incidence::sphere3{s.a, r}) && holds_ball(c, incidence::sphere3{s.b, r});
+    } else {
+        for (const auto& p : vertices(s))
+            if (!oracle::ball_flat(to_flat(incidence::segment3{c.a, c.b}), a3(p), c.radius)) return false;
+        return true;
+    }
 }
 template <class X>
 bool holds_capsule(const X& x, const incidence::capsule3& c) {
     const double r = std::fabs(c.radius);
-    return contains_truth(x, incidence::sphere3{c.a, r}) && contains_truth(x, incidence::sphere3{c.b, r});
+    return holds_ball(x, incidence::sphere3{c.a, r}) && holds_ball(x, incidence::sphere3{c.b, r});
 }
 
 } // namespace support

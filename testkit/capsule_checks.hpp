@@ -41,10 +41,36 @@ template <class X>
 void capsule_contained(const std::string& name, long n, double approx_bound) {
     using namespace incidence;
     contains_oracle<X, capsule3>(
-        name + " (the other around capsule)", n, approx_bound, capsule_random_inside<X>, capsule_inside<X>, false,
+        name + " (the other around capsule)", n, approx_bound, capsule_random_in<X>, capsule_inside<X>, false,
         [](const X& x, const capsule3& c) { return holds_capsule(x, c); },
         [](const X& x, const capsule3& c) { return shape_str(x) + " " + shape_str(c); });
 }
+// The fixtures of a capsule against x, the box [0, 10]^3 as a half-space set (capsule_frustum,
+// capsule_kdop, capsule_convex_polyhedron): a capsule parallel above a face, along an edge, its
+// middle nearest an edge and nearest a corner (Pythagorean), a ball at a corner, each touching and
+// one ulp short, one inside, a NaN radius; then contains: a capsule touching two faces from
+// inside and one ulp too wide, a ball touching all six faces, an end outside.
+template <class X>
+void capsule_box_set_fixtures(const X& x) {
+    using namespace incidence;
+    CHECK(intersects(capsule3{{-5, 5, 13}, {15, 5, 13}, 3}, x)); // parallel above the top face
+    CHECK_FALSE(intersects(capsule3{{-5, 5, 13}, {15, 5, 13}, 0x1.7ffffffffffffp1}, x));
+    CHECK(intersects(x, capsule3{{-5, 13, 14}, {15, 13, 14}, 5})); // along the edge y = z = 10: 3-4-5
+    CHECK_FALSE(intersects(x, capsule3{{-5, 13, 14}, {15, 13, 14}, 0x1.3ffffffffffffp2}));
+    CHECK(intersects(capsule3{{5, 5, 20}, {21, 5, 8}, 5}, x)); // its middle nearest the edge x = z = 10: (3, 0, 4) away
+    CHECK_FALSE(intersects(capsule3{{5, 5, 20}, {21, 5, 8}, 0x1.3ffffffffffffp2}, x));
+    CHECK(intersects(x, capsule3{{9, 13, 12}, {13, 11, 12}, 3})); // its middle nearest the corner (10, 10, 10): (1, 2, 2) away
+    CHECK_FALSE(intersects(x, capsule3{{9, 13, 12}, {13, 11, 12}, 0x1.7ffffffffffffp1}));
+    CHECK(intersects(capsule3{{12, 12, 11}, {12, 12, 11}, 3}, x)); // a ball at the corner (10, 10, 10): 2-2-1
+    CHECK_FALSE(intersects(capsule3{{12, 12, 11}, {12, 12, 11}, 0x1.7ffffffffffffp1}, x));
+    CHECK(intersects(capsule3{{1, 1, 1}, {2, 2, 2}, 0}, x)); // inside
+    CHECK_FALSE(intersects(capsule3{{1, 1, 1}, {2, 2, 2}, __builtin_nan("")}, x));
+    CHECK(contains(x, capsule3{{3, 5, 5}, {7, 5, 5}, 3})); // touching x = 0 and x = 10 from inside
+    CHECK_FALSE(contains(x, capsule3{{3, 5, 5}, {7, 5, 5}, 0x1.8000000000001p1}));
+    CHECK(contains(x, capsule3{{5, 5, 5}, {5, 5, 5}, 5}));        // a ball touching all six faces
+    CHECK_FALSE(contains(x, capsule3{{5, 5, 5}, {11, 5, 5}, 1})); // an end outside
+}
+
 template <class S>
 void sphere_contains(const std::string& name, long n, double approx_bound) {
     using namespace incidence;

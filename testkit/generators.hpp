@@ -1030,6 +1030,23 @@ struct near_boundary<P, B> {
         }
     }
 };
+// A capsule grown from a ball touching a half-space set or a k-DOP at p along its face's normal
+// (capsule_at): the capsule first, as in the catalog.
+template <class P>
+requires(std::is_same_v<P, convex_polyhedron3> || std::is_same_v<P, frustum3>)
+struct near_boundary<capsule3, P> {
+    static std::pair<capsule3, P> touching(rng& r) {
+        const auto t = touching_halfspaces<P>(r);
+        return {capsule_at(r, t.p, t.o), t.shape};
+    }
+};
+template <>
+struct near_boundary<capsule3, kdop<14>> {
+    static std::pair<capsule3, kdop<14>> touching(rng& r) {
+        const auto t = touching_kdop(r);
+        return {capsule_at(r, t.p, t.o), t.box};
+    }
+};
 template <>
 struct near_boundary<convex_polyhedron3, frustum3> { // the polyhedron first, as in the catalog
     static std::pair<convex_polyhedron3, frustum3> touching(rng& r) {

@@ -1,5 +1,6 @@
-// sphere3 against the flat shapes and the tetrahedron: segment3, line3, plane3, triangle3 and
-// tetrahedron3 (ray3 has its own body in sphere_pairs.cppm, with its first hit).
+// sphere3 against the flat shapes and the tetrahedron: segment3, line3, plane3, triangle3,
+// tetrahedron3 and polygon3 (ray3 has its own body in sphere_pairs.cppm, with its first hit; the
+// solid mesh3 is a triangle or the centre inside, in mesh_pairs.cppm).
 // Semantics: the closed ball |x - c| <= |r| (an unchecked negative radius acts as |r|, as in
 // point_sphere); a closed segment (a = b is a point), a line (a zero direction is its origin), a
 // plane (a zero normal is everything when its offset is 0 and nothing otherwise), a closed triangle
@@ -19,6 +20,13 @@
 //            n . ((v - u) x (c - u)) >= 0 for each edge uv (degree 4): yes; else the ball meets one
 //            of the three edges (the nearest point is on the boundary). n = 0: the three edges.
 //   tetrahedron: c in the closed solid, or the ball meets a face (tetra::tetrahedron_meets with c).
+//   polygon3 (usable, engines/polygon3.cppm): the ball apart from the plane H (as the triangle,
+//            degree 6): no; the foot of c on H, V / D with V = c |n|^2 - (n . (c - a)) n and
+//            D = |n|^2 > 0, inside by crossing parity (polygon3d::inside, signs of degree <= 6):
+//            yes; else the ball meets an edge of a ring, or no. Complete: the ball cuts H in a
+//            disk around the foot; a disk meeting the polygon's set contains a point of its
+//            boundary or lies inside it with its centre (a foot on the boundary is found by its
+//            edge).
 // Source: Ericson, Real-Time Collision Detection (2005), sections 5.1.2 (closest point on a
 // segment), 5.1.5 (closest point on a triangle, by Voronoi regions), 5.2.7 (sphere against a
 // triangle); Akenine-Moeller et al., Real-Time Rendering, 4th ed. (2018), section 22.13.
@@ -27,11 +35,13 @@
 // permanent (tests/query/intersects/sphere_triangle.cpp and the other pairs' tests).
 module;
 #include <array>
+#include <cstddef>
 export module incidence.detail:engines.ball_flat;
 import incidence.core;
 import incidence.arith;
 import incidence.shapes;
 import :engines.linear;
+import :engines.polygon3;
 import :engines.tetrahedron;
 
 export namespace incidence::detail {
@@ -133,6 +143,44 @@ template <class K, class R>
 [[nodiscard]] constexpr bool meets(K& k, const tetrahedron3& t, point3 c, R r) {
     const point3 pts[1] = {c};
     return tetra::tetrahedron_meets(k, t, [&](const triangle3& face) { return meets(k, face, c, r); }, pts, 1, false);
+}
+
+// The polygon (usable) against the ball.
+template <class K, class R>
+[[nodiscard]] constexpr bool meets(K& k, const polygon3& g, point3 c, R r) {
+    const point3 a = g.vertices[g.plane_vertices[0]];
+    const auto lift_e = [=, &g](auto L) { return arith::dot(polygon3d::normal(L, g), arith::lift(L, c) - arith::lift(L, a)); };
+    if (k.sgn([=, &g](auto L) {
+            const auto n = polygon3d::normal(L, g);
+            const auto e = lift_e(L);
+            return e * e - squared(L, r) * arith::dot(n, n);
+        }) == sign::positive)
+        return false; // apart from the plane
+    const auto D = [&g](auto L) {
+        const auto n = polygon3d::normal(L, g);
+        return arith::dot(n, n);
+    };
+    const auto V = [=, &g](auto L) {
+        const auto n = polygon3d::normal(L, g);
+        const auto d = arith::dot(n, n);
+        const auto e = lift_e(L);
+        const auto C = arith::lift(L, c);
+        using T = decltype(C.x * d - e * n.x);
+        return arith::v3<T>{C.x * d - e * n.x, C.y * d - e * n.y, C.z * d - e * n.z};
+    };
+    if (polygon3d::inside(k, g, polygon3d::at_homogeneous<decltype(V), decltype(D)>{V, D, sign::positive})) return true;
+    return polygon3d::any_edge(g, [&](const segment3& e) { return meets(k, as_linear(e), c, r); });
+}
+
+// A box around the points within r (>= 0) of the n points p, rounded outward (each bound moved
+// past its rounding error of at most half an ulp; an overflow gives an infinite bound).
+[[nodiscard]] constexpr aabb3 reach_box(const point3* p, std::size_t n, double r) {
+    const aabb3 b = bounds(p, n);
+    const auto away = [r](double x, double s) {
+        const double y = x + s * r;
+        return y + s * (arith::abs(y) * 0x1p-52 + 0x1p-1074);
+    };
+    return {{away(b.min.x, -1), away(b.min.y, -1), away(b.min.z, -1)}, {away(b.max.x, 1), away(b.max.y, 1), away(b.max.z, 1)}};
 }
 
 } // namespace ball_flat

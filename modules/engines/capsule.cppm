@@ -49,11 +49,12 @@ struct ends {
     return {};
 }
 
-// Does the linear shape s lie within R of the linear shape t (both finite)?
+// Does the linear shape s lie within R of the linear shape t (both finite)? s_ends_apart: the
+// caller knows that s's ends lie farther than R from t (it tested them against a shape holding t).
 template <class K, class R>
-[[nodiscard]] constexpr bool linear_within(K& k, const linear3& s, const linear3& t, R rad) {
+[[nodiscard]] constexpr bool linear_within(K& k, const linear3& s, const linear3& t, R rad, bool s_ends_apart = false) {
     const ends es = ends_of(s), et = ends_of(t);
-    for (int i = 0; i < es.n; ++i)
+    for (int i = 0; i < es.n && !s_ends_apart; ++i)
         if (ball_flat::meets(k, t, es.p[static_cast<unsigned>(i)], rad)) return true;
     for (int i = 0; i < et.n; ++i)
         if (ball_flat::meets(k, s, et.p[static_cast<unsigned>(i)], rad)) return true;
@@ -100,12 +101,13 @@ template <class K, class R>
     return ball_flat::meets(k, p, a, rad) || ball_flat::meets(k, p, b, rad);
 }
 
-// Does the segment ab come within R of one of the n edges (pairs of points)?
+// Does the segment ab come within R of one of the n edges (pairs of points)? The caller has found
+// a and b farther than R from the shape the edges bound.
 template <class K, class R>
 [[nodiscard]] constexpr bool near_edges(K& k, point3 a, point3 b, const point3 (*edges)[2], int n, R rad) {
     const linear3 s = as_linear(segment3{a, b});
     for (int i = 0; i < n; ++i)
-        if (linear_within(k, s, as_linear(segment3{edges[i][0], edges[i][1]}), rad)) return true;
+        if (linear_within(k, s, as_linear(segment3{edges[i][0], edges[i][1]}), rad, true)) return true;
     return false;
 }
 

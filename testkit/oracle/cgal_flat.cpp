@@ -347,8 +347,8 @@ bool user_meets(const flat& a, const flat& b) {
 
 namespace {
 template <class K>
-bool ball_meets(const flat& f, const std::array<double, 3>& c, double r) {
-    const typename K::FT R(r), R2 = R * R;
+bool ball_meets(const flat& f, const std::array<double, 3>& c, const typename K::FT& R) {
+    const typename K::FT R2 = R * R;
     const typename K::Point_3 C(c[0], c[1], c[2]);
     const auto x = to_cgal<K>(f);
     if (std::holds_alternative<lp_only>(x)) { // a coplanar tetrahedron: its four faces
@@ -357,7 +357,7 @@ bool ball_meets(const flat& f, const std::array<double, 3>& c, double r) {
             flat t{flat::triangle, {}};
             for (int j = 0; j < 3; ++j)
                 for (int k = 0; k < 3; ++k) t.v[3 * j + k] = f.v[3 * face[j] + k];
-            if (ball_meets<K>(t, c, r)) return true;
+            if (ball_meets<K>(t, c, R)) return true;
         }
         return false;
     }
@@ -380,6 +380,11 @@ bool ball_flat(const flat& a, const std::array<double, 3>& c, double r) {
 }
 bool ball_flat_epick(const flat& a, const std::array<double, 3>& c, double r) {
     return ball_meets<CGAL::Exact_predicates_inexact_constructions_kernel>(a, c, r);
+}
+bool flat_holds_ball(const flat& a, const std::array<double, 3>& c, double r_outer, double r_inner) {
+    using K = CGAL::Exact_predicates_exact_constructions_kernel;
+    const K::FT room = CGAL::abs(K::FT(r_outer)) - CGAL::abs(K::FT(r_inner));
+    return room >= 0 && ball_meets<K>(a, c, room);
 }
 
 bool flat_do_intersect_cgal(const flat& a, const flat& b) { return user_meets<CGAL::Exact_predicates_exact_constructions_kernel>(a, b); }

@@ -122,6 +122,9 @@ bool flat_intersect_epick(const flat& a, const flat& b);
 // Sphere_3 as the surface, so a triangle inside the ball does not meet it.)
 bool ball_flat(const flat& a, const std::array<double, 3>& c, double r);
 bool ball_flat_epick(const flat& a, const std::array<double, 3>& c, double r);
+// The ball |x - c| <= |r_inner| within |r_outer| of the flat shape (a capsule's segment): |r_inner|
+// <= |r_outer| and the centre within |r_outer| - |r_inner| of it, the difference exact (Epeck).
+bool flat_holds_ball(const flat& a, const std::array<double, 3>& c, double r_outer, double r_inner);
 // CGAL's do_intersect itself, also for the ray-ray and line-ray pairs where it is wrong (the
 // fixtures show it).
 bool flat_do_intersect_cgal(const flat& a, const flat& b);

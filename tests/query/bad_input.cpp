@@ -276,9 +276,13 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
             every_tier(cp, pg2, yes);
             every_tier(fr, pg, yes);
             every_tier(kd2, pg2, yes);
+            every_tier(pg, ball, yes);
+            every_tier(ball, pg2, yes);
+            every_tier(capsule3{q, seg.a, ball.radius}, pg, yes);
+            every_tier(pg2, capsule3{seg.b, q, ball.radius}, yes);
             yes += contains(pg, q) + contains(pg2, q);
             (void)polygon3::make(gv, gends);
-            n += 14 * 5 + 2;
+            n += 18 * 5 + 2;
         }
         every_tier(cp, te, yes);
         every_tier(te, fr, yes);
@@ -328,7 +332,22 @@ TEST_CASE("bad input: unchecked queries survive NaN, infinities, subnormals and 
         every_contains(cap, b, yes);
         every_contains(b, cap, yes);
         every_contains(ob, cap, yes);
-        n += 12 * 5 + 10 * 5;
+        every_tier(me, ball, yes);
+        every_tier(ball, holey, yes);
+        every_tier(cap, me, yes);
+        every_tier(holey, cap, yes);
+        every_contains(cap, ball, yes);
+        every_contains(ball, cap, yes);
+        every_contains(cap, cap, yes);
+        every_contains(cp, cap, yes);
+        every_contains(fr, cap, yes);
+        every_contains(kd, cap, yes);
+        every_contains(kd2, cap, yes);
+        every_tier(cap, cp, yes);
+        every_tier(fr, cap, yes);
+        every_tier(cap, kd, yes);
+        every_tier(kd2, cap, yes);
+        n += 20 * 5 + 17 * 5;
         // in the plane
         auto p2 = [&] { return point2{special(r), special(r)}; };
         auto v2 = [&] { return vec2{special(r), special(r)}; };

@@ -18,16 +18,13 @@ export namespace incidence::detail {
 
 // contains(capsule3, point3 | segment3 | triangle3 | tetrahedron3 | aabb3): the capsule is
 // convex, so it holds the hull of the vertices (a box's eight corners) iff each vertex lies within
-// |r| of its segment (ball_flat.cppm's segment test, degree <= 4).
+// |r| of its segment (ball_flat.cppm's segment test, degree <= 4; holds_vertices, sphere_pairs.cppm).
 // Semantics: a vertex on the capsule's boundary counts; unchecked negative radii act as |r|; a NaN
 // or infinite number, or an inverted box, holds or is held by nothing.
 
 template <class K, std::size_t N>
 [[nodiscard]] constexpr bool holds_all(K& k, const capsule3& c, const std::array<point3, N>& v) {
-    if (!usable(c)) return false;
-    for (const point3& p : v)
-        if (!finite(p) || !ball_flat::meets(k, core(c), p, reach(c))) return false;
-    return true;
+    return usable(c) && holds_vertices(v, [&](point3 p) { return ball_flat::meets(k, core(c), p, reach(c)); });
 }
 template <class K>
 [[nodiscard]] constexpr bool contains(K& k, const capsule3& c, const point3& p) {
@@ -54,8 +51,22 @@ template <class K>
                                 point3{hi.x, lo.y, hi.z}, point3{lo.x, hi.y, hi.z}, hi});
 }
 
-// contains(aabb3 | obb3, capsule3): the capsule is the hull of its two end balls, so a
-// convex set holds it iff it holds both (contains(X, sphere3), sphere_pairs.cppm).
+// contains(capsule3, sphere3): the ball lies within |r_c| of the segment iff |r_s| <= |r_c| and its
+// centre lies within |r_c| - |r_s| of the segment (ball_flat.cppm's segment test with the
+// difference of the radii formed exactly inside the signs, degree <= 4).
+// Semantics: a ball touching the capsule from inside lies in it; unchecked negative radii act as
+// |r|; a NaN or infinite number holds or is held by nothing.
+
+template <class K>
+[[nodiscard]] constexpr bool contains(K& k, const capsule3& c, const sphere3& s) {
+    if (!usable(c) || !ball::usable(s)) return false;
+    const double rc = reach(c), rs = ball::magnitude(s.radius);
+    return rs <= rc && ball_flat::meets(k, core(c), s.center, ball_flat::radii{rc, -rs});
+}
+
+// contains(aabb3 | obb3 | sphere3 | capsule3 | convex_polyhedron3 | frustum3 | kdop<K>, capsule3):
+// the capsule is the hull of its two end balls, so a convex set holds it iff it holds both
+// (contains(X, sphere3): sphere_pairs.cppm, and the capsule's own above).
 // Semantics: a capsule touching the set from inside lies in it; as contains(X, sphere3) otherwise.
 
 template <class K, class X>
@@ -72,6 +83,26 @@ template <class K>
 [[nodiscard]] constexpr bool contains(K& k, const obb3& b, const capsule3& c) {
     return holds_ends(k, b, c);
 }
+template <class K>
+[[nodiscard]] constexpr bool contains(K& k, const sphere3& s, const capsule3& c) {
+    return holds_ends(k, sphere3{s.center, ball::magnitude(s.radius)}, c); // |r|, as for the capsule's own radius
+}
+template <class K>
+[[nodiscard]] constexpr bool contains(K& k, const capsule3& a, const capsule3& b) {
+    return holds_ends(k, a, b);
+}
+template <class K>
+[[nodiscard]] constexpr bool contains(K& k, const convex_polyhedron3& p, const capsule3& c) {
+    return holds_ends(k, p, c);
+}
+template <class K>
+[[nodiscard]] constexpr bool contains(K& k, const frustum3& f, const capsule3& c) {
+    return holds_ends(k, f, c);
+}
+template <class K, int N>
+[[nodiscard]] constexpr bool contains(K& k, const kdop<N>& b, const capsule3& c) {
+    return holds_ends(k, b, c);
+}
 
 } // namespace incidence::detail
 
@@ -84,4 +115,13 @@ extern template bool exactly<contains_body>(const capsule3&, const tetrahedron3&
 extern template bool exactly<contains_body>(const capsule3&, const aabb3&);
 extern template bool exactly<contains_body>(const aabb3&, const capsule3&);
 extern template bool exactly<contains_body>(const obb3&, const capsule3&);
+extern template bool exactly<contains_body>(const capsule3&, const sphere3&);
+extern template bool exactly<contains_body>(const sphere3&, const capsule3&);
+extern template bool exactly<contains_body>(const capsule3&, const capsule3&);
+extern template bool exactly<contains_body>(const convex_polyhedron3&, const capsule3&);
+extern template bool exactly<contains_body>(const frustum3&, const capsule3&);
+extern template bool exactly<contains_body>(const kdop<6>&, const capsule3&);
+extern template bool exactly<contains_body>(const kdop<14>&, const capsule3&);
+extern template bool exactly<contains_body>(const kdop<18>&, const capsule3&);
+extern template bool exactly<contains_body>(const kdop<26>&, const capsule3&);
 } // namespace incidence::detail

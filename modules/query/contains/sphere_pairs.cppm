@@ -146,12 +146,16 @@ template <class K>
 // of the vertices iff it holds each vertex (|v - c|^2 <= r^2, degree 2). Semantics: a vertex on the
 // sphere counts; unchecked negative radii act as |r|; a NaN or infinite number holds nothing.
 
+// Every vertex finite and held (in(p)): a convex set holds their hull iff it holds each.
+template <std::size_t N, class In>
+[[nodiscard]] constexpr bool holds_vertices(const std::array<point3, N>& v, const In& in) {
+    for (const point3& p : v)
+        if (!finite(p) || !in(p)) return false;
+    return true;
+}
 template <class K, std::size_t N>
 [[nodiscard]] constexpr bool holds_all(K& k, const sphere3& s, const std::array<point3, N>& v) {
-    if (!ball::usable(s)) return false;
-    for (const point3& p : v)
-        if (!finite(p) || !intersects(k, p, s)) return false;
-    return true;
+    return ball::usable(s) && holds_vertices(v, [&](point3 p) { return intersects(k, p, s); });
 }
 template <class K>
 [[nodiscard]] constexpr bool contains(K& k, const sphere3& s, const segment3& g) {

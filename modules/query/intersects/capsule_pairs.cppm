@@ -1,4 +1,6 @@
 // intersects: capsule_pairs
+module;
+#include <array>
 export module incidence.detail:intersects.capsule_pairs;
 import incidence.core;
 import incidence.arith;
@@ -8,6 +10,11 @@ import :engines.sphere;
 import :engines.tetrahedron;
 import :engines.ball_flat;
 import :engines.capsule;
+import :engines.polygon3;
+import :engines.mesh;
+import :engines.capsule_rows;
+import :engines.halfspace_slabs;
+import :engines.kdop;
 import :intersects.box_pairs;
 import :intersects.sphere_pairs;
 import :intersects.triangle_pairs;
@@ -17,7 +24,7 @@ import :exactly;
 export namespace incidence::detail {
 
 // capsule3 against the point, the ball, the linear shapes, the plane, the triangle, the
-// tetrahedron, the box and the capsule: engines/capsule.cppm (the segment's distance against the
+// tetrahedron, the box, the capsule, the polygon, the solid mesh and the half-space sets: engines/capsule.cppm (the segment's distance against the
 // radius: its ends' balls, the segment itself, the shape's edges).
 // Semantics: the closed capsule (the points within |r| of the closed segment ab; a = b is a ball);
 // closed shapes as in their own pairs (a collinear triangle or a flat tetrahedron is its hull, a
@@ -92,6 +99,51 @@ template <class K>
     return swept::near_edges(k, c.a, c.b, edges, 12, r);
 }
 
+// A polygon: an end's ball meets it, the segment meets it (polygon3d::linear_meets), or the
+// segment lies within the radius of an edge of a ring (the sliding argument of capsule.cppm holds
+// for any closed planar set bounded by segments).
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const capsule3& c, const polygon3& g) {
+    if (!usable(c) || !polygon3d::usable(k, g)) return false;
+    const double r = reach(c);
+    if (ball_flat::meets(k, g, c.a, r) || ball_flat::meets(k, g, c.b, r)) return true;
+    const linear3 s = core(c);
+    if (polygon3d::linear_meets(k, g, s)) return true;
+    return polygon3d::any_edge(g, [&](const segment3& e) { return swept::linear_within(k, s, as_linear(e), r, true); });
+}
+// A solid mesh: the capsule meets a triangle, or its end a is inside (a capsule that meets the
+// solid and no triangle lies wholly inside it); the triangles whose boxes miss the capsule's box
+// (rounded outward) are skipped.
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const capsule3& c, const mesh3& m) {
+    if (!usable(c) || !solid_mesh::well_formed(m)) return false;
+    const point3 ends[2] = {c.a, c.b};
+    const aabb3 xb = ball_flat::reach_box(ends, 2, reach(c));
+    if (!solid_mesh::boxes_meet(solid_mesh::bounds(m), xb)) return false;
+    return solid_mesh::mesh_meets(k, m, [&](const triangle3& f) { return intersects(k, c, f); }, c.a, &xb);
+}
+
+// The half-space sets: engines/capsule_rows.cppm (the end balls, the segment, then the rows' lines
+// and vertices within the radius of the segment's inside). Semantics: the closed half-space set of
+// convex_polyhedron_point.cppm (possibly empty or unbounded), the frustum's view volume, the closed
+// k-DOP; a non-finite number, a count outside [0, capacity] or an empty k-DOP slab: no set, so no.
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const capsule3& c, const convex_polyhedron3& p) {
+    if (!usable(c) || !halfspaces::well_formed(p.planes.data(), p.count, convex_polyhedron3::capacity)) return false;
+    return swept_rows::meets(k, p.planes.data(), p.count, c.a, c.b, reach(c));
+}
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const capsule3& c, const frustum3& f) {
+    if (!usable(c) || !halfspaces::well_formed(f.planes.data(), 6, 6)) return false;
+    return swept_rows::meets(k, f.planes.data(), 6, c.a, c.b, reach(c));
+}
+template <class K, int N>
+[[nodiscard]] constexpr bool intersects(K& k, const capsule3& c, const kdop<N>& b) {
+    if (!usable(c) || !usable_kdop(b)) return false;
+    const std::array<plane3, N> rows = kdop_slabs::halfspaces(b);
+    return swept_rows::meets(k, rows.data(), N, c.a, c.b, reach(c));
+}
+
 } // namespace incidence::detail
 
 // The exact tier's fallback, compiled once in the library (CMakeLists.txt generates the definitions).
@@ -106,4 +158,12 @@ extern template bool exactly<intersects_body>(const capsule3&, const plane3&);
 extern template bool exactly<intersects_body>(const capsule3&, const triangle3&);
 extern template bool exactly<intersects_body>(const capsule3&, const tetrahedron3&);
 extern template bool exactly<intersects_body>(const aabb3&, const capsule3&);
+extern template bool exactly<intersects_body>(const capsule3&, const polygon3&);
+extern template bool exactly<intersects_body>(const capsule3&, const mesh3&);
+extern template bool exactly<intersects_body>(const capsule3&, const convex_polyhedron3&);
+extern template bool exactly<intersects_body>(const capsule3&, const frustum3&);
+extern template bool exactly<intersects_body>(const capsule3&, const kdop<6>&);
+extern template bool exactly<intersects_body>(const capsule3&, const kdop<14>&);
+extern template bool exactly<intersects_body>(const capsule3&, const kdop<18>&);
+extern template bool exactly<intersects_body>(const capsule3&, const kdop<26>&);
 } // namespace incidence::detail

@@ -23,6 +23,8 @@ import :intersects.linear_pairs;
 import :intersects.tetrahedron_pairs;
 import :engines.mesh;
 import :engines.polygon3;
+import :engines.sphere;
+import :engines.ball_flat;
 import :engines.plane;
 import :intersects.obb_pairs;
 import :intersects.plane_pairs;
@@ -157,6 +159,22 @@ template <class K>
     return false;
 }
 
+// mesh3 against sphere3 (the closed ball; unchecked negative radii act as |r|).
+// Semantics: the mesh's point set (shapes/mesh3.cppm: its triangles and the points of odd
+// crossing parity); touching a triangle counts. Method: the ball meets a triangle
+// (ball_flat.cppm, degree <= 6), or its centre is inside (a ball that meets the solid and no
+// triangle lies wholly inside it); the triangles whose boxes miss the ball's box (rounded
+// outward) are skipped.
+
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const mesh3& m, const sphere3& s) {
+    if (!solid_mesh::well_formed(m) || !ball::usable(s)) return false;
+    const double r = ball::magnitude(s.radius);
+    const aabb3 xb = ball_flat::reach_box(&s.center, 1, r);
+    if (!solid_mesh::boxes_meet(solid_mesh::bounds(m), xb)) return false;
+    return solid_mesh::mesh_meets(k, m, [&](const triangle3& f) { return ball_flat::meets(k, f, s.center, r); }, s.center, &xb);
+}
+
 // mesh3 against ray3 (a point when the direction is zero).
 // Semantics: the mesh's point set (shapes/mesh3.cppm: its triangles and the points of odd
 // crossing parity); touching a triangle counts.
@@ -187,6 +205,7 @@ namespace incidence::detail {
 extern template bool exactly<intersects_body>(const mesh3&, const point3&);
 extern template bool exactly<intersects_body>(const mesh3&, const segment3&);
 extern template bool exactly<intersects_body>(const mesh3&, const triangle3&);
+extern template bool exactly<intersects_body>(const mesh3&, const sphere3&);
 extern template bool exactly<intersects_body>(const aabb3&, const mesh3&);
 extern template bool exactly<intersects_body>(const line3&, const mesh3&);
 extern template bool exactly<intersects_body>(const mesh3&, const mesh3&);

@@ -13,6 +13,7 @@ import :engines.ball_halfspaces;
 import :engines.ball_obb;
 import :engines.ball_flat;
 import :engines.linear;
+import :engines.polygon3;
 import :engines.separating_axes;
 import :engines.tetrahedron;
 import :exactly;
@@ -125,6 +126,18 @@ template <class K>
     return finite(t) && ball::usable(s) && ball_flat::meets(k, t, s.center, s.radius);
 }
 
+// polygon3 against sphere3 (the polygon's point set, shapes/polygon3.cppm; the closed ball):
+// ball_flat.cppm's plane, foot and edges. Semantics: touching counts; a polygon that is no set
+// (bad indices, non-finite vertices, a plane normal with no component along its axis) meets
+// nothing; for vertices that are not coplanar the answer is that of the procedure (the plane of
+// the three plane vertices, then the edges), as in every polygon pair. Unchecked negative radii
+// act as |r|.
+
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const polygon3& g, const sphere3& s) {
+    return ball::usable(s) && polygon3d::usable(k, g) && ball_flat::meets(k, g, s.center, s.radius);
+}
+
 // obb3 against sphere3 (closed box read as the parallelepiped its axes span, closed ball):
 // ball_obb.cppm's box coordinates. Semantics: touching at a face, an edge or a corner counts; a box
 // with dependent axes is the flat set they span; unchecked negative radii act as |r|; NaN,
@@ -180,6 +193,7 @@ extern template bool exactly<intersects_body>(const line3&, const sphere3&);
 extern template bool exactly<intersects_body>(const plane3&, const sphere3&);
 extern template bool exactly<intersects_body>(const sphere3&, const triangle3&);
 extern template bool exactly<intersects_body>(const sphere3&, const tetrahedron3&);
+extern template bool exactly<intersects_body>(const polygon3&, const sphere3&);
 extern template bool exactly<intersects_body>(const convex_polyhedron3&, const sphere3&);
 extern template bool exactly<intersects_body>(const frustum3&, const sphere3&);
 extern template bool exactly<intersects_body>(const kdop<6>&, const sphere3&);

@@ -36,4 +36,15 @@ TEST_CASE("capsule_capsule: oracle, random and near-degenerate", "[capsule_capsu
     support::capsule_oracle<capsule3>("capsule_capsule", support::cases(10000), approx_bound);
 }
 
+TEST_CASE("capsule_capsule: contains, fixtures", "[capsule_capsule]") {
+    const capsule3 c{{0, 0, 0}, {10, 0, 0}, 5};
+    CHECK(contains(c, capsule3{{0, 3, 0}, {10, 3, 0}, 2})); // touching the cylinder along a line
+    CHECK_FALSE(contains(c, capsule3{{0, 3, 0}, {10, 3, 0}, 0x1.0000000000001p1}));
+    CHECK(contains(c, c));
+    CHECK_FALSE(contains(c, capsule3{{0, 0, 0}, {10, 0, 0}, 0x1.4000000000001p2}));
+}
+TEST_CASE("capsule_capsule: contains", "[capsule_capsule][oracle]") {
+    support::capsule_contains<capsule3>("capsule_capsule", support::cases(10000), approx_bound);
+}
+
 } // namespace test_query_capsule_capsule

@@ -2,7 +2,9 @@
 // exactly where their sum in double rounds; one ulp short); // every tier against the exact QP (CGAL's QP_solver over Gmpzf: the squared distance between the
 // capsule's segment and the ball's centre, against the radii) on 10,000 random cases and 10,000 capsules
 // grown from balls touching small dyadic points (each taking half the radius) at a vertex, an edge or a face point, exactly or within ulps,
-// at a random scale (testkit/capsule_cases.hpp).
+// at a random scale (testkit/capsule_cases.hpp). contains both ways: fixtures, and 10,000 random and
+// 10,000 touching-from-inside cases each, against CGAL's squared distance over Epeck with the radii's
+// difference exact, and the end balls in the ball in rationals.
 #include <catch2/catch_test_macros.hpp>
 #include "testkit/oracle/cgal_oracle.hpp"
 import incidence;
@@ -33,6 +35,23 @@ TEST_CASE("capsule_sphere: fixtures", "[capsule_sphere]") {
 }
 TEST_CASE("capsule_sphere: oracle, random and near-degenerate", "[capsule_sphere][oracle]") {
     support::capsule_oracle<sphere3>("capsule_sphere", support::cases(10000), approx_bound);
+}
+
+TEST_CASE("capsule_sphere: contains, fixtures", "[capsule_sphere]") {
+    const capsule3 c{{0, 0, 0}, {10, 0, 0}, 5};
+    CHECK(contains(c, sphere3{{5, 3, 0}, 2})); // touching the cylinder from inside
+    CHECK_FALSE(contains(c, sphere3{{5, 3, 0}, 0x1.0000000000001p1}));
+    CHECK(contains(c, sphere3{{13, 0, 0}, 2})); // touching the cap
+    CHECK_FALSE(contains(c, sphere3{{13, 0, 0}, 0x1.0000000000001p1}));
+    CHECK_FALSE(contains(c, sphere3{{5, 0, 0}, 6})); // larger than the capsule's radius
+    CHECK(contains(sphere3{{0, 0, 0}, 5}, capsule3{{3, 0, 0}, {0, 3, 0}, 2}));
+    CHECK_FALSE(contains(sphere3{{0, 0, 0}, 5}, capsule3{{3, 0, 0}, {0, 3, 0}, 0x1.0000000000001p1}));
+    CHECK(contains(sphere3{{0, 0, 0}, 5}, capsule3{{0, 0, 0}, {0, 0, 0}, 5}));   // the same ball
+    CHECK(contains(sphere3{{0, 0, 0}, -5}, capsule3{{3, 0, 0}, {0, 3, 0}, -2})); // negative radii act as |r|
+}
+TEST_CASE("capsule_sphere: contains", "[capsule_sphere][oracle]") {
+    support::capsule_contains<sphere3>("capsule_sphere", support::cases(10000), approx_bound);
+    support::capsule_contained<sphere3>("capsule_sphere", support::cases(10000), approx_bound);
 }
 
 } // namespace test_query_capsule_sphere

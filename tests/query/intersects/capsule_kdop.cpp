@@ -1,0 +1,40 @@
+// capsule3 x kdop<14>: fixtures (the box [0, 10]^3: a capsule parallel above a face, one along an
+// edge, one whose middle is nearest an edge, one whose middle is nearest a corner, a ball at a
+// corner, each touching and one ulp short); every tier against the exact QP between the capsule's
+// segment and the set (CGAL's QP_solver over Gmpzf) on 5,000 random and 5,000 near-degenerate
+// cases (capsules grown from balls touching the set at a face, an edge or a vertex, exactly or
+// within ulps, at scales 2^-500..2^500; testkit/capsule_cases.hpp). contains(kdop<14>, capsule3):
+// fixtures (a capsule touching two faces from inside, one ulp too wide, an end outside); both end
+// balls in the rows, in rationals (oracle::ball_in_rows), on 10,000 random cases (a capsule grown
+// from a random ball) and 10,000 capsules from a point inside the set to a point of its boundary
+// or halfway, thin or of radius zero (touching from inside).
+#include <catch2/catch_test_macros.hpp>
+#include "testkit/oracle/cgal_oracle.hpp"
+import incidence;
+import incidence.detail;
+#include "testkit/testing.hpp"
+#include "testkit/check.hpp"
+#include "testkit/capsule_checks.hpp"
+
+namespace test_query_capsule_kdop { // this file's names, apart from the files compiled with it (tests/CMakeLists.txt)
+
+using namespace incidence;
+
+namespace {
+const double approx_bound = catalog::approximate_bound("capsule_kdop"); // stated in the catalog (modules/query/catalog.cppm)
+} // namespace
+
+TEST_CASE("capsule_kdop: fixtures", "[capsule_kdop]") {
+    // the box [0, 10]^3
+    kdop<6> x{};
+    for (unsigned i = 0; i < 3; ++i) x.min[i] = 0, x.max[i] = 10;
+    support::capsule_box_set_fixtures(x);
+}
+TEST_CASE("capsule_kdop: oracle, random and near-degenerate", "[capsule_kdop][oracle]") {
+    support::capsule_oracle<kdop<14>>("capsule_kdop", support::cases(5000), approx_bound);
+}
+TEST_CASE("capsule_kdop: contains", "[capsule_kdop][oracle]") {
+    support::capsule_contained<kdop<14>>("capsule_kdop", support::cases(10000), approx_bound);
+}
+
+} // namespace test_query_capsule_kdop
