@@ -349,12 +349,51 @@ template <class Rows>
                                        std::uint64_t seed = first_seed) {
     const unsigned total = rows.size();
     if (total > max_rows) return {};
+    // The program is solved in y = x / 2^place, each row divided by 2^k, k the exponent of its
+    // largest normal component (both exact, barring underflow), where those exponents pass 2^7: a
+    // set far from the unit scale (beyond the box's half-width 2^200, or tiny; the tests scale by
+    // 2^-500..2^500) would otherwise end on the box, and every guess on the search of every triple.
+    // place: the exponent of the largest |offset| over the least largest normal component. Nearer
+    // the unit scale nothing is scaled.
+    constexpr int near_unit = 128;
+    auto largest = [](double a, double b, double c) {
+        const double m = arith::abs(a) > arith::abs(b) ? arith::abs(a) : arith::abs(b);
+        return m > arith::abs(c) ? m : arith::abs(c);
+    };
+    auto exponent = [](double m) { return is_finite(m) && m != 0.0 ? arith::exponent_of(m) : 0; };
+    auto far = [](int e) { return e < -near_unit || e > near_unit; };
+    double most_offset = 0.0, least_normal = 0.0, most_normal = 0.0;
+    for (unsigned x = 0; x < total; ++x) {
+        if (rows.zero(x)) continue;
+        const auto v = rows.normal(arith::lift_double{}, x);
+        const double m = largest(v.x, v.y, v.z), c = arith::abs(rows.offset(arith::lift_double{}, x));
+        if (c > most_offset) most_offset = c;
+        if (m > most_normal) most_normal = m;
+        if (least_normal == 0.0 || m < least_normal) least_normal = m;
+    }
+    const bool scale_rows = far(exponent(least_normal)) || far(exponent(most_normal));
+    int place = most_offset > 0.0 ? exponent(most_offset) - exponent(least_normal) : 0; // at most the rows' own
+    if (scale_rows) {                                                                   // each row's own, its normal scaled
+        place = 0;
+        bool placed = false;
+        for (unsigned x = 0; x < total; ++x) {
+            if (rows.zero(x)) continue;
+            const auto v = rows.normal(arith::lift_double{}, x);
+            const double c = rows.offset(arith::lift_double{}, x);
+            if (c == 0.0 || !is_finite(c)) continue;
+            const int e = exponent(c) - exponent(largest(v.x, v.y, v.z));
+            if (!placed || e > place) place = e, placed = true;
+        }
+    }
+    if (!far(place)) place = 0;
+    auto scaled = [](double a, int by) { return by == 0 ? a : arith::scale_by_power_of_two(a, by); };
     std::array<row<3>, max_rows> in;
     unsigned n = 0;
     for (unsigned x = 0; x < total; ++x) {
         if (rows.zero(x)) continue;
         const auto v = rows.normal(arith::lift_double{}, x);
-        in[n++] = row<3>{{v.x, v.y, v.z}, rows.offset(arith::lift_double{}, x), x};
+        const int k = scale_rows ? exponent(largest(v.x, v.y, v.z)) : 0;
+        in[n++] = row<3>{{scaled(v.x, -k), scaled(v.y, -k), scaled(v.z, -k)}, scaled(rows.offset(arith::lift_double{}, x), -k - place), x};
     }
     // a fixed shuffle (xorshift), the same on every call: the expected linear time of a random order
     std::uint64_t s = seed;
@@ -367,7 +406,8 @@ template <class Rows>
     const result<3> r = solve<3>(in.data(), n, f);
     guess g;
     if (r.feasible) {
-        g.vertex = true, g.n = 3, g.x = r.x;
+        g.vertex = true, g.n = 3;
+        for (unsigned c = 0; c < 3; ++c) g.x[c] = scaled(r.x[c], place);
         for (unsigned c = 0; c < 3; ++c) g.r[c] = r.tight[c];
     } else {
         g.n = static_cast<unsigned>(r.nwhy);
