@@ -69,12 +69,12 @@ HWY_INLINE ball_inputs box_ball_inputs(D d, const fields& f, std::size_t i) {
     x.r = {r, hn::Abs(r)};
     return x;
 }
-// Fields 0..3 and 4..7 two balls: the difference of the centres, and r = r_a + r_b (one
-// operation on inputs: its permanent is |r|).
+// Fields 0..3 and 4..7 two balls: the difference of the centres, and r = |r_a| + |r_b| (one
+// operation on inputs: its permanent is r; a negative radius acts as |r|, as in the scalar test).
 HWY_INLINE ball_inputs ball_ball_inputs(D d, const fields& f, std::size_t i) {
     ball_inputs x;
     for (int k = 0; k < 3; ++k) x.g[k] = exact_difference(f.at(d, k, i), f.at(d, 4 + k, i));
-    const V r = hn::Add(f.at(d, 3, i), f.at(d, 7, i));
+    const V r = hn::Add(hn::Abs(f.at(d, 3, i)), hn::Abs(f.at(d, 7, i)));
     x.r = {r, hn::Abs(r)};
     x.usable = hn::Eq(hn::Zero(d), hn::Zero(d)); // every lane
     return x;

@@ -175,11 +175,11 @@ bool box_contains_box(const double amn[3], const double amx[3], const double bmn
 }
 bool point_in_ball(const double p[3], const double c[3], double r) { return CGAL::squared_distance(P(p), P(c)) <= FT(r) * FT(r); }
 bool ball_ball(const double c1[3], double r1, const double c2[3], double r2) {
-    const FT s = FT(r1) + FT(r2);
+    const FT s = FT(std::fabs(r1)) + FT(std::fabs(r2)); // a negative radius acts as |r|
     return CGAL::squared_distance(P(c1), P(c2)) <= s * s;
 }
 bool ball_contains_ball(const double c1[3], double r1, const double c2[3], double r2) {
-    const FT s = FT(r1) - FT(r2);
+    const FT s = FT(std::fabs(r1)) - FT(std::fabs(r2)); // a negative radius acts as |r|
     return s >= 0 && CGAL::squared_distance(P(c1), P(c2)) <= s * s;
 }
 bool ray_ball(const double o[3], const double d[3], const double c[3], double r) {

@@ -130,14 +130,16 @@ template <class K>
 // sphere3 against sphere3 (closed balls).
 // Semantics: intersects iff |c1 - c2| <= r1 + r2 (tangent balls intersect);
 // contains(a, b) iff ball b lies inside ball a: r_a >= r_b and |ca - cb| <= r_a - r_b
-// (internally tangent counts; equal balls contain each other).
+// (internally tangent counts; equal balls contain each other). Unchecked negative radii act as
+// |r|, as in every other pair of the ball.
 
 template <class K>
 [[nodiscard]] constexpr bool contains(K& k, const sphere3& a, const sphere3& b) {
-    if (k.sgn([=](auto L) { return L(a.radius) - L(b.radius); }) == sign::negative) return false;
+    const double ra = ball::magnitude(a.radius), rb = ball::magnitude(b.radius);
+    if (k.sgn([=](auto L) { return L(ra) - L(rb); }) == sign::negative) return false;
     return k.sgn([=](auto L) {
         const auto d = arith::lift(L, a.center) - arith::lift(L, b.center);
-        const auto r = L(a.radius) - L(b.radius);
+        const auto r = L(ra) - L(rb);
         return r * r - arith::dot(d, d);
     }) != sign::negative;
 }

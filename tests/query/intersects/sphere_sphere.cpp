@@ -55,6 +55,11 @@ TEST_CASE("sphere_sphere: fixtures", "[sphere_sphere]") {
     CHECK(contains(sphere3{{0, 0, 0}, 4}, sphere3{{1, 2, 2}, 1})); // internally tangent
     CHECK_FALSE(contains(sphere3{{0, 0, 0}, 4}, sphere3{{1, 2, 2}, 1.0000000000000002}));
     CHECK(contains(sphere3{{0, 0, 0}, 1}, sphere3{{0, 0, 0}, 1})); // equal balls
+    // unchecked negative radii act as |r|, as in every other pair of the ball
+    CHECK(intersects(sphere3{{0, 0, 0}, -1}, sphere3{{1.5, 0, 0}, 1}));
+    CHECK(contains(sphere3{{0, 0, 0}, -2}, sphere3{{0.5, 0, 0}, 1}));
+    CHECK(contains(sphere3{{0, 0, 0}, 2}, sphere3{{0.5, 0, 0}, -1}));
+    CHECK_FALSE(contains(sphere3{{0, 0, 0}, 1}, sphere3{{0, 0, 0}, -2}));
 }
 TEST_CASE("sphere_sphere: oracle, random", "[sphere_sphere][oracle]") {
     support::run_oracle("sphere_sphere random", support::cases(100000), approx_bound, random_case, truth, skip, describe);
