@@ -419,7 +419,12 @@ void ball_flat_tiers(const std::string& pair, bool near) {
 // A capsule against a partner (testkit/capsule_cases.hpp: grown from a touching ball, or random),
 // the exact QP between the cores as truth (a case it declines is drawn again).
 template <class B>
-[[gnu::noinline]] void capsule_tiers(const std::string& pair, bool near) {
+struct capsule_set {
+    std::vector<std::pair<capsule3, B>> cases;
+    std::vector<bool> truth;
+};
+template <class B>
+[[gnu::noinline]] capsule_set<B> capsule_tiers(const std::string& pair, bool near) {
     support::rng r = set_rng(near);
     std::vector<std::pair<capsule3, B>> cs;
     std::vector<bool> truth;
@@ -433,6 +438,7 @@ template <class B>
     tiers(
         pair, near ? "near_degenerate" : "random", cs, [&](const std::pair<capsule3, B>&) { return bool(truth[i++]); },
         [](auto tier, const std::pair<capsule3, B>& c) { return intersects<decltype(tier)>(c.first, c.second); });
+    return {cs, truth};
 }
 // A ball or a capsule against a polygon or a solid mesh (testkit/ball_view_cases.hpp: touching star
 // polygons with holes or closed star meshes, or random), ball_view_truth.hpp's oracle as truth (a

@@ -236,6 +236,7 @@ void register_contains(bool near) {
     capsule_contains<triangle3>("capsule_triangle", near);
     capsule_contains<tetrahedron3>("capsule_tetrahedron", near);
     capsule_contains<aabb3>("capsule_aabb", near);
+    capsule_contains<obb3>("capsule_obb", near);
     capsule_contains<sphere3>("capsule_sphere", near);
     capsule_contains<capsule3>("capsule_capsule", near);
     capsule_contained<aabb3>("aabb_capsule", near);

@@ -1,5 +1,5 @@
 // FCL 0.7 (Debian libfcl-dev) as a benchmark peer: fcl::OBB<double>::overlap,
-// fcl::detail::sphereBoxIntersect and fcl::detail::Intersect<double>::intersect_Triangle, called as FCL's users call them.
+// fcl::detail::sphereBoxIntersect, sphereCapsuleIntersect, capsuleCapsuleDistance, GJKSolver_libccd and fcl::detail::Intersect<double>::intersect_Triangle, called as FCL's users call them.
 #include "fcl_peer.hpp"
 
 #include <fcl/geometry/bvh/BVH_model.h>
@@ -10,6 +10,12 @@
 #include <memory>
 #include <fcl/narrowphase/detail/traversal/collision/intersect.h>
 #include <fcl/narrowphase/detail/primitive_shape_algorithm/sphere_box.h>
+#include <fcl/narrowphase/detail/primitive_shape_algorithm/sphere_capsule.h>
+#include <fcl/narrowphase/detail/primitive_shape_algorithm/capsule_capsule.h>
+#include <fcl/narrowphase/detail/gjk_solver_libccd.h>
+#include <fcl/geometry/shape/box.h>
+#include <fcl/geometry/shape/capsule.h>
+#include <fcl/geometry/shape/sphere.h>
 
 namespace fcl_peer {
 
@@ -21,19 +27,53 @@ fcl::OBB<double> box(const double c[3], const double a[9], const double h[3]) {
     return fcl::OBB<double>(axis, fcl::Vector3<double>(c[0], c[1], c[2]), fcl::Vector3<double>(h[0], h[1], h[2]));
 }
 fcl::Vector3<double> v(const double p[3]) { return {p[0], p[1], p[2]}; }
+fcl::Transform3<double> box_pose(const double cb[3], const double ab[9]) {
+    fcl::Transform3<double> X = fcl::Transform3<double>::Identity();
+    for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 3; ++k) X.linear()(k, i) = ab[3 * i + k]; // the columns are the axes
+    X.translation() = v(cb);
+    return X;
+}
+struct posed_capsule {
+    fcl::Capsule<double> shape;
+    fcl::Transform3<double> pose;
+};
+posed_capsule capsule(const double a[3], const double b[3], double r) {
+    const fcl::Vector3<double> A = v(a), B = v(b), d = B - A;
+    fcl::Transform3<double> X = fcl::Transform3<double>::Identity();
+    X.translation() = 0.5 * (A + B);
+    const double length = d.norm();
+    if (length > 0) X.linear() = Eigen::Quaterniond::FromTwoVectors(fcl::Vector3<double>::UnitZ(), d).toRotationMatrix();
+    return {fcl::Capsule<double>(r, length), X};
+}
 } // namespace
 
 bool obb_obb(const double ca[3], const double aa[9], const double ha[3], const double cb[3], const double ab[9], const double hb[3]) {
     return box(ca, aa, ha).overlap(box(cb, ab, hb));
 }
 bool sphere_obb(const double c[3], double r, const double cb[3], const double ab[9], const double hb[3]) {
-    fcl::Transform3<double> ball = fcl::Transform3<double>::Identity(), box = fcl::Transform3<double>::Identity();
+    fcl::Transform3<double> ball = fcl::Transform3<double>::Identity();
     ball.translation() = v(c);
-    for (int i = 0; i < 3; ++i)
-        for (int k = 0; k < 3; ++k) box.linear()(k, i) = ab[3 * i + k]; // the columns are the axes
-    box.translation() = v(cb);
-    return fcl::detail::sphereBoxIntersect<double>(fcl::Sphere<double>(r), ball, fcl::Box<double>(2 * hb[0], 2 * hb[1], 2 * hb[2]), box,
-                                                   nullptr);
+    return fcl::detail::sphereBoxIntersect<double>(fcl::Sphere<double>(r), ball, fcl::Box<double>(2 * hb[0], 2 * hb[1], 2 * hb[2]),
+                                                   box_pose(cb, ab), nullptr);
+}
+bool capsule_sphere(const double a[3], const double b[3], double r, const double c[3], double rs) {
+    const posed_capsule k = capsule(a, b, r);
+    fcl::Transform3<double> ball = fcl::Transform3<double>::Identity();
+    ball.translation() = v(c);
+    return fcl::detail::sphereCapsuleIntersect<double>(fcl::Sphere<double>(rs), ball, k.shape, k.pose, nullptr);
+}
+bool capsule_capsule(const double a1[3], const double b1[3], double r1, const double a2[3], const double b2[3], double r2) {
+    const posed_capsule k1 = capsule(a1, b1, r1), k2 = capsule(a2, b2, r2);
+    double dist = 0;
+    fcl::Vector3<double> w1, w2;
+    fcl::detail::capsuleCapsuleDistance<double>(k1.shape, k1.pose, k2.shape, k2.pose, &dist, &w1, &w2);
+    return dist <= 0;
+}
+bool capsule_obb(const double a[3], const double b[3], double r, const double cb[3], const double ab[9], const double hb[3]) {
+    const posed_capsule k = capsule(a, b, r);
+    const fcl::detail::GJKSolver_libccd<double> solver;
+    return solver.shapeIntersect(k.shape, k.pose, fcl::Box<double>(2 * hb[0], 2 * hb[1], 2 * hb[2]), box_pose(cb, ab), nullptr);
 }
 bool triangle_triangle(const double p1[3], const double p2[3], const double p3[3], const double q1[3], const double q2[3],
                        const double q3[3]) {

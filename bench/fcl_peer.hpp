@@ -1,4 +1,4 @@
-// FCL's OBB-OBB, sphere-box and triangle-triangle tests (plain double), a peer in the benchmarks only. Its own
+// FCL's OBB-OBB, sphere-box, capsule and triangle-triangle tests (plain double), a peer in the benchmarks only. Its own
 // translation unit: FCL's and Eigen's headers never meet `import incidence;`.
 #pragma once
 #include <cstddef>
@@ -11,6 +11,14 @@ namespace fcl_peer {
 bool obb_obb(const double ca[3], const double aa[9], const double ha[3], const double cb[3], const double ab[9], const double hb[3]);
 // A ball (centre c, radius r) against that box: fcl::detail::sphereBoxIntersect without contacts.
 bool sphere_obb(const double c[3], double r, const double cb[3], const double ab[9], const double hb[3]);
+// A capsule (segment a b, radius r) against a ball (fcl::detail::sphereCapsuleIntersect), a capsule
+// (fcl::detail::capsuleCapsuleDistance: touching when the signed distance is <= 0) and a box (as
+// above; fcl::detail::GJKSolver_libccd::shapeIntersect, FCL's default narrow phase for the pair).
+// Each capsule is an fcl::Capsule along z posed at the segment's midpoint by the rotation taking z
+// to b - a (rounded, as FCL's users pose one).
+bool capsule_sphere(const double a[3], const double b[3], double r, const double c[3], double rs);
+bool capsule_capsule(const double a1[3], const double b1[3], double r1, const double a2[3], const double b2[3], double r2);
+bool capsule_obb(const double a[3], const double b[3], double r, const double cb[3], const double ab[9], const double hb[3]);
 bool triangle_triangle(const double p1[3], const double p2[3], const double p3[3], const double q1[3], const double q2[3],
                        const double q3[3]);
 

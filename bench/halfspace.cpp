@@ -54,15 +54,51 @@ void register_halfspace(bool near) {
     ball_flat_tiers<triangle3>("sphere_triangle", near);
     ball_flat_tiers<tetrahedron3>("sphere_tetrahedron", near);
     capsule_tiers<point3>("capsule_point", near);
-    capsule_tiers<sphere3>("capsule_sphere", near);
-    capsule_tiers<capsule3>("capsule_capsule", near);
     capsule_tiers<segment3>("capsule_segment", near);
     capsule_tiers<ray3>("capsule_ray", near);
     capsule_tiers<line3>("capsule_line", near);
     capsule_tiers<plane3>("capsule_plane", near);
     capsule_tiers<triangle3>("capsule_triangle", near);
     capsule_tiers<tetrahedron3>("capsule_tetrahedron", near);
-    capsule_tiers<aabb3>("aabb_capsule", near);
+    // FCL's capsule tests beside the exact tier (bench/fcl_peer.cpp), on the same cases
+    const std::string dist = near ? "near_degenerate" : "random";
+    {
+        const auto set = capsule_tiers<sphere3>("capsule_sphere", near);
+        reg("fcl/intersects/capsule_sphere/" + dist, set.cases, set.truth, check::approximate, [](const std::pair<capsule3, sphere3>& c) {
+            double a[3], b[3], s[3];
+            arr(c.first.a, a), arr(c.first.b, b), arr(c.second.center, s);
+            return fcl_peer::capsule_sphere(a, b, std::fabs(c.first.radius), s, std::fabs(c.second.radius));
+        });
+    }
+    {
+        const auto set = capsule_tiers<capsule3>("capsule_capsule", near);
+        reg("fcl/intersects/capsule_capsule/" + dist, set.cases, set.truth, check::approximate, [](const std::pair<capsule3, capsule3>& c) {
+            double a1[3], b1[3], a2[3], b2[3];
+            arr(c.first.a, a1), arr(c.first.b, b1), arr(c.second.a, a2), arr(c.second.b, b2);
+            return fcl_peer::capsule_capsule(a1, b1, std::fabs(c.first.radius), a2, b2, std::fabs(c.second.radius));
+        });
+    }
+    {
+        const auto set = capsule_tiers<aabb3>("aabb_capsule", near);
+        reg("fcl/intersects/aabb_capsule/" + dist, set.cases, set.truth, check::approximate, [](const std::pair<capsule3, aabb3>& c) {
+            double a[3], b[3];
+            arr(c.first.a, a), arr(c.first.b, b);
+            const aabb3& x = c.second;
+            const double cb[3] = {0.5 * x.min.x + 0.5 * x.max.x, 0.5 * x.min.y + 0.5 * x.max.y, 0.5 * x.min.z + 0.5 * x.max.z};
+            const double hb[3] = {0.5 * x.max.x - 0.5 * x.min.x, 0.5 * x.max.y - 0.5 * x.min.y, 0.5 * x.max.z - 0.5 * x.min.z};
+            static constexpr double identity[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+            return fcl_peer::capsule_obb(a, b, std::fabs(c.first.radius), cb, identity, hb);
+        });
+    }
+    {
+        const auto set = capsule_tiers<obb3>("capsule_obb", near);
+        reg("fcl/intersects/capsule_obb/" + dist, set.cases, set.truth, check::approximate, [](const std::pair<capsule3, obb3>& c) {
+            double a[3], b[3], cb[3], ab[9], hb[3];
+            arr(c.first.a, a), arr(c.first.b, b);
+            obb_arrays(c.second, cb, ab, hb);
+            return fcl_peer::capsule_obb(a, b, std::fabs(c.first.radius), cb, ab, hb);
+        });
+    }
     capsule_tiers<convex_polyhedron3>("capsule_convex_polyhedron", near);
     capsule_tiers<frustum3>("capsule_frustum", near);
     capsule_tiers<kdop<14>>("capsule_kdop_14", near);
@@ -70,7 +106,6 @@ void register_halfspace(bool near) {
         const auto cs = ball_tiers<obb3>("obb_sphere", near);
         std::vector<bool> t;
         for (const auto& c : cs) t.push_back(intersects(c.first, c.second)); // the exact tier, checked against the QP above
-        const std::string dist = near ? "near_degenerate" : "random";
         reg("closest_point/intersects/obb_sphere/" + dist, cs, t, check::approximate,
             [](const std::pair<obb3, sphere3>& c) { return method::obb_sphere_closest_point(c.first, c.second); });
         reg("fcl/intersects/obb_sphere/" + dist, cs, t, check::approximate, [](const std::pair<obb3, sphere3>& c) {

@@ -1,6 +1,7 @@
 // The flat pairs: points, lines, rays, segments, planes and triangles against each other (every
 // ordered pair of the six kinds, 36 in all), and points, segments, rays and lines in the plane
-// (16 more). Byte 0 picks the first shape's kind (the plane's when its top bit is set), byte 1
+// (16 more), and a disk (circle2, doubles 20..22) against the first of those and against a disk of
+// doubles 23..25 (contains too). Byte 0 picks the first shape's kind (the plane's when its top bit is set), byte 1
 // the second's, then 9 doubles each (a shape reads the ones it needs: a point 3, a segment, ray
 // or line 6, a plane 4 (normal, offset), a triangle 9; in the plane a point 2, the others 4). Differential against CGAL Epeck
 // (oracle::flat): the exact tier agrees, conservative never misses, aggressive never lies,
@@ -40,6 +41,7 @@ import incidence.detail;
 #include "testkit/lp_shapes.hpp"
 #include "testkit/mesh_cases.hpp"
 #include "testkit/polygon3_cases.hpp"
+#include "testkit/circle2_cases.hpp"
 #include <array>
 #include <cstdint>
 #include <span>
@@ -161,6 +163,23 @@ void check_polygon(const polygon2& g, const B& b, bool finite) {
     if constexpr (std::is_same_v<B, segment2>) // contains against the oracle's exact breakpoints
         contains_contracts_with(g, b, oracle::polygon_contains_segment(data_of(g), {b.a.x, b.a.y}, {b.b.x, b.b.y}));
 }
+// A disk of the doubles d[0..3) (centre, radius) against b: every tier on any bits; on finite ones
+// the contracts against testkit/circle2_cases.hpp's oracle, and contains(disk, b) for a point, a
+// segment, a disk or a polygon.
+template <class B>
+void check_disk(const double* d, const B& b, bool finite) {
+    const circle2 c{{d[0], d[1]}, d[2]};
+    (void)intersects<approximate>(c, b);
+    (void)intersects<conservative>(b, c);
+    (void)intersects<aggressive>(c, b);
+    (void)classify(b, c);
+    if (!(finite && std::isfinite(d[0]) && std::isfinite(d[1]) && std::isfinite(d[2]))) {
+        if (intersects<exact>(c, b)) std::abort();
+        return;
+    }
+    contracts(c, b, support::disk_truth(c, b));
+    if constexpr (!std::is_same_v<B, ray2> && !std::is_same_v<B, line2>) contains_contracts_with(c, b, support::disk_holds_truth(c, b));
+}
 // The 3D polygon: every tier finishes; on finite input make() accepts exactly the simple rings, and
 // the contracts hold against the triangulation oracle (support::polygon3_truth).
 template <class B>
@@ -240,6 +259,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         } else {
             with_shape2(kb, v + 12, [&](const auto& b) { check_polygon(g, b, finite); });
         }
+        bool vertices_finite = true;
+        for (int i = 0; i < 12; ++i) vertices_finite = vertices_finite && std::isfinite(v[i]);
+        if (!vertices_finite) check_disk(v + 24, g, false);
+        else if (oracle::polygon_simple(data_of(g))) check_disk(v + 24, g, true); // the oracle's even-odd set needs simple rings
         return 0;
     }
     if ((data[0] & 0xc0) == 0x40 && (data[1] & 0x80)) { // a planar polygon in space
@@ -271,6 +294,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         for (int i = 0; i < used2[ka]; ++i) finite = finite && std::isfinite(v[i]);
         for (int i = 0; i < used2[kb]; ++i) finite = finite && std::isfinite(v[9 + i]);
         with_shape2(ka, v, [&](const auto& a) { with_shape2(kb, v + 9, [&](const auto& b) { check(a, b, finite); }); });
+        bool a_finite = true; // a disk of doubles 20..22 against the first shape and the disk of doubles 23..25
+        for (int i = 0; i < used2[ka]; ++i) a_finite = a_finite && std::isfinite(v[i]);
+        with_shape2(ka, v, [&](const auto& a) { check_disk(v + 20, a, a_finite); });
+        check_disk(v + 20, circle2{{v[23], v[24]}, v[25]}, std::isfinite(v[23]) && std::isfinite(v[24]) && std::isfinite(v[25]));
         return 0;
     }
     const int ka = data[0] % 6, kb = data[1] % 6;

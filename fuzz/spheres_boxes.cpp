@@ -17,12 +17,12 @@
 // (segment_sphere, line_sphere, plane_sphere, sphere_triangle, sphere_tetrahedron), every tier on
 // any bits, against CGAL's squared distance from the centre over Epeck on finite ones. And a capsule
 // of the doubles against a point, a ball, a capsule, a segment, a ray, a line, a plane, a triangle, a
-// tetrahedron and a box of them, every tier on any bits, one partner (byte 4) against the exact QP
+// tetrahedron, a box and an oriented box of them, every tier on any bits, one partner (byte 4) against the exact QP
 // on finite ones. And a ball and a capsule against a polygon3 (four vertices at one height, unchecked
 // on any bits; where make() accepts them, against the CGAL triangulation) and the closed mesh of
 // the tetrahedron p q c e (polygon_sphere, capsule_polygon, mesh_sphere, capsule_mesh), against
 // testkit/ball_view_truth.hpp's oracle on finite ones. And contains with a capsule: the capsule
-// around a point, a segment, a triangle, a box, a ball and a capsule, a ball and the half-space
+// around a point, a segment, a triangle, a box, an oriented box (its corners in rationals), a ball and a capsule, a ball and the half-space
 // set of byte 2 around it, against Epeck and rationals; and that capsule against that set, against
 // the exact QP. Any finding aborts.
 #include "testkit/oracle/cgal_oracle.hpp"
@@ -156,6 +156,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         (void)intersects<conservative>(triangle3{p, q, e}, cap);
         (void)intersects<aggressive>(cap, tetrahedron3{p, q, c, e});
         (void)intersects<approximate>(b1, cap);
+        (void)classify(ob, cap);
+        (void)contains<conservative>(cap, ob);
         (void)intersects<approximate>(cap, fr);
         (void)classify(cp, cap);
         (void)intersects<conservative>(cap, kd);
@@ -213,7 +215,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const auto within = [&](const auto& x, const oracle::convex_set& core, double r) {
             if (const auto t = oracle::qp_sets_within(axis, core, cap.radius, r)) contracts(cap, x, *t);
         };
-        switch (size < 5 ? 0 : data[4] % 10) {
+        switch (size < 5 ? 0 : data[4] % 11) {
         case 0: within(p, support::lp(p), 0); break;
         case 1: within(sphere3{p, std::fabs(r2)}, support::lp(p), std::fabs(r2)); break;
         case 2: within(capsule3{p, q, std::fabs(r2)}, support::lp(segment3{p, q}), std::fabs(r2)); break;
@@ -226,7 +228,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             break;
         case 7: within(triangle3{p, q, e}, support::lp(triangle3{p, q, e}), 0); break;
         case 8: within(tetrahedron3{p, q, c, e}, support::lp(tetrahedron3{p, q, c, e}), 0); break;
-        default: within(ordered(p, q), support::lp(ordered(p, q)), 0); break;
+        case 9: within(ordered(p, q), support::lp(ordered(p, q)), 0); break;
+        default:
+            if (std::isfinite(ob.half_extents[2]) && ob.half_extents[2] >= 0) within(ob, support::lp(ob), 0);
+            break;
         }
     }
     // a ball and a capsule against the polygon (where make() accepts it) and the tetrahedron's mesh
@@ -258,6 +263,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         for (int m = 0; m < 8; ++m)
             box_held = box_held && held({(m & 1) ? pq.max.x : pq.min.x, (m & 2) ? pq.max.y : pq.min.y, (m & 4) ? pq.max.z : pq.min.z});
         contains_contracts_with(cap, pq, box_held);
+        if (std::isfinite(ob.half_extents[2]) && ob.half_extents[2] >= 0) {
+            double oc[3], oa[9];
+            arr(ob.center, oc);
+            for (unsigned i = 0; i < 3; ++i) oa[3 * i] = ob.axes[i].x, oa[3 * i + 1] = ob.axes[i].y, oa[3 * i + 2] = ob.axes[i].z;
+            contains_contracts_with(cap, ob, oracle::box_in_capsule(oc, oa, ob.half_extents.data(), C, E, cap.radius));
+        }
         contains_contracts_with(cap, sphere3{p, r2}, ball_held(p, r2));
         contains_contracts_with(cap, capsule3{p, q, r2}, ball_held(p, r2) && ball_held(q, r2));
         const double around = std::fabs(r2);

@@ -1,6 +1,6 @@
 // Cases for a capsule against a shape (capsule_point, capsule_sphere, capsule_capsule,
 // capsule_segment, capsule_ray, capsule_line, capsule_plane, capsule_triangle,
-// capsule_tetrahedron, aabb_capsule, capsule_convex_polyhedron, capsule_frustum, capsule_kdop);
+// capsule_tetrahedron, aabb_capsule, capsule_obb, capsule_convex_polyhedron, capsule_frustum, capsule_kdop);
 // the checks are in capsule_checks.hpp. Include after testing.hpp and the CGAL oracle header.
 // A half-space set or a k-DOP: near_rows' set (ball_halfspace_cases.hpp) and a capsule grown from a
 // ball touching it (capsule_touching), as below; random: ball_random's set and ball, grown to a
@@ -93,6 +93,10 @@ std::optional<std::pair<incidence::capsule3, B>> capsule_near_shape(rng& r) {
         rows = box_rows(b);
         const vec3 h{b.half_extents[0], b.half_extents[1], b.half_extents[2]};
         partner = aabb3{b.center - h, b.center + h};
+    } else if constexpr (std::is_same_v<B, obb3>) { // near_obb's frames: signed permutations, near rotations, skew
+        const obb3 b = near_obb(r);
+        rows = box_rows(b);
+        partner = b;
     } else {
         const auto f = flat_rows<B>(r);
         rows = f.rows;
@@ -223,6 +227,17 @@ std::pair<incidence::capsule3, S> capsule_holding(rng& r) {
         const double u = 3 * m * (r.integer(0, 3) == 0 ? 1.0 : 0.5), w = 4 * m; // on the cylinder one time in four
         const point3 lo = a + across(-u, -w), hi = a + along(len) + across(u, w);
         return {realise(c, tr), realise(aabb3{lo, hi}, tr)};
+    } else if constexpr (std::is_same_v<S, obb3>) {
+        // the box along the segment, across it either the coordinate axes or a frame turned about
+        // the segment by (0.6, 0.8) rounded, with extents (3m, 4m) (every corner on the cylinder, or
+        // within rounding of it) or (0, 5m), or half those (inside) one time in two
+        const double k = r.coin() ? 0.5 : 1.0;
+        const bool turned = r.coin();
+        const vec3 p = turned ? across(0.6, 0.8) : across(1, 0), q = turned ? across(-0.8, 0.6) : across(0, 1);
+        const bool flat = r.integer(0, 5) == 0;
+        const double hu = flat ? 0.0 : 3 * m * k, hw = (flat ? 5 : 4) * m * k;
+        const obb3 b{a + along(len * 0.5), {along(1), p, q}, {len * 0.5, hu, hw}};
+        return {realise(c, tr), realise(b, tr)};
     } else if constexpr (std::is_same_v<S, sphere3> || std::is_same_v<S, capsule3>) {
         // balls 5q from the segment (across by (3q, 4q) at a point of it, or beyond an end by 3q and
         // across by 4q) of radius 5m - 5q: touching from inside; halved one time in four, grown by
@@ -346,6 +361,10 @@ bool capsule_holds(const incidence::capsule3& c, const S& s) {
     } else if constexpr (std::is_same_v<S, incidence::capsule3>) {
         const double r = std::fabs(s.radius);
         return holds_ball(c, incidence::sphere3{s.a, r}) && holds_ball(c, incidence::sphere3{s.b, r});
+    } else if constexpr (std::is_same_v<S, incidence::obb3>) {
+        double o[3], axes[9];
+        box_arrays(s, o, axes);
+        return oracle::box_in_capsule(o, axes, s.half_extents.data(), a3(c.a).data(), a3(c.b).data(), c.radius);
     } else {
         for (const auto& p : vertices(s))
             if (!oracle::ball_flat(to_flat(incidence::segment3{c.a, c.b}), a3(p), c.radius)) return false;

@@ -53,6 +53,7 @@ inline point2 moved(point2 p, vec3 v) { return {p.x + v.x, p.y + v.y}; }
 inline segment2 moved(segment2 s, vec3 v) { return {moved(s.a, v), moved(s.b, v)}; }
 inline ray2 moved(ray2 r, vec3 v) { return {moved(r.origin, v), r.direction}; }
 inline line2 moved(line2 l, vec3 v) { return {moved(l.origin, v), l.direction}; }
+inline circle2 moved(circle2 c, vec3 v) { return {moved(c.center, v), c.radius}; }
 
 // Every shape is an aggregate of doubles: scaling and ulp moves act on its fields.
 template <class S>
@@ -590,6 +591,13 @@ struct near_boundary<aabb3, capsule3> {
     }
 };
 template <>
+struct near_boundary<capsule3, obb3> {
+    static std::pair<capsule3, obb3> touching(rng& r) { // grown from a ball touching at p along o
+        const auto t = touching_obb(r);
+        return {capsule_at(r, t.p, t.o), t.box};
+    }
+};
+template <>
 struct near_boundary<aabb3, obb3> {
     static std::pair<aabb3, obb3> touching(rng& r) { // the box in the octant of o at p
         const auto t = touching_obb(r);
@@ -714,6 +722,32 @@ struct near_boundary<A, B> {
         const point2 X{double(r.integer(-400, 400)), double(r.integer(-400, 400))};
         const A a = through2<A>(r, X);
         return {a, through2<B>(r, X)};
+    }
+};
+// A disk touching b at X from across it: centre X + k w and radius 5k for a 3-4-5 step w (exact);
+// a partner disk on the other side, of radius 5 k2 around X - k2 w; a segment, ray or line along w
+// turned, through X.
+template <class B>
+requires(flat2_shape<B> || std::is_same_v<B, circle2>)
+struct near_boundary<circle2, B> {
+    static std::pair<circle2, B> touching(rng& r) {
+        const point2 X{double(r.integer(-400, 400)), double(r.integer(-400, 400))};
+        double x = 3, y = 4;
+        if (r.coin()) std::swap(x, y);
+        const vec2 w{r.coin() ? -x : x, r.coin() ? -y : y}, d{-w.y, w.x};
+        const double k = r.integer(1, 60);
+        const circle2 c{X + k * w, 5 * k};
+        if constexpr (std::is_same_v<B, circle2>) {
+            const double k2 = r.integer(0, 60);
+            return {c, circle2{X - k2 * w, 5 * k2}};
+        } else if constexpr (std::is_same_v<B, point2>) {
+            return {c, X};
+        } else {
+            const double before = r.integer(1, 4), after = r.integer(1, 4);
+            if constexpr (std::is_same_v<B, segment2>) return {c, segment2{X - before * d, X + after * d}};
+            else if constexpr (std::is_same_v<B, ray2>) return {c, ray2{X - before * d, d}};
+            else return {c, line2{X - before * d, d}};
+        }
     }
 };
 template <class A, class B>

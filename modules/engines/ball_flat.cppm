@@ -1,4 +1,5 @@
-// sphere3 against the flat shapes and the tetrahedron: segment3, line3, plane3, triangle3,
+// sphere3 against the flat shapes and the tetrahedron (and circle2 against the plane's segment, ray
+// and line: the same signs in two coordinates, intersects/circle2_pairs.cppm): segment3, line3, plane3, triangle3,
 // tetrahedron3 and polygon3 (ray3 has its own body in sphere_pairs.cppm, with its first hit; the
 // solid mesh3 is a triangle or the centre inside, in mesh_pairs.cppm).
 // Semantics: the closed ball |x - c| <= |r| (an unchecked negative radius acts as |r|, as in
@@ -63,18 +64,18 @@ template <class L>
     return s * s;
 }
 
-// Is p in the ball?
-template <class K, class R>
-[[nodiscard]] constexpr bool holds(K& k, point3 p, point3 c, R r) {
+// Is p in the ball (in space, or the disk in the plane)?
+template <class K, class P, class R>
+[[nodiscard]] constexpr bool holds(K& k, P p, P c, R r) {
     return k.sgn([=](auto L) {
         const auto m = arith::lift(L, p) - arith::lift(L, c);
         return squared(L, r) - arith::dot(m, m);
     }) != sign::negative;
 }
 
-// A segment, a ray or a line (finite) against the ball.
-template <class K, class R>
-[[nodiscard]] constexpr bool meets(K& k, const linear3& s, point3 c, R r) {
+// A segment, a ray or a line (finite) against the ball, in space or in the plane (the disk).
+template <class K, class P, class V, class R>
+[[nodiscard]] constexpr bool meets(K& k, const basic_linear<P, V>& s, P c, R r) {
     if (holds(k, s.o, c, r)) return true;
     if (s.is_point()) return false;
     const auto lb = [=](auto L) { return arith::dot(s.O(L) - arith::lift(L, c), s.D(L)); };
@@ -172,15 +173,21 @@ template <class K, class R>
     return polygon3d::any_edge(g, [&](const segment3& e) { return meets(k, as_linear(e), c, r); });
 }
 
-// A box around the points within r (>= 0) of the n points p, rounded outward (each bound moved
-// past its rounding error of at most half an ulp; an overflow gives an infinite bound).
+// x + s r (s = +-1, r >= 0) rounded outward (moved past its rounding error of at most half an
+// ulp; an overflow gives an infinity).
+[[nodiscard]] constexpr double away(double x, double s, double r) {
+    const double y = x + s * r;
+    return y + s * (arith::abs(y) * 0x1p-52 + 0x1p-1074);
+}
+// A box around the points within r (>= 0) of the n points p, rounded outward.
 [[nodiscard]] constexpr aabb3 reach_box(const point3* p, std::size_t n, double r) {
     const aabb3 b = bounds(p, n);
-    const auto away = [r](double x, double s) {
-        const double y = x + s * r;
-        return y + s * (arith::abs(y) * 0x1p-52 + 0x1p-1074);
-    };
-    return {{away(b.min.x, -1), away(b.min.y, -1), away(b.min.z, -1)}, {away(b.max.x, 1), away(b.max.y, 1), away(b.max.z, 1)}};
+    return {{away(b.min.x, -1, r), away(b.min.y, -1, r), away(b.min.z, -1, r)},
+            {away(b.max.x, 1, r), away(b.max.y, 1, r), away(b.max.z, 1, r)}};
+}
+// The disk's box in the plane, rounded outward.
+[[nodiscard]] constexpr box2 reach_box(point2 c, double r) {
+    return {{away(c.x, -1, r), away(c.y, -1, r)}, {away(c.x, 1, r), away(c.y, 1, r)}};
 }
 
 } // namespace ball_flat

@@ -194,6 +194,14 @@ template <class K>
     return at;
 }
 
+// (o - p) 1 + sum f_j a_j: the box's corner of signed extents f, less p (degree 2).
+template <class L>
+[[nodiscard]] constexpr auto corner_less(L l, const obb3& box, const double (&f)[3], point3 p) {
+    const auto e = arith::lift(l, box.center) - arith::lift(l, p);
+    return arith::scaled(e, l(1.0)) + arith::scaled(arith::lift(l, box.axes[0]), l(f[0])) +
+           arith::scaled(arith::lift(l, box.axes[1]), l(f[1])) + arith::scaled(arith::lift(l, box.axes[2]), l(f[2]));
+}
+
 // Does the ball meet the box (finite, extents >= 0: the caller checks)?
 template <class K>
 [[nodiscard]] constexpr bool meets(K& k, const obb3& b, const sphere3& s) {

@@ -75,7 +75,7 @@ constexpr void lengths(S& b, V& v) { // the axes are kept
     for (auto& h : b.half_extents) v(h);
 }
 template <class S, class V>
-requires shape_of<S, sphere3>
+requires shape_of<S, sphere3> || shape_of<S, circle2>
 constexpr void lengths(S& s, V& v) {
     lengths(s.center, v), v(s.radius);
 }

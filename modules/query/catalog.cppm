@@ -79,6 +79,7 @@ inline constexpr std::tuple families{
     family<capsule3, triangle3, 0>{"capsule_triangle", "intersects/capsule_pairs", "spheres_boxes", 0x1p-40, "exact QP (squared distance of the cores), CGAL QP_solver over Gmpzf (testkit/oracle/cgal_lp.cpp)", "signs in double", {}},
     family<capsule3, tetrahedron3, 0>{"capsule_tetrahedron", "intersects/capsule_pairs", "spheres_boxes", 0x1p-40, "exact QP (squared distance of the cores), CGAL QP_solver over Gmpzf (testkit/oracle/cgal_lp.cpp)", "signs in double", {}},
     family<aabb3, capsule3, 0>{"aabb_capsule", "intersects/capsule_pairs", "spheres_boxes", 0x1p-40, "exact QP (squared distance of the cores), CGAL QP_solver over Gmpzf (testkit/oracle/cgal_lp.cpp)", "signs in double", {}},
+    family<capsule3, obb3, 0>{"capsule_obb", "intersects/capsule_pairs", "spheres_boxes", 0x1p-40, "exact QP (squared distance of the cores), CGAL QP_solver over Gmpzf (testkit/oracle/cgal_lp.cpp)", "signs in double", {}},
     family<capsule3, convex_polyhedron3, 0>{"capsule_convex_polyhedron", "intersects/capsule_pairs", "spheres_boxes", 0x1p-40, "exact QP (squared distance of the cores), CGAL QP_solver over Gmpzf (testkit/oracle/cgal_lp.cpp)", "signs in double", {}},
     family<capsule3, frustum3, 0>{"capsule_frustum", "intersects/capsule_pairs", "spheres_boxes", 0x1p-40, "exact QP (squared distance of the cores), CGAL QP_solver over Gmpzf (testkit/oracle/cgal_lp.cpp)", "signs in double", {}},
     family<capsule3, kdop<14>, 0>{"capsule_kdop", "intersects/capsule_pairs", "spheres_boxes", 0x1p-40, "exact QP (squared distance of the cores), CGAL QP_solver over Gmpzf (testkit/oracle/cgal_lp.cpp)", "signs in double", {}},
@@ -160,6 +161,12 @@ inline constexpr std::tuple families{
     family<tetrahedron3, tetrahedron3, 0>{"tetrahedron_tetrahedron", "intersects/tetrahedron_pairs", "solids", 0x1p-36, "CGAL Epeck (testkit/oracle/cgal_flat.cpp)", "signs in double", {}},
     family<aabb3, tetrahedron3, 0>{"aabb_tetrahedron", "intersects/box_pairs", "solids", 0x1p-40, "CGAL Epeck (testkit/oracle/cgal_oracle.cpp)", "signs in double", {}},
     family<obb3, tetrahedron3, 0>{"obb_tetrahedron", "intersects/obb_pairs", "solids", 0x1p-40, "exact LP, CGAL QP_solver over Gmpzf (testkit/oracle/cgal_lp.cpp)", "signs in double", {}},
+    // A disk (the closed circle2) against the plane's shapes: the squared distance from the centre (engines/ball_flat.cppm in two coordinates).
+    family<circle2, point2, 0>{"circle2_point2", "intersects/circle2_pairs", "flat", 0x1p-44, "CGAL's squared distance over Epeck in the plane z = 0, exact rationals for two disks (testkit/circle2_cases.hpp, cgal_flat.cpp)", "signs in double", {}},
+    family<circle2, circle2, 0>{"circle2_circle2", "intersects/circle2_pairs", "flat", 0x1p-44, "CGAL's squared distance over Epeck in the plane z = 0, exact rationals for two disks (testkit/circle2_cases.hpp, cgal_flat.cpp)", "signs in double", {}},
+    family<circle2, segment2, 0>{"circle2_segment2", "intersects/circle2_pairs", "flat", 0x1p-44, "CGAL's squared distance over Epeck in the plane z = 0, exact rationals for two disks (testkit/circle2_cases.hpp, cgal_flat.cpp)", "signs in double", {}},
+    family<circle2, ray2, 0>{"circle2_ray2", "intersects/circle2_pairs", "flat", 0x1p-44, "CGAL's squared distance over Epeck in the plane z = 0, exact rationals for two disks (testkit/circle2_cases.hpp, cgal_flat.cpp)", "signs in double", {}},
+    family<circle2, line2, 0>{"circle2_line2", "intersects/circle2_pairs", "flat", 0x1p-44, "CGAL's squared distance over Epeck in the plane z = 0, exact rationals for two disks (testkit/circle2_cases.hpp, cgal_flat.cpp)", "signs in double", {}},
     family<segment2, segment2, 0>{"segment2_segment2", "intersects/linear_pairs", "flat", 0x1p-48, "CGAL Epeck do_intersect, exact rationals where CGAL errs (testkit/oracle/cgal_flat.cpp)", "signs in double", {}},
     family<line2, line2, 0>{"line2_line2", "intersects/linear_pairs", "flat", 0x1p-48, "CGAL Epeck do_intersect, exact rationals where CGAL errs (testkit/oracle/cgal_flat.cpp)", "signs in double", {}},
     family<line2, point2, 0>{"line2_point2", "intersects/linear_pairs", "flat", 0x1p-48, "CGAL Epeck do_intersect, exact rationals where CGAL errs (testkit/oracle/cgal_flat.cpp)", "signs in double", {}},
@@ -253,6 +260,8 @@ inline constexpr std::tuple view_families{
     family<convex_polyhedron3, mesh3, 0>{"convex_polyhedron_mesh", "intersects/halfspace_pairs", "solids", 0x1p-36, "exact LP, CGAL QP_solver over Gmpzf (testkit/oracle/cgal_lp.cpp)", "signs in double", {}},
     family<frustum3, mesh3, 0>{"frustum_mesh", "intersects/halfspace_pairs", "solids", 0x1p-36, "exact LP, CGAL QP_solver over Gmpzf (testkit/oracle/cgal_lp.cpp)", "signs in double", {}},
     family<kdop<14>, mesh3, 0>{"kdop_mesh", "intersects/kdop_pairs", "solids", 0x1p-36, "exact LP, CGAL QP_solver over Gmpzf (testkit/oracle/cgal_lp.cpp)", "signs in double", {}},
+    // A disk against a polygon: an edge within reach, or the centre inside (engines/polygon2.cppm).
+    family<circle2, polygon2, 0>{"circle2_polygon2", "intersects/circle2_pairs", "flat", 0x1p-44, "CGAL Polygon_2 bounded side over Epeck for the centre, each edge by CGAL's squared distance over Epeck (testkit/circle2_cases.hpp, cgal_polygon.cpp, cgal_flat.cpp)", "signs in double", {}},
     family<point2, polygon2, 0>{"point2_polygon2", "intersects/polygon2_pairs", "flat", 0x1p-44, "CGAL Polygon_2 bounded side over Epeck (testkit/oracle/cgal_polygon.cpp)", "signs in double", {}},
     family<polygon2, segment2, 0>{"polygon2_segment2", "intersects/polygon2_pairs", "flat", 0x1p-44, "CGAL Polygon_2 bounded side over Epeck (testkit/oracle/cgal_polygon.cpp)", "signs in double", {}},
     family<polygon2, ray2, 0>{"polygon2_ray2", "intersects/polygon2_pairs", "flat", 0x1p-44, "CGAL Polygon_2 bounded side over Epeck (testkit/oracle/cgal_polygon.cpp)", "signs in double", {}},
@@ -289,6 +298,7 @@ template <class A, class B>
 using containment = family<A, B, 0>;
 inline constexpr const char* lp = "exact LP, CGAL QP_solver over Gmpzf (testkit/oracle/cgal_lp.cpp)";
 inline constexpr const char* epeck = "CGAL Epeck (testkit/oracle/cgal_oracle.cpp)";
+inline constexpr const char* corners_rational = "the box's corners in rationals against the segment (testkit/oracle/cgal_oracle.cpp)";
 inline constexpr const char* rows_rational = "the ball in each half-space, in rationals (testkit/oracle/cgal_lp.cpp)";
 // clang-format off: one row per family, as the table reads
 inline constexpr std::tuple containments{
@@ -319,7 +329,8 @@ inline constexpr std::tuple containments{
     containment<capsule3, tetrahedron3>{"capsule_tetrahedron", "contains/capsule_pairs", "spheres_boxes", 0x1p-40, epeck, "signs in double", {}},
     containment<capsule3, aabb3>{"aabb_capsule", "contains/capsule_pairs", "spheres_boxes", 0x1p-40, epeck, "signs in double", {}},
     containment<aabb3, capsule3>{"aabb_capsule", "contains/capsule_pairs", "spheres_boxes", 0x1p-40, epeck, "signs in double", {}},
-    containment<obb3, capsule3>{"obb_capsule", "contains/capsule_pairs", "spheres_boxes", 0x1p-40, lp, "signs in double", {}},
+    containment<obb3, capsule3>{"capsule_obb", "contains/capsule_pairs", "spheres_boxes", 0x1p-40, lp, "signs in double", {}},
+    containment<capsule3, obb3>{"capsule_obb", "contains/capsule_pairs", "spheres_boxes", 0x1p-40, corners_rational, "signs in double", {}},
     containment<capsule3, sphere3>{"capsule_sphere", "contains/capsule_pairs", "spheres_boxes", 0x1p-40, epeck, "signs in double", {}},
     containment<sphere3, capsule3>{"capsule_sphere", "contains/capsule_pairs", "spheres_boxes", 0x1p-40, epeck, "signs in double", {}},
     containment<capsule3, capsule3>{"capsule_capsule", "contains/capsule_pairs", "spheres_boxes", 0x1p-40, epeck, "signs in double", {}},
@@ -357,6 +368,10 @@ inline constexpr std::tuple containments{
     containment<mesh3, segment3>{"mesh_segment", "contains/mesh_pairs", "solids", 0x1p-36, "exact breakpoints (testkit/oracle/cgal_mesh.cpp)", "signs in double", {}},
     containment<mesh3, triangle3>{"mesh_triangle", "contains/mesh_pairs", "solids", 0x1p-36, "traces and chords (testkit/oracle/cgal_mesh.cpp)", "signs in double", {}},
     containment<mesh3, aabb3>{"aabb_mesh", "contains/mesh_pairs", "solids", 0x1p-36, "odd coverage of the box's planes (testkit/oracle/cgal_mesh_box.cpp)", "signs in double", {}},
+    containment<circle2, point2>{"circle2_point2", "contains/circle2_pairs", "flat", 0x1p-44, "each vertex by exact rationals, two disks by the difference of the radii (testkit/circle2_cases.hpp, cgal_oracle.cpp)", "signs in double", {}},
+    containment<circle2, segment2>{"circle2_segment2", "contains/circle2_pairs", "flat", 0x1p-44, "each vertex by exact rationals, two disks by the difference of the radii (testkit/circle2_cases.hpp, cgal_oracle.cpp)", "signs in double", {}},
+    containment<circle2, circle2>{"circle2_circle2", "contains/circle2_pairs", "flat", 0x1p-44, "each vertex by exact rationals, two disks by the difference of the radii (testkit/circle2_cases.hpp, cgal_oracle.cpp)", "signs in double", {}},
+    containment<circle2, polygon2>{"circle2_polygon2", "contains/circle2_pairs", "flat", 0x1p-44, "each vertex by exact rationals, two disks by the difference of the radii (testkit/circle2_cases.hpp, cgal_oracle.cpp)", "signs in double", {}},
     containment<polygon2, point2>{"point2_polygon2", "contains/polygon2_pairs", "flat", 0x1p-40, "CGAL Polygon_2 (testkit/oracle/cgal_polygon.cpp)", "signs in double", {}},
     containment<polygon2, segment2>{"polygon2_segment2", "contains/polygon2_pairs", "flat", 0x1p-40, "exact breakpoints (testkit/oracle/cgal_polygon.cpp)", "signs in double", {}},
     containment<polygon3, point3>{"point_polygon", "contains/polygon_pairs", "flat", 0x1p-40, "CGAL triangulation (testkit/oracle/cgal_polygon.cpp)", "signs in double", {}},

@@ -13,6 +13,7 @@ export import :obb3;
 export import :ray2;
 export import :line2;
 export import :segment2;
+export import :circle2;
 export import :tetrahedron3;
 export import :mesh3;
 export import :polygon2;

@@ -379,6 +379,26 @@ bool box_in_ball(const double c[3], const double axes[9], const double h[3], con
     }
     return true;
 }
+bool box_in_capsule(const double c[3], const double axes[9], const double h[3], const double a[3], const double b[3], double r) {
+    const q_box box(c, axes, h);
+    const Q rr = Q(r) * Q(r);
+    Q d[3], dd = 0;
+    for (int k = 0; k < 3; ++k) d[k] = Q(b[k]) - Q(a[k]), dd += d[k] * d[k];
+    for (int m = 0; m < 8; ++m) {
+        Q x[3], along = 0;
+        box.corner(m, x);
+        for (int k = 0; k < 3; ++k) along += (x[k] - Q(a[k])) * d[k];
+        Q t = 0; // the nearest point's parameter, clamped to [0, 1]
+        if (dd > 0 && along > 0) t = along >= dd ? Q(1) : Q(along / dd);
+        Q d2 = 0;
+        for (int k = 0; k < 3; ++k) {
+            const Q e = x[k] - (Q(a[k]) + t * d[k]);
+            d2 += e * e;
+        }
+        if (d2 > rr) return false;
+    }
+    return true;
+}
 namespace {
 using q3 = std::array<Q, 3>;
 q3 sub(const q3& a, const q3& b) { return {Q(a[0] - b[0]), Q(a[1] - b[1]), Q(a[2] - b[2])}; }

@@ -230,6 +230,10 @@ bool box_in_box(const double c[3], const double axes[9], const double h[3], cons
 bool ball_in_box(const double c[3], const double axes[9], const double h[3], const double center[3], double r);
 // Is the box inside the closed ball? Its eight corners in exact rationals.
 bool box_in_ball(const double c[3], const double axes[9], const double h[3], const double center[3], double r);
+// Is the box inside the closed capsule (the points within |r| of the segment ab)? Its eight corners
+// in exact rationals, each one's squared distance to the segment (the nearest point of the segment
+// by its clamped parameter) against r^2.
+bool box_in_capsule(const double c[3], const double axes[9], const double h[3], const double a[3], const double b[3], double r);
 // Is the box inside the closed tetrahedron t (its four vertices; coplanar ones are their hull)? Its
 // eight corners in exact rationals: CGAL's Tetrahedron_3 side test over Epeck for a solid one; for
 // a coplanar one, a corner in one of the four faces (Caratheodory), each face by rational

@@ -65,7 +65,7 @@ void same(const std::set<std::string>& a, const std::set<std::string>& b, const 
 
 // Every shape of the library (k-DOPs as the 14-DOP), for the bodies' converse check.
 using shapes = std::tuple<point3, segment3, ray3, line3, plane3, triangle3, tetrahedron3, aabb3, obb3, sphere3, kdop<14>,
-                          convex_polyhedron3, frustum3, mesh3, polygon3, point2, segment2, ray2, line2, polygon2>;
+                          convex_polyhedron3, frustum3, mesh3, polygon3, point2, segment2, ray2, line2, polygon2, circle2>;
 template <class A, class B>
 concept intersects_body = requires(arith::filter_kernel& k, const A& a, const B& b) { detail::intersects(k, a, b); };
 template <class A, class B>

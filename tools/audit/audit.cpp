@@ -67,6 +67,7 @@ std::string shape_name(const point2*) { return "point2"; }
 std::string shape_name(const segment2*) { return "segment2"; }
 std::string shape_name(const ray2*) { return "ray2"; }
 std::string shape_name(const line2*) { return "line2"; }
+std::string shape_name(const circle2*) { return "circle2"; }
 std::string shape_name(const kdop<14>*) { return "kdop<14>"; }
 std::string shape_name(const convex_polyhedron3*) { return "convex_polyhedron3"; }
 std::string shape_name(const frustum3*) { return "frustum3"; }

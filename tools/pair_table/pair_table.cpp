@@ -71,6 +71,7 @@ constexpr const char* shape_name() {
     else if constexpr (std::is_same_v<T, point2>) return "point2";
     else if constexpr (std::is_same_v<T, segment2>) return "segment2";
     else if constexpr (std::is_same_v<T, polygon2>) return "polygon2";
+    else if constexpr (std::is_same_v<T, circle2>) return "circle2";
     else return "kdop";
 }
 

@@ -10,6 +10,7 @@ import :engines.sphere;
 import :engines.ball_flat;
 import :engines.separating_axes;
 import :engines.tetrahedron;
+import :engines.capsule_obb;
 import :intersects.capsule_pairs;
 import :contains.sphere_pairs;
 import :exactly;
@@ -51,6 +52,22 @@ template <class K>
                                 point3{hi.x, lo.y, hi.z}, point3{lo.x, hi.y, hi.z}, hi});
 }
 
+// contains(capsule3, obb3): the box's eight corners o + sum +-h_j a_j, exact rationals of degree 2,
+// each within |r| of the segment (capsule_obb.cppm's corner test, degree <= 6). Semantics: the
+// closed box read as the parallelepiped its axes span; NaN, infinite or negative extents hold
+// nothing and are held by nothing.
+template <class K>
+[[nodiscard]] constexpr bool contains(K& k, const capsule3& c, const obb3& b) {
+    if (!usable(c) || !sat::well_formed(b) || !finite(b)) return false;
+    const double r = reach(c);
+    for (int m = 0; m < 8; ++m) {
+        double f[3]; // the corner's signed extents
+        for (unsigned j = 0; j < 3; ++j) f[j] = (m >> j & 1) ? b.half_extents[j] : -b.half_extents[j];
+        if (!swept_obb::corner_within(k, b, f, c.a, c.b, r)) return false;
+    }
+    return true;
+}
+
 // contains(capsule3, sphere3): the ball lies within |r_c| of the segment iff |r_s| <= |r_c| and its
 // centre lies within |r_c| - |r_s| of the segment (ball_flat.cppm's segment test with the
 // difference of the radii formed exactly inside the signs, degree <= 4).
@@ -85,7 +102,7 @@ template <class K>
 }
 template <class K>
 [[nodiscard]] constexpr bool contains(K& k, const sphere3& s, const capsule3& c) {
-    return holds_ends(k, sphere3{s.center, ball::magnitude(s.radius)}, c); // |r|, as for the capsule's own radius
+    return holds_ends(k, s, c); // contains(sphere3, sphere3) reads both radii as |r|
 }
 template <class K>
 [[nodiscard]] constexpr bool contains(K& k, const capsule3& a, const capsule3& b) {
@@ -113,6 +130,7 @@ extern template bool exactly<contains_body>(const capsule3&, const segment3&);
 extern template bool exactly<contains_body>(const capsule3&, const triangle3&);
 extern template bool exactly<contains_body>(const capsule3&, const tetrahedron3&);
 extern template bool exactly<contains_body>(const capsule3&, const aabb3&);
+extern template bool exactly<contains_body>(const capsule3&, const obb3&);
 extern template bool exactly<contains_body>(const aabb3&, const capsule3&);
 extern template bool exactly<contains_body>(const obb3&, const capsule3&);
 extern template bool exactly<contains_body>(const capsule3&, const sphere3&);

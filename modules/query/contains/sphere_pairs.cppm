@@ -12,6 +12,7 @@ import :intersects.linear_pairs;
 import :intersects.obb_pairs;
 import :contains.obb_pairs;
 import :engines.sphere;
+import :engines.ball_obb;
 import :intersects.sphere_pairs;
 import :engines.kdop;
 import :engines.halfspace_slabs;
@@ -100,19 +101,15 @@ template <class K>
 template <class K>
 [[nodiscard]] constexpr bool contains(K& k, const sphere3& s, const obb3& b) {
     if (!sat::well_formed(b) || !finite(b) || !ball::usable(s)) return false;
-    const point3 o = b.center, c = s.center;
+    const point3 c = s.center;
     const double r = s.radius;
     for (int m = 0; m < 8; ++m) {
         double f[3]; // the corner's signed extents
         for (unsigned j = 0; j < 3; ++j) f[j] = (m >> j & 1) ? b.half_extents[j] : -b.half_extents[j];
-        const vec3 a0 = b.axes[0], a1 = b.axes[1], a2 = b.axes[2];
         if (k.sgn([=](auto L) {
                 const auto one = L(1.0);
-                const auto d = arith::lift(L, o) - arith::lift(L, c);
-                const auto x = one * d.x + L(f[0]) * L(a0.x) + L(f[1]) * L(a1.x) + L(f[2]) * L(a2.x);
-                const auto y = one * d.y + L(f[0]) * L(a0.y) + L(f[1]) * L(a1.y) + L(f[2]) * L(a2.y);
-                const auto z = one * d.z + L(f[0]) * L(a0.z) + L(f[1]) * L(a1.z) + L(f[2]) * L(a2.z);
-                return L(r) * L(r) * (one * one) - (x * x + y * y + z * z);
+                const auto x = ball_obb::corner_less(L, b, f, c);
+                return L(r) * L(r) * (one * one) - arith::dot(x, x);
             }) == sign::negative)
             return false;
     }

@@ -15,6 +15,9 @@ import :engines.mesh;
 import :engines.capsule_rows;
 import :engines.halfspace_slabs;
 import :engines.kdop;
+import :engines.separating_axes;
+import :engines.ball_obb;
+import :engines.capsule_obb;
 import :intersects.box_pairs;
 import :intersects.sphere_pairs;
 import :intersects.triangle_pairs;
@@ -24,7 +27,7 @@ import :exactly;
 export namespace incidence::detail {
 
 // capsule3 against the point, the ball, the linear shapes, the plane, the triangle, the
-// tetrahedron, the box, the capsule, the polygon, the solid mesh and the half-space sets: engines/capsule.cppm (the segment's distance against the
+// tetrahedron, the box, the oriented box, the capsule, the polygon, the solid mesh and the half-space sets: engines/capsule.cppm (the segment's distance against the
 // radius: its ends' balls, the segment itself, the shape's edges).
 // Semantics: the closed capsule (the points within |r| of the closed segment ab; a = b is a ball);
 // closed shapes as in their own pairs (a collinear triangle or a flat tetrahedron is its hull, a
@@ -99,6 +102,19 @@ template <class K>
     return swept::near_edges(k, c.a, c.b, edges, 12, r);
 }
 
+// An oriented box: engines/capsule_obb.cppm (a ball when a = b: ball_obb.cppm; the segment against
+// the box by separating axes, then the box's coordinates and the segment's parameter). Semantics:
+// the closed box read as the parallelepiped its axes span (skew, flat or a point as given); NaN,
+// infinite or negative extents: no box, so no.
+template <class K>
+[[nodiscard]] constexpr bool intersects(K& k, const capsule3& c, const obb3& b) {
+    if (!usable(c) || !sat::well_formed(b) || !finite(b)) return false;
+    const double r = reach(c);
+    if (c.a == c.b) return ball_obb::meets(k, b, sphere3{c.a, r});
+    if (sat::zonotopes_intersect(k, sat::zonotope_of(b), sat::zonotope_of(segment3{c.a, c.b}))) return true;
+    return swept_obb::meets(k, b, c.a, c.b, r);
+}
+
 // A polygon: an end's ball meets it, the segment meets it (polygon3d::linear_meets), or the
 // segment lies within the radius of an edge of a ring (the sliding argument of capsule.cppm holds
 // for any closed planar set bounded by segments).
@@ -158,6 +174,7 @@ extern template bool exactly<intersects_body>(const capsule3&, const plane3&);
 extern template bool exactly<intersects_body>(const capsule3&, const triangle3&);
 extern template bool exactly<intersects_body>(const capsule3&, const tetrahedron3&);
 extern template bool exactly<intersects_body>(const aabb3&, const capsule3&);
+extern template bool exactly<intersects_body>(const capsule3&, const obb3&);
 extern template bool exactly<intersects_body>(const capsule3&, const polygon3&);
 extern template bool exactly<intersects_body>(const capsule3&, const mesh3&);
 extern template bool exactly<intersects_body>(const capsule3&, const convex_polyhedron3&);

@@ -1,6 +1,6 @@
 // Recomputes one point of the audit's stability curves independently of the audit's truth: the
 // same generated cases (tools/audit/generators.hpp, same seed streams), with the true answer
-// from CGAL Epeck (the exact LP or QP for the OBB, k-DOP, half-space and ball-box pairs) instead of the exact tier. Prints one JSON object per level, one per line:
+// from CGAL Epeck (the exact LP or QP for the OBB, k-DOP, half-space, ball-box and capsule pairs) instead of the exact tier. Prints one JSON object per level, one per line:
 //   {"family": ..., "level": L, "skipped": n, "methods": {"name": [cases, wrong, fp, fn], ...}}
 // Usage: audit_recompute SEED CASES FAMILY_INDEX LEVEL[,LEVEL...]   or   audit_recompute --families
 #include "testkit/oracle/cgal_oracle.hpp"
@@ -14,6 +14,9 @@ import incidence.detail;
 #include "testkit/generators.hpp"
 #include "testkit/methods.hpp"
 #include "testkit/lp_shapes.hpp"
+#include "testkit/testing.hpp"
+#include "testkit/flat_cases.hpp"
+#include "testkit/circle2_cases.hpp"
 
 using namespace incidence;
 
@@ -154,6 +157,12 @@ int truth(const capsule3& c, const B& b) {
     return capsule_truth(c, b);
 }
 int truth(const aabb3& b, const capsule3& c) { return capsule_truth(c, b); }
+// A disk in the plane: testkit/circle2_cases.hpp's oracle (CGAL's squared distance over Epeck in the
+// plane z = 0, exact rationals for two disks and a point).
+template <class B>
+int truth(const circle2& c, const B& b) {
+    return support::disk_truth(c, b);
+}
 
 // The other flat pairs: CGAL Epeck (tests/oracle/cgal_flat.cpp).
 template <class A, class B>
