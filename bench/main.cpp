@@ -14,6 +14,7 @@ void register_classic_rays(bool near);
 void register_classic_sat(bool near);
 void register_contains(bool near);
 void register_intersection(bool near);
+void register_distance(bool near);
 void register_batch(bool near);
 void register_scene(bool near);
 } // namespace bench
@@ -30,6 +31,7 @@ int main(int argc, char** argv) {
         bench::register_classic_sat(near);
         bench::register_contains(near);
         bench::register_intersection(near);
+        bench::register_distance(near);
         bench::register_batch(near);
         bench::register_scene(near);
     }

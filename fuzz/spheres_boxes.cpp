@@ -24,7 +24,10 @@
 // testkit/ball_view_truth.hpp's oracle on finite ones. And contains with a capsule: the capsule
 // around a point, a segment, a triangle, a box, an oriented box (its corners in rationals), a ball and a capsule, a ball and the half-space
 // set of byte 2 around it, against Epeck and rationals; and that capsule against that set, against
-// the exact QP. Any finding aborts.
+// the exact QP. And the signed and squared distance from a point to a ball, a capsule, a box, the
+// oriented box, the three half-space sets, the tetrahedron and its mesh, every tier on any bits;
+// on finite ones one solid's signed or squared distance (byte 5) against the exact value
+// (testkit/oracle/cgal_distance.cpp). Any finding aborts.
 #include "testkit/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <cmath>
@@ -184,6 +187,26 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (intersects(b1, seg) && !(std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]) && std::isfinite(v[3]) &&
                                  std::isfinite(v[4]) && std::isfinite(v[5])))
         std::abort();
+    // the distances from a point to each solid of the doubles, every tier on any bits (a NaN or an
+    // infinite number gives NaN, never a crash)
+    const point3 far_point{v[12], v[13], v[14]};
+    const auto distances = [&](const auto& solid, const point3& x) {
+        (void)signed_distance(solid, x);
+        (void)squared_distance<conservative>(x, solid);
+    };
+    for (const point3& x : {size % 2 == 0 ? p : far_point}) {
+        distances(s1, x);
+        distances(capsule3{c, e, r1}, x);
+        distances(b1, x);
+        distances(ob, x);
+        distances(fr, x);
+        distances(cp, x);
+        distances(kd, x);
+        distances(tetrahedron3{p, q, c, e}, x);
+        distances(tet, x);
+        (void)signed_distance<approximate>(x, tet);
+        (void)signed_distance<aggressive>(cp, x);
+    }
     bool finite = true;
     for (double x : v) finite = finite && std::isfinite(x);
     if (!finite) return 0;
@@ -296,6 +319,42 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         default:
             for (const sphere3& s : {s1, a})
                 if (const auto t = oracle::qp_ball_meets(support::lp(ob), support::a3(s.center), s.radius)) contracts(ob, s, *t);
+        }
+    }
+    // one solid's signed or squared distance (byte 5) against the exact value: correctly rounded,
+    // enclosed (one oracle call per input: the QP is most of a run's time)
+    {
+        const std::uint8_t pick = size < 6 ? 0 : data[5];
+        const bool squared = (pick / 9) % 2 == 1;
+        const auto check = [&](const auto& solid, const oracle::distance_solid& truth, const point3& x) {
+            const double d = squared ? squared_distance(solid, x) : signed_distance(solid, x);
+            const interval i = squared ? squared_distance<conservative>(solid, x) : signed_distance<aggressive>(solid, x);
+            const auto k = oracle::check_distance(truth, support::a3(x), squared, d, i.lo, i.hi, d);
+            if (k.known && (!k.rounded || !k.enclosed)) std::abort();
+        };
+        const oracle::mesh_data tet_data{{support::a3(p), support::a3(q), support::a3(c), support::a3(e)},
+                                         {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}}};
+        switch (pick % 9) {
+        case 0: check(s1, {oracle::distance_solid::capsule, {C[0], C[1], C[2], C[0], C[1], C[2], r1}, {}}, far_point); break;
+        case 1: check(capsule3{c, e, r1}, {oracle::distance_solid::capsule, {C[0], C[1], C[2], E[0], E[1], E[2], r1}, {}}, p); break;
+        case 2: check(fr, {oracle::distance_solid::rows, {}, support::lp(fr)}, p); break;
+        case 3: check(cp, {oracle::distance_solid::rows, {}, support::lp(cp)}, q); break;
+        case 4: check(kd, {oracle::distance_solid::rows, {}, support::lp(kd)}, p); break;
+        case 5:
+            check(tetrahedron3{p, q, c, e},
+                  {oracle::distance_solid::tetrahedron, {P[0], P[1], P[2], Q[0], Q[1], Q[2], C[0], C[1], C[2], E[0], E[1], E[2]}, {}},
+                  far_point);
+            break;
+        case 6: check(ordered(c, e), {oracle::distance_solid::rows, {}, support::lp(ordered(c, e))}, p); break;
+        case 7:
+            if (std::isfinite(ob.half_extents[2]) && ob.half_extents[2] >= 0)
+                check(ob, {oracle::distance_solid::rows, {}, support::lp(ob)}, q);
+            break;
+        default: {
+            oracle::distance_solid truth{oracle::distance_solid::mesh, {}, {}};
+            truth.mesh_ptr = &tet_data;
+            if (detail::solid_mesh::well_formed(tet)) check(tet, truth, far_point);
+        }
         }
     }
     const aabb3 box = ordered(c, e), other = ordered(p, q);

@@ -22,6 +22,7 @@ export import :engines.halfspace_slabs;
 export import :engines.kdop;
 export import :engines.linear;
 export import :engines.mesh;
+export import :engines.nearest_feature;
 export import :engines.plane;
 export import :engines.polygon2;
 export import :engines.polygon3;
@@ -57,7 +58,10 @@ export import :contains.polygon_pairs;
 export import :contains.sphere_pairs;
 export import :contains.tetrahedron_pairs;
 export import :intersection.linear_pairs;
+export import :distance.ball_point;
 export import :distance.box_point;
+export import :distance.halfspace_point;
+export import :distance.triangles_point;
 
 export namespace incidence::detail {
 
@@ -82,13 +86,19 @@ struct intersection_body {
 struct nearest_body {
     template <class K, class A, class B>
     [[nodiscard]] constexpr auto operator()(K& k, const A& a, const B& b) const {
-        return detail::squared_distance(k, a, b, distance_kind::nearest);
+        return detail::squared_distance(k, a, b);
     }
 };
 struct farthest_body {
     template <class K, class A, class B>
     [[nodiscard]] constexpr auto operator()(K& k, const A& a, const B& b) const {
-        return detail::squared_distance(k, a, b, distance_kind::farthest);
+        return detail::max_squared_distance(k, a, b);
+    }
+};
+struct signed_body {
+    template <class K, class A, class B>
+    [[nodiscard]] constexpr auto operator()(K& k, const A& a, const B& b) const {
+        return detail::signed_distance(k, a, b);
     }
 };
 

@@ -53,11 +53,10 @@ struct active {
     std::array<unsigned, 3> at{};
 };
 
-// What the search found: the projection's active set and its verdict, or no set (P is empty).
+// What the search found: the projection's active set, or no set (P is empty).
 struct found {
     bool any = false;
     active set;
-    bool meets = false;
 };
 
 template <class L>
@@ -82,9 +81,9 @@ struct rows {
     [[nodiscard]] constexpr const plane3& operator[](unsigned x) const { return p[at[x]]; }
 };
 
-// Is S = {i} (row indexes into r) the projection's active set? Then its verdict.
+// Is S = {i} (row indexes into r) the projection's active set?
 template <class K>
-[[nodiscard]] constexpr found one_row(K& k, const rows& r, point3 c, double rad, unsigned i) {
+[[nodiscard]] constexpr found one_row(K& k, const rows& r, point3 c, unsigned i) {
     const plane3 a = r[i];
     for (unsigned h = 0; h < r.n; ++h) {
         if (h == i) continue;
@@ -95,16 +94,11 @@ template <class K>
             }) == sign::positive)
             return {};
     }
-    const bool meets = k.sgn([=](auto L) {
-        const auto na = arith::lift(L, a.normal);
-        const auto e = excess(L, a, c);
-        return L(rad) * L(rad) * arith::dot(na, na) - e * e;
-    }) != sign::negative;
-    return {true, active{1, {i, 0, 0}}, meets};
+    return {true, active{1, {i, 0, 0}}};
 }
 
 template <class K>
-[[nodiscard]] constexpr found two_rows(K& k, const rows& r, point3 c, double rad, unsigned i, unsigned j) {
+[[nodiscard]] constexpr found two_rows(K& k, const rows& r, point3 c, unsigned i, unsigned j) {
     const plane3 a = r[i], b = r[j];
     const auto gram = [=](auto L) {
         const auto na = arith::lift(L, a.normal), nb = arith::lift(L, b.normal);
@@ -134,15 +128,11 @@ template <class K>
             }) == sign::positive)
             return {};
     }
-    const bool meets = k.sgn([=](auto L) {
-        const auto l = mult(L);
-        return L(rad) * L(rad) * det(L) - (l[0] * excess(L, a, c) + l[1] * excess(L, b, c));
-    }) != sign::negative;
-    return {true, active{2, {i, j, 0}}, meets};
+    return {true, active{2, {i, j, 0}}};
 }
 
 template <class K>
-[[nodiscard]] constexpr found three_rows(K& k, const rows& r, point3 c, double rad, unsigned i, unsigned j, unsigned l) {
+[[nodiscard]] constexpr found three_rows(K& k, const rows& r, point3 c, unsigned i, unsigned j, unsigned l) {
     const plane3 a = r[i], b = r[j], e = r[l];
     // two parallel normals first (a camera frustum's near and far planes): their cross product is
     // exactly zero in double, where the determinant's rounding may leave it open
@@ -175,21 +165,16 @@ template <class K>
         const sign s = k.sgn([=](auto L) { return L(o.offset) * L(1.0) * det(L) - arith::dot(arith::lift(L, o.normal), vertex(L)); });
         if (s != sign::zero && s != sd) return {};
     }
-    const bool meets = k.sgn([=](auto L) {
-        const auto g = gap(L);
-        const auto dd = det(L);
-        return L(rad) * L(rad) * (dd * dd) - arith::dot(g, g);
-    }) != sign::negative;
-    return {true, active{3, {i, j, l}}, meets};
+    return {true, active{3, {i, j, l}}};
 }
 
 // The set S as the kernel sees it, or no set.
 template <class K>
-[[nodiscard]] constexpr found try_set(K& k, const rows& r, point3 c, double rad, const active& s) {
+[[nodiscard]] constexpr found try_set(K& k, const rows& r, point3 c, const active& s) {
     switch (s.n) {
-    case 1: return one_row(k, r, c, rad, s.at[0]);
-    case 2: return two_rows(k, r, c, rad, s.at[0], s.at[1]);
-    default: return three_rows(k, r, c, rad, s.at[0], s.at[1], s.at[2]);
+    case 1: return one_row(k, r, c, s.at[0]);
+    case 2: return two_rows(k, r, c, s.at[0], s.at[1]);
+    default: return three_rows(k, r, c, s.at[0], s.at[1], s.at[2]);
     }
 }
 
@@ -197,16 +182,16 @@ template <class K>
 // rows c lies beyond alone (the nearest face, edge or vertex of a ball outside usually), then
 // those with some other row.
 template <class K>
-[[nodiscard]] constexpr found search(K& k, const rows& r, point3 c, double rad, const std::array<bool, most>& beyond) {
+[[nodiscard]] constexpr found search(K& k, const rows& r, point3 c, const std::array<bool, most>& beyond) {
     for (unsigned i = 0; i < r.n; ++i)
         if (beyond[i])
-            if (const found f = one_row(k, r, c, rad, i); f.any) return f;
+            if (const found f = one_row(k, r, c, i); f.any) return f;
     for (const bool all_beyond : {true, false}) {
         const auto wanted = [&](unsigned i, unsigned j) { return all_beyond ? beyond[i] && beyond[j] : beyond[i] != beyond[j]; };
         for (unsigned i = 0; i < r.n; ++i)
             for (unsigned j = i + 1; j < r.n; ++j)
                 if (wanted(i, j))
-                    if (const found f = two_rows(k, r, c, rad, i, j); f.any) return f;
+                    if (const found f = two_rows(k, r, c, i, j); f.any) return f;
     }
     for (const bool all_beyond : {true, false}) {
         const auto wanted = [&](unsigned i, unsigned j, unsigned l) {
@@ -217,31 +202,94 @@ template <class K>
             for (unsigned j = i + 1; j < r.n; ++j)
                 for (unsigned l = j + 1; l < r.n; ++l)
                     if (wanted(i, j, l))
-                        if (const found f = three_rows(k, r, c, rad, i, j, l); f.any) return f;
+                        if (const found f = three_rows(k, r, c, i, j, l); f.any) return f;
     }
     return {};
 }
 
-// The rows' side of c: beyond[x] iff e_x > 0; whether c is beyond some row with the whole ball
-// beyond it too (`apart`).
+// The squared distance from c to its projection under set s, as a quotient P / S (S > 0) of
+// polynomials in the inputs: f(g) for g(L) -> ratio{P, S}, one type of g per size of s.
+//   {i}:       P = e_i^2, S = |n_i|^2;
+//   {i, j}:    P = l'_i e_i + l'_j e_j, S = det (l' = adj(G) e, as in two_rows);
+//   {i, j, l}: P = |c D - V|^2, S = D^2 (as in three_rows).
+template <class F>
+constexpr decltype(auto) with_distance(const rows& r, point3 c, const active& s, F&& f) {
+    if (s.n == 1) {
+        const plane3 a = r[s.at[0]];
+        return f([=](auto L) {
+            const auto na = arith::lift(L, a.normal);
+            const auto e = excess(L, a, c);
+            return arith::ratio{e * e, arith::dot(na, na)};
+        });
+    }
+    if (s.n == 2) {
+        const plane3 a = r[s.at[0]], b = r[s.at[1]];
+        return f([=](auto L) {
+            const auto na = arith::lift(L, a.normal), nb = arith::lift(L, b.normal);
+            const auto ea = excess(L, a, c), eb = excess(L, b, c);
+            const auto g0 = arith::dot(na, na), g1 = arith::dot(na, nb), g2 = arith::dot(nb, nb);
+            const auto w = arith::cross(na, nb);
+            return arith::ratio{(g2 * ea - g1 * eb) * ea + (g0 * eb - g1 * ea) * eb, arith::dot(w, w)};
+        });
+    }
+    const plane3 a = r[s.at[0]], b = r[s.at[1]], e = r[s.at[2]];
+    return f([=](auto L) {
+        const auto na = arith::lift(L, a.normal), nb = arith::lift(L, b.normal), ne = arith::lift(L, e.normal);
+        const auto one = L(1.0);
+        const auto d = arith::det3(na, nb, ne);
+        const auto v = arith::scaled(arith::cross(nb, ne), L(a.offset) * one) + arith::scaled(arith::cross(ne, na), L(b.offset) * one) +
+                       arith::scaled(arith::cross(na, nb), L(e.offset) * one);
+        const auto g = arith::scaled(arith::lift(L, c), d) - v;
+        return arith::ratio{arith::dot(g, g), d * d};
+    });
+}
+
+// Is the squared distance under set s at most rad^2: rad^2 S - P >= 0 (degree 4, 6 or 8)?
+template <class K>
+[[nodiscard]] constexpr bool within(K& k, const rows& r, point3 c, double rad, const active& s) {
+    return with_distance(r, c, s, [&](auto q) {
+        return k.sgn([=](auto L) {
+            const auto x = q(L);
+            return L(rad) * L(rad) * x.den - x.num;
+        }) != sign::negative;
+    });
+}
+
+// The rows' side of c: beyond[x] iff e_x > 0; with rad, whether c is beyond some row with the
+// whole ball beyond it too (`apart`, which ends the walk).
 struct sides {
     std::array<bool, most> beyond{};
     bool outside = false, apart = false;
 };
 template <class K>
-[[nodiscard]] constexpr sides sides_of(K& k, const rows& r, point3 c, double rad) {
+[[nodiscard]] constexpr sides sides_of(K& k, const rows& r, point3 c, const double* rad = nullptr) {
     sides s;
     for (unsigned x = 0; x < r.n && !s.apart; ++x) {
         const plane3 h = r[x];
         if (k.sgn([=](auto L) { return excess(L, h, c); }) != sign::positive) continue;
         s.beyond[x] = s.outside = true;
+        if (rad == nullptr) continue;
+        const double q = *rad;
         s.apart = k.sgn([=](auto L) {
             const auto e = excess(L, h, c);
             const auto n = arith::lift(L, h.normal);
-            return e * e - L(rad) * L(rad) * arith::dot(n, n);
+            return e * e - L(q) * L(q) * arith::dot(n, n);
         }) == sign::positive;
     }
     return s;
+}
+
+// The projection's active set for c outside the rows (s: their sides, s.outside): the set that
+// plain double names, proven by k's signs, else every set in turn; no set: the rows are empty.
+template <class K>
+[[nodiscard]] constexpr found nearest(K& k, const rows& r, point3 c, const sides& s) {
+    if constexpr (!std::is_same_v<K, arith::approx_kernel>) {
+        arith::approx_kernel a;
+        const sides guess_sides = sides_of(a, r, c);
+        if (const found g = search(a, r, c, guess_sides.beyond); g.any)
+            if (const found f = try_set(k, r, c, g.set); f.any) return f;
+    }
+    return search(k, r, c, s.beyond);
 }
 
 // Does the ball meet the set of the m half-spaces (finite: the caller checks)?
@@ -251,17 +299,11 @@ template <class K>
     if (r.empty) return false;
     const point3 c = ball.center;
     const double rad = ball.radius;
-    const sides s = sides_of(k, r, c, rad);
+    const sides s = sides_of(k, r, c, &rad);
     if (s.apart) return false;
     if (!s.outside) return true; // c in every half-space
-    if constexpr (!std::is_same_v<K, arith::approx_kernel>) {
-        // the set that plain double names, proven by k's signs
-        arith::approx_kernel a;
-        const sides guess_sides = sides_of(a, r, c, rad);
-        if (const found g = search(a, r, c, rad, guess_sides.beyond); g.any)
-            if (const found f = try_set(k, r, c, rad, g.set); f.any) return f.meets;
-    }
-    return search(k, r, c, rad, s.beyond).meets; // no set: the rows are empty
+    const found f = nearest(k, r, c, s);
+    return f.any && within(k, r, c, rad, f.set); // no set: the rows are empty
 }
 
 // Is the ball inside each of the m half-spaces (finite: the caller checks)?

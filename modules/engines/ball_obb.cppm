@@ -30,6 +30,7 @@
 module;
 #include <array>
 #include <type_traits>
+#include <utility>
 export module incidence.detail:engines.ball_obb;
 import incidence.core;
 import incidence.arith;
@@ -43,10 +44,9 @@ namespace ball_obb {
 // Each box coordinate: -1 (at -h_j), +1 (at +h_j) or 0 (free).
 using active = std::array<int, 3>;
 
-// What a set says: whether it is the minimiser's (KKT holds) and then whether the ball meets.
+// What a set says: whether it is the minimiser's (KKT holds).
 struct found {
     bool any = false;
-    bool meets = false;
 };
 
 struct frame {
@@ -74,12 +74,7 @@ template <class K>
         const vec3 al = f.a[l];
         if (!agrees(k.sgn([=](auto L) { return arith::dot(arith::lift(L, al), residual(L, f, at)); }), at[l])) return {};
     }
-    const double r = f.r;
-    return {true, k.sgn([=](auto L) {
-                const auto w = residual(L, f, at);
-                const auto one = L(1.0);
-                return L(r) * L(r) * (one * one) - arith::dot(w, w);
-            }) != sign::negative};
+    return {true};
 }
 
 template <class K>
@@ -101,14 +96,7 @@ template <class K>
                     at[l]))
             return {};
     }
-    const double r = f.r;
-    return {true, k.sgn([=](auto L) {
-                const auto A = arith::lift(L, aj);
-                const auto w = residual(L, f, at);
-                const auto one = L(1.0);
-                const auto t = along(L);
-                return arith::dot(A, A) * (L(r) * L(r) * (one * one) - arith::dot(w, w)) + t * t;
-            }) != sign::negative};
+    return {true};
 }
 
 template <class K>
@@ -140,12 +128,7 @@ template <class K>
         const sign q = turn == sign::zero ? sign::zero : (across == turn ? sign::positive : sign::negative);
         if (!agrees(q, at[l])) return {};
     }
-    const double r = f.r;
-    return {true, k.sgn([=](auto L) {
-                const auto one = L(1.0);
-                const auto t = arith::dot(normal(L), residual(L, f, at));
-                return L(r) * L(r) * (one * one) * nn(L) - t * t;
-            }) != sign::negative};
+    return {true};
 }
 
 // Is c inside the box? (No answer for a flat box: its faces cover it.)
@@ -163,10 +146,10 @@ template <class K>
             }) == sign::negative)
             return {};
     }
-    return {true, true};
+    return {true};
 }
 
-// Is the set `at` the minimiser's, and its verdict?
+// Is the set `at` the minimiser's?
 template <class K>
 [[nodiscard]] constexpr found try_set(K& k, const frame& f, const active& at) {
     unsigned free[3], n = 0, bound = 0;
@@ -194,6 +177,69 @@ template <class K>
     return at;
 }
 
+// The squared distance from c to x* under a set that is not the inside (some coordinate bound), as
+// g(q) for q(L) -> ratio{P, S} (one type of q per number of free coordinates):
+//   corner:  P = |w|^2, S = 1 1;
+//   edge j:  P = |a_j|^2 |w|^2 - (a_j . w)^2, S = |a_j|^2 1 1;
+//   face jk: P = (n . w)^2, S = |n|^2 1 1, n = a_j x a_k.
+template <class G>
+constexpr decltype(auto) with_distance(const frame& f, const active& at, G&& g) {
+    unsigned free[3], n = 0;
+    for (unsigned j = 0; j < 3; ++j)
+        if (at[j] == 0) free[n++] = j;
+    if (n == 0)
+        return g([=](auto L) {
+            const auto w = residual(L, f, at);
+            const auto one = L(1.0);
+            return arith::ratio{arith::dot(w, w), one * one};
+        });
+    if (n == 1) {
+        const vec3 aj = f.a[free[0]];
+        return g([=](auto L) {
+            const auto A = arith::lift(L, aj);
+            const auto w = residual(L, f, at);
+            const auto one = L(1.0);
+            const auto t = arith::dot(A, w);
+            const auto aa = arith::dot(A, A);
+            return arith::ratio{aa * arith::dot(w, w) - t * t, aa * (one * one)};
+        });
+    }
+    const vec3 aj = f.a[free[0]], ak = f.a[free[1]];
+    return g([=](auto L) {
+        const auto nv = arith::cross(arith::lift(L, aj), arith::lift(L, ak));
+        const auto t = arith::dot(nv, residual(L, f, at));
+        const auto one = L(1.0);
+        return arith::ratio{t * t, arith::dot(nv, nv) * (one * one)};
+    });
+}
+
+// Is the distance under set `at` at most f.r: r^2 S - P >= 0 (degree 4, 6 or 8)? The inside: yes.
+template <class K>
+[[nodiscard]] constexpr bool within(K& k, const frame& f, const active& at) {
+    if (at == active{}) return true;
+    const double r = f.r;
+    return with_distance(f, at, [&](auto q) {
+        return k.sgn([=](auto L) {
+            const auto x = q(L);
+            return L(r) * L(r) * x.den - x.num;
+        }) != sign::negative;
+    });
+}
+
+// The set of the minimiser: the one plain double names first, then all 27 (`any` false only where
+// plain double's signs refute every set, within rounding of zero: the approximate kernel).
+template <class K>
+[[nodiscard]] constexpr std::pair<bool, active> minimiser(K& k, const frame& f) {
+    const active first = guess(f);
+    if (try_set(k, f, first).any) return {true, first};
+    for (int code = 0; code < 27; ++code) {
+        const active at{code % 3 - 1, code / 3 % 3 - 1, code / 9 - 1};
+        if (at == first) continue;
+        if (try_set(k, f, at).any) return {true, at};
+    }
+    return {false, first};
+}
+
 // (o - p) 1 + sum f_j a_j: the box's corner of signed extents f, less p (degree 2).
 template <class L>
 [[nodiscard]] constexpr auto corner_less(L l, const obb3& box, const double (&f)[3], point3 p) {
@@ -207,13 +253,9 @@ template <class K>
 [[nodiscard]] constexpr bool meets(K& k, const obb3& b, const sphere3& s) {
     const frame f{
         b.center, s.center, {b.axes[0], b.axes[1], b.axes[2]}, {b.half_extents[0], b.half_extents[1], b.half_extents[2]}, s.radius};
-    const active first = guess(f);
-    if (const found g = try_set(k, f, first); g.any) return g.meets;
-    for (int code = 0; code < 27; ++code) {
-        const active at{code % 3 - 1, code / 3 % 3 - 1, code / 9 - 1};
-        if (at == first) continue;
-        if (const found g = try_set(k, f, at); g.any) return g.meets;
-    }
+    const auto [any, at] = minimiser(k, f);
+    if (any) return within(k, f, at);
+    const active first = at;
     // only plain double's signs, within rounding of zero, can refute every set (some set is the
     // minimiser's): the guess's bound coordinates' corner distance then, or yes when it is inside
     if constexpr (std::is_same_v<K, arith::approx_kernel>) {

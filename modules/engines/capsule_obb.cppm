@@ -50,7 +50,11 @@ namespace swept_obb {
 
 using ball_obb::agrees;
 using ball_obb::corner_less;
-using ball_obb::found;
+// What a set says: whether it is the minimiser's (KKT holds) and then whether the capsule meets.
+struct found {
+    bool any = false;
+    bool meets = false;
+};
 
 // Each coordinate: -1 (at its low bound), +1 (at its high bound) or 0 (free).
 using active = std::array<int, 4>;

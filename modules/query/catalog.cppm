@@ -9,7 +9,7 @@
 //   view_families    intersects with a mesh or a polygon (views of arrays their caller owns)
 //   containments     contains(a, b)
 //   value_families   intersection(a, b): where a line, a ray or a segment meets a set
-//   distances        squared_distance(a, b)
+//   distances        squared_distance(a, b), signed_distance(a, b)
 module;
 #include <array>
 #include <cstddef>
@@ -426,11 +426,23 @@ inline constexpr std::tuple value_families{
 };
 // clang-format on
 
-// squared_distance(a, b) and max_squared_distance(a, b); the approximate tier's stated bound is
-// gamma_5 relative (modules/query/distance/box_point.cppm): 0 here.
+// squared_distance(a, b) and signed_distance(a, b) of a point and a solid (and the box's
+// max_squared_distance). The approximate tier's stated bound: for aabb_point gamma_5 relative on the
+// squared distance (modules/query/distance/box_point.cppm), 0 here; for the others, where no deciding
+// sign lies within 2^-40 of its permanent, |d~ - d| <= bound M + 2^-140 for the signed distance and
+// bound M^2 + 2^-280 for the squared one, M the largest magnitude among the inputs' numbers, inputs
+// in [2^-120, 2^120] (each table's head, testkit/distance_checks.hpp).
 // clang-format off: one row per family, as the table reads
 inline constexpr std::tuple distances{
-    family<aabb3, point3, 0>{"aabb_point", "distance/box_point", "spheres_boxes", 0, "exact squared distances over Epeck (testkit/oracle/cgal_oracle.cpp)", "the same sum in double", {}},
+    family<aabb3, point3, 0>{"aabb_point", "distance/box_point", "spheres_boxes", 0, "exact squared distances over Epeck (testkit/oracle/cgal_oracle.cpp); signed: exact QP and rows (testkit/oracle/cgal_distance.cpp)", "the same sum in double", {}},
+    family<obb3, point3, 0>{"obb_point", "distance/box_point", "spheres_boxes", 0x1p-40, "exact QP outside, faces in rationals inside (testkit/oracle/cgal_distance.cpp)", "the same active set and roots in double", {}},
+    family<point3, sphere3, 0>{"point_sphere", "distance/ball_point", "spheres_boxes", 0x1p-40, "exact squared distance of the centre over Epeck (testkit/oracle/cgal_distance.cpp)", "the same feature, sqrt(P / S) - r in double", {}},
+    family<capsule3, point3, 0>{"capsule_point", "distance/ball_point", "spheres_boxes", 0x1p-40, "exact squared distance of the segment over Epeck (testkit/oracle/cgal_distance.cpp)", "the same feature, sqrt(P / S) - r in double", {}},
+    family<convex_polyhedron3, point3, 0>{"convex_polyhedron_point", "distance/halfspace_point", "spheres_boxes", 0x1p-40, "exact QP outside, rows in rationals inside (testkit/oracle/cgal_distance.cpp)", "the same active set and roots in double", {}},
+    family<frustum3, point3, 0>{"frustum_point", "distance/halfspace_point", "spheres_boxes", 0x1p-40, "exact QP outside, rows in rationals inside (testkit/oracle/cgal_distance.cpp)", "the same active set and roots in double", {}},
+    family<kdop<14>, point3, 0>{"kdop_point", "distance/halfspace_point", "spheres_boxes", 0x1p-40, "exact QP outside, rows in rationals inside (testkit/oracle/cgal_distance.cpp)", "the same active set and roots in double", {}},
+    family<point3, tetrahedron3, 0>{"point_tetrahedron", "distance/triangles_point", "spheres_boxes", 0x1p-40, "exact QP outside, faces in rationals inside (testkit/oracle/cgal_distance.cpp)", "the same region walk and roots in double", {}},
+    family<mesh3, point3, 0>{"mesh_point", "distance/triangles_point", "spheres_boxes", 0x1p-40, "point-triangle distances over Epeck, crossing parity (testkit/oracle/cgal_distance.cpp)", "the same region walk and roots in double", {}},
 };
 // clang-format on
 

@@ -16,6 +16,7 @@ struct contains_body;
 struct intersection_body;
 struct nearest_body;
 struct farthest_body;
+struct signed_body;
 
 // Body{}(exact kernel, a, b) as an R; R{} where the exact kernel met an input it cannot represent.
 template <class Body, class R, class A, class B>

@@ -355,20 +355,10 @@ std::optional<qp_minimum> minimum(const program& qp) {
 } // namespace
 
 std::optional<bool> qp_ball_meets(const convex_set& s, const std::array<double, 3>& c, double r) {
-    // minimise |x|^2 / 2 - c . x = (|x - c|^2 - |c|^2) / 2 over the set (x: variables 0, 1, 2)
-    program qp(CGAL::EQUAL, false, 0.0, false, 0.0);
-    int var = 3, row = 0;
-    add(qp, var, row, s);
-    for (int k = 0; k < 3; ++k) {
-        qp.set_d(k, k, 1.0); // CGAL's D is twice the quadratic form
-        qp.set_c(k, -c[static_cast<unsigned>(k)]);
-    }
-    const auto m = minimum(qp);
-    if (!m) return std::nullopt;
-    if (m->infeasible) return false;
-    const qpoint q = rational(c);
-    const mpq_class rr = mpq_class(r) * mpq_class(r);
-    return 2 * m->value + dot(q, q) <= rr;
+    const auto d = qp_squared_distance(s, c);
+    if (!d) return std::nullopt;
+    if (!*d) return false; // the set is empty
+    return **d <= mpq_class(r) * mpq_class(r);
 }
 
 std::optional<bool> qp_sets_within(const convex_set& a, const convex_set& b, double r1, double r2) {
@@ -403,6 +393,31 @@ bool ball_in_rows(const convex_set& s, const std::array<double, 3>& c, double r)
     for (const auto& sl : s.slabs)
         if (!within(sl.n, sl.hi) || !within({-sl.n[0], -sl.n[1], -sl.n[2]}, -sl.lo)) return false;
     return true;
+}
+
+std::optional<std::optional<mpq_class>> qp_squared_distance(const convex_set& s, const std::array<double, 3>& c) {
+    // minimise |x|^2 / 2 - c . x = (|x - c|^2 - |c|^2) / 2 over the set (x: variables 0, 1, 2)
+    program qp(CGAL::EQUAL, false, 0.0, false, 0.0);
+    int var = 3, row = 0;
+    add(qp, var, row, s);
+    for (int k = 0; k < 3; ++k) {
+        qp.set_d(k, k, 1.0); // CGAL's D is twice the quadratic form
+        qp.set_c(k, -c[static_cast<unsigned>(k)]);
+    }
+    const auto m = minimum(qp);
+    if (!m) return std::nullopt;
+    if (m->infeasible) return std::optional<mpq_class>{};
+    const qpoint q = rational(c);
+    return std::optional<mpq_class>{2 * m->value + dot(q, q)};
+}
+
+std::optional<std::vector<exact_row>> exact_rows(const convex_set& s) {
+    const auto b = bounds_of(s);
+    if (!b) return std::nullopt;
+    std::vector<exact_row> out;
+    for (const auto& g : b->doubles) out.push_back({rational(g.n), mpq_class(g.c)});
+    for (const auto& r : b->rationals) out.push_back({r.n, r.c});
+    return out;
 }
 
 bool lp_intersect(const convex_set& a, const convex_set& b) {

@@ -93,6 +93,28 @@ std::optional<bool> qp_sets_within(const convex_set& a, const convex_set& b, dou
 // for each side, in rationals.
 bool ball_in_rows(const convex_set& s, const std::array<double, 3>& c, double r);
 
+// The signed and the squared distance from a point to a solid (cgal_distance.cpp), exactly: a
+// capsule (v: a, b, r; a ball when a = b) by CGAL's squared_distance over Epeck; a convex set of
+// the LP oracle (`set`: a box, an OBB, a tetrahedron's points, a k-DOP, a frustum, a convex
+// polyhedron) by the exact QP outside and the exact rows (faces) inside; a tetrahedron (v: its
+// four vertices); a mesh by CGAL's point-triangle distances and mesh_inside.
+struct mesh_data;
+struct distance_solid {
+    enum kind_t { capsule, rows, tetrahedron, mesh } kind;
+    std::vector<double> v;
+    convex_set set;
+    const mesh_data* mesh_ptr = nullptr;
+};
+// For the exact value d of the signed (squared) distance of p: is x the correctly rounded d, is
+// lo <= d <= hi, and |approx - d| (to double); known false when the QP declined.
+struct distance_check {
+    bool known = false, rounded = false, enclosed = false;
+    double error = 0, value = 0; // value: the exact value to about 200 bits, then truncated to double
+    int sign = 0;                // the exact value's sign
+};
+distance_check check_distance(const distance_solid& s, const std::array<double, 3>& p, bool squared, double x, double lo, double hi,
+                              double approx);
+
 // A point, segment, ray, line, plane or triangle (cgal_flat.cpp), for the pairs among them: v holds
 // a point's 3 values, a segment's end points, a ray's or line's origin and direction, a plane's
 // normal and offset (n . x = offset), a triangle's vertices. Degenerate shapes are their point

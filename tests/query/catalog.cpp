@@ -73,8 +73,7 @@ concept contains_body = requires(arith::filter_kernel& k, const A& a, const B& b
 template <class A, class B>
 concept intersection_body = requires(arith::filter_kernel& k, const A& a, const B& b) { detail::intersection(k, a, b); };
 template <class A, class B>
-concept distance_body =
-    requires(arith::filter_kernel& k, const A& a, const B& b) { detail::squared_distance(k, a, b, detail::distance_kind::nearest); };
+concept distance_body = requires(arith::filter_kernel& k, const A& a, const B& b) { detail::squared_distance(k, a, b); };
 
 template <class A, class B, class List>
 constexpr bool listed(const List& list) {

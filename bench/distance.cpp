@@ -1,0 +1,109 @@
+// The signed distance from a point to a solid (distance/<family>), every tier, on the tests'
+// generators at scale 1 (testkit/capsule_cases.hpp, ball_halfspace_cases.hpp, mesh_cases.hpp):
+// random and near-degenerate sets (points on the boundary, at a face, an edge or a vertex, inside).
+// The answer each loop checks: whether the point is outside or on the solid (d >= 0), against the
+// exact value of the oracle (testkit/oracle/cgal_distance.cpp); the values themselves are checked in
+// tests/query/distance/.
+#include "bench.hpp"
+#include <optional>
+#include <utility>
+
+namespace bench {
+namespace {
+
+// d >= 0 in a tier's form: an interval's upper end for conservative, its lower end for aggressive.
+template <class Tier, class D>
+bool not_inside(const D& d) {
+    if constexpr (std::is_same_v<D, double>) return d >= 0.0;
+    else if constexpr (std::is_same_v<Tier, aggressive>) return d.lo >= 0.0;
+    else return d.hi >= 0.0;
+}
+
+template <class S, class Gen>
+void distance_tiers(const std::string& name, bool near, Gen gen, oracle::distance_solid (*solid_of)(const S&)) {
+    support::rng r = set_rng(near);
+    std::vector<std::pair<S, point3>> cs;
+    while (cs.size() < set_size)
+        if (const auto c = gen(r, near)) cs.push_back(*c);
+    auto truth = [solid_of](const std::pair<S, point3>& c) {
+        const auto k = oracle::check_distance(solid_of(c.first), support::a3(c.second), false, 0.0, 0.0, 0.0, 0.0);
+        return k.sign >= 0;
+    };
+    tiers(
+        name, near ? "near_degenerate" : "random", cs, truth,
+        [](auto tier, const std::pair<S, point3>& c) {
+            return not_inside<decltype(tier)>(signed_distance<decltype(tier)>(c.first, c.second));
+        },
+        "distance");
+}
+
+oracle::distance_solid ball_solid(const sphere3& s) {
+    return {oracle::distance_solid::capsule, {s.center.x, s.center.y, s.center.z, s.center.x, s.center.y, s.center.z, s.radius}, {}};
+}
+oracle::distance_solid capsule_solid(const capsule3& c) {
+    return {oracle::distance_solid::capsule, {c.a.x, c.a.y, c.a.z, c.b.x, c.b.y, c.b.z, c.radius}, {}};
+}
+template <class P>
+oracle::distance_solid rows_solid(const P& a) {
+    return {oracle::distance_solid::rows, {}, support::lp(a)};
+}
+oracle::distance_solid tetrahedron_solid(const tetrahedron3& t) {
+    return {oracle::distance_solid::tetrahedron, {t.a.x, t.a.y, t.a.z, t.b.x, t.b.y, t.b.z, t.c.x, t.c.y, t.c.z, t.d.x, t.d.y, t.d.z}, {}};
+}
+// The centre of ball_near / ball_random's ball as the point.
+template <class P>
+std::optional<std::pair<P, point3>> at_centre(support::rng& r, bool near) {
+    const auto c = near ? support::ball_near<P>(r) : support::ball_random<P>(r);
+    if (!c) return std::nullopt;
+    return std::pair{c->first, c->second.center};
+}
+
+} // namespace
+
+void register_distance(bool near) {
+    distance_tiers<sphere3>(
+        "point_sphere", near,
+        [](support::rng& r, bool n) -> std::optional<std::pair<sphere3, point3>> {
+            const auto c = n ? support::capsule_near<point3>(r) : support::capsule_random<point3>(r);
+            if (!c) return std::nullopt;
+            return std::pair{sphere3{c->first.a, c->first.radius}, c->second};
+        },
+        ball_solid);
+    distance_tiers<capsule3>(
+        "capsule_point", near,
+        [](support::rng& r, bool n) { return n ? support::capsule_near<point3>(r) : support::capsule_random<point3>(r); }, capsule_solid);
+    distance_tiers<convex_polyhedron3>("convex_polyhedron_point", near, at_centre<convex_polyhedron3>, rows_solid<convex_polyhedron3>);
+    distance_tiers<frustum3>("frustum_point", near, at_centre<frustum3>, rows_solid<frustum3>);
+    distance_tiers<kdop<6>>("kdop_point_6", near, at_centre<kdop<6>>, rows_solid<kdop<6>>);
+    distance_tiers<kdop<14>>("kdop_point_14", near, at_centre<kdop<14>>, rows_solid<kdop<14>>);
+    distance_tiers<kdop<26>>("kdop_point_26", near, at_centre<kdop<26>>, rows_solid<kdop<26>>);
+    distance_tiers<tetrahedron3>("point_tetrahedron", near, at_centre<tetrahedron3>, tetrahedron_solid);
+    distance_tiers<obb3>("obb_point", near, at_centre<obb3>, rows_solid<obb3>);
+    {
+        // a mesh: the store outlives the view each case holds
+        struct mesh_case {
+            support::mesh_store m;
+            point3 p;
+        };
+        support::rng r = set_rng(near);
+        std::vector<mesh_case> cs;
+        while (cs.size() < set_size / 8) { // 48 to 96 triangles each
+            mesh_case c;
+            if (near) c.p = support::segment_in_mesh_near(r, c.m).a;
+            else c.p = support::random_mesh_and_box_points(r, c.m)();
+            if (is_finite(c.p)) cs.push_back(std::move(c));
+        }
+        auto truth = [](const mesh_case& c) {
+            const oracle::mesh_data data = support::mesh_data_of(c.m.view());
+            oracle::distance_solid s{oracle::distance_solid::mesh, {}, {}};
+            s.mesh_ptr = &data;
+            return oracle::check_distance(s, support::a3(c.p), false, 0.0, 0.0, 0.0, 0.0).sign >= 0;
+        };
+        tiers(
+            "mesh_point", near ? "near_degenerate" : "random", cs, truth,
+            [](auto tier, const mesh_case& c) { return not_inside<decltype(tier)>(signed_distance<decltype(tier)>(c.m.view(), c.p)); },
+            "distance");
+    }
+}
+
+} // namespace bench
