@@ -9,6 +9,7 @@ export import :engines.ball_flat;
 export import :engines.ball_halfspaces;
 export import :engines.ball_obb;
 export import :engines.capsule_obb;
+export import :engines.certificate;
 export import :engines.box;
 export import :engines.capsule;
 export import :engines.capsule_rows;

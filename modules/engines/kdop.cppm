@@ -84,6 +84,10 @@ namespace kdop_slabs {
         if (!finite(mn[i]) || !finite(mx[i]) || !(mn[i] <= mx[i])) return false;
     return true;
 }
+template <int N>
+[[nodiscard]] constexpr bool well_formed(const kdop<N>& b) {
+    return well_formed(b.min.data(), b.max.data(), N / 2);
+}
 // The three terms of d . p, each exact (d's components are -1, 0 or 1).
 struct terms {
     double x, y, z;

@@ -28,8 +28,8 @@
 // Source: Ericson, Real-Time Collision Detection (2005), sections 5.1.2 (closest point on a
 // segment) and 5.1.5 (on a triangle); Muller et al., Handbook of Floating-Point Arithmetic (2018),
 // section 2.2 (rounding by the signs at the midpoints, arith/value.cppm).
-// Approximate tier: the same walk and the same roots in plain double (modules/query/distance/*.cppm
-// state each bound).
+// Approximate tier: the same walk in plain double, then sqrt(P / S) (less r) directly
+// (modules/query/distance/*.cppm state each bound).
 module;
 #include <cstddef>
 #include <type_traits>

@@ -185,7 +185,7 @@ template <class K>
 }
 template <class K, int N>
 [[nodiscard]] constexpr bool contains(K& k, const kdop<N>& b, const sphere3& s) {
-    if (!usable_kdop(b) || !ball::usable(s)) return false;
+    if (!kdop_slabs::well_formed(b) || !ball::usable(s)) return false;
     const std::array<plane3, N> rows = kdop_slabs::halfspaces(b);
     return ball_rows::inside(k, rows.data(), N, s);
 }

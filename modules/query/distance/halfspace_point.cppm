@@ -89,15 +89,9 @@ template <class K>
         true);
 }
 
-template <int N>
-[[nodiscard]] constexpr bool usable(const kdop<N>& b) {
-    for (unsigned i = 0; i < N / 2; ++i)
-        if (!is_finite(b.min[i]) || !is_finite(b.max[i]) || b.min[i] > b.max[i]) return false;
-    return true;
-}
 template <class K, int N>
 [[nodiscard]] constexpr arith::value_t<K> of(K& k, const kdop<N>& b, point3 p, bool squared) {
-    if (!usable(b)) return arith::exact_value(k, __builtin_nan(""));
+    if (!kdop_slabs::well_formed(b)) return arith::exact_value(k, __builtin_nan(""));
     const std::array<plane3, N> rows = kdop_slabs::halfspaces(b);
     return of(k, rows.data(), N, p, squared);
 }

@@ -1,6 +1,7 @@
 // intersects: capsule_pairs
 module;
 #include <array>
+#include <utility>
 export module incidence.detail:intersects.capsule_pairs;
 import incidence.core;
 import incidence.arith;
@@ -18,6 +19,7 @@ import :engines.kdop;
 import :engines.separating_axes;
 import :engines.ball_obb;
 import :engines.capsule_obb;
+import :engines.certificate;
 import :intersects.box_pairs;
 import :intersects.sphere_pairs;
 import :intersects.triangle_pairs;
@@ -28,7 +30,10 @@ export namespace incidence::detail {
 
 // capsule3 against the point, the ball, the linear shapes, the plane, the triangle, the
 // tetrahedron, the box, the oriented box, the capsule, the polygon, the solid mesh and the half-space sets: engines/capsule.cppm (the segment's distance against the
-// radius: its ends' balls, the segment itself, the shape's edges).
+// radius: its ends' balls, the segment itself, the shape's edges). Against a capsule, a box and an
+// oriented box, plain double's closest points come first (engines/certificate.cppm): a witness
+// pair within the radii or a separating direction settles most inputs in a few signs, and the case
+// analysis decides the rest.
 // Semantics: the closed capsule (the points within |r| of the closed segment ab; a = b is a ball);
 // closed shapes as in their own pairs (a collinear triangle or a flat tetrahedron is its hull, a
 // segment whose ends agree a point, a zero direction the origin, a zero normal everything when the
@@ -38,6 +43,15 @@ export namespace incidence::detail {
 [[nodiscard]] constexpr bool usable(const capsule3& c) { return finite(c.a) && finite(c.b) && finite(c.radius); }
 [[nodiscard]] constexpr double reach(const capsule3& c) { return c.radius < 0.0 ? -c.radius : c.radius; }
 [[nodiscard]] constexpr linear3 core(const capsule3& c) { return as_linear(segment3{c.a, c.b}); }
+
+// Lexicographic order of the coordinates, then the radius.
+[[nodiscard]] constexpr bool capsule_less(const capsule3& x, const capsule3& y) {
+    const double u[7] = {x.a.x, x.a.y, x.a.z, x.b.x, x.b.y, x.b.z, x.radius};
+    const double w[7] = {y.a.x, y.a.y, y.a.z, y.b.x, y.b.y, y.b.z, y.radius};
+    for (unsigned i = 0; i < 7; ++i)
+        if (u[i] != w[i]) return u[i] < w[i];
+    return false;
+}
 
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const capsule3& c, const point3& p) {
@@ -49,7 +63,13 @@ template <class K>
 }
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const capsule3& a, const capsule3& b) {
-    return usable(a) && usable(b) && swept::linear_within(k, core(a), core(b), ball_flat::radii{reach(a), reach(b)});
+    if (!usable(a) || !usable(b)) return false;
+    const ball_flat::radii r{reach(a), reach(b)};
+    // the guess in one order of the two, so that both argument orders settle the same cases
+    const auto [p, q] = capsule_less(b, a) ? std::pair{&b, &a} : std::pair{&a, &b};
+    if (const auto v = certificate::segment_segment(k, p->a, p->b, q->a, q->b, r); v != certificate::verdict::open)
+        return v == certificate::verdict::meets;
+    return swept::linear_within(k, core(a), core(b), r);
 }
 template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const capsule3& c, const segment3& s) {
@@ -90,6 +110,8 @@ template <class K>
 [[nodiscard]] constexpr bool intersects(K& k, const aabb3& b, const capsule3& c) {
     if (!usable(c) || !ball::usable(b)) return false;
     const double r = reach(c);
+    if (const auto v = certificate::segment_box(k, c.a, c.b, b, r); v != certificate::verdict::open)
+        return v == certificate::verdict::meets;
     if (intersects(k, b, sphere3{c.a, r}) || intersects(k, b, sphere3{c.b, r})) return true;
     if (intersects(k, b, segment3{c.a, c.b})) return true;
     const point3 lo = b.min, hi = b.max;
@@ -111,6 +133,8 @@ template <class K>
     if (!usable(c) || !sat::well_formed(b) || !finite(b)) return false;
     const double r = reach(c);
     if (c.a == c.b) return ball_obb::meets(k, b, sphere3{c.a, r});
+    if (const auto v = certificate::segment_obb(k, c.a, c.b, b, r); v != certificate::verdict::open)
+        return v == certificate::verdict::meets;
     if (sat::zonotopes_intersect(k, sat::zonotope_of(b), sat::zonotope_of(segment3{c.a, c.b}))) return true;
     return swept_obb::meets(k, b, c.a, c.b, r);
 }
@@ -155,7 +179,7 @@ template <class K>
 }
 template <class K, int N>
 [[nodiscard]] constexpr bool intersects(K& k, const capsule3& c, const kdop<N>& b) {
-    if (!usable(c) || !usable_kdop(b)) return false;
+    if (!usable(c) || !kdop_slabs::well_formed(b)) return false;
     const std::array<plane3, N> rows = kdop_slabs::halfspaces(b);
     return swept_rows::meets(k, rows.data(), N, c.a, c.b, reach(c));
 }

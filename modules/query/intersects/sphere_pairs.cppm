@@ -167,15 +167,9 @@ template <class K>
     if (!halfspaces::well_formed(f.planes.data(), 6, 6) || !ball::usable(s)) return false;
     return ball_rows::meets(k, f.planes.data(), 6, s);
 }
-template <int N>
-[[nodiscard]] constexpr bool usable_kdop(const kdop<N>& b) {
-    for (unsigned i = 0; i < N / 2; ++i)
-        if (!is_finite(b.min[i]) || !is_finite(b.max[i]) || b.min[i] > b.max[i]) return false;
-    return true;
-}
 template <class K, int N>
 [[nodiscard]] constexpr bool intersects(K& k, const kdop<N>& b, const sphere3& s) {
-    if (!usable_kdop(b) || !ball::usable(s)) return false;
+    if (!kdop_slabs::well_formed(b) || !ball::usable(s)) return false;
     const std::array<plane3, N> rows = kdop_slabs::halfspaces(b);
     return ball_rows::meets(k, rows.data(), N, s);
 }
