@@ -20,9 +20,10 @@
 //                (n_j x n_l) . (c D - V) >= 0 and its turns (l >= 0, degree 6); sign(d_h D - n_h . V)
 //                zero or sign(D) (degree 5); then r^2 D^2 - |c D - V|^2 >= 0 decides (degree 8).
 // Every S that the projection may use contains a row with e_i > 0 (its distance l . e is
-// positive), so only those are tried, those of rows c lies beyond alone first; first the set that
-// plain double names (the same search on rounded signs), then, if the kernel's signs refute it,
-// every set in turn. First, a row with the
+// positive), so only those are tried, those of rows c lies beyond alone first; first, with more than
+// eight rows, the set of plain double's projection (the dual active-set method of Goldfarb and
+// Idnani), then the set that plain double's search names, then, if the kernel's signs refute
+// them, every set in turn. First, a row with the
 // whole ball beyond it (e_i > 0 and e_i^2 > r^2 |n_i|^2) says no.
 // contains: for every row, -e_i >= 0 and e_i^2 >= r^2 |n_i|^2 (degree 4): the ball is in each
 // half-space, so in P (and P is then not empty).
@@ -279,10 +280,109 @@ template <class K>
     return s;
 }
 
-// The projection's active set for c outside the rows (s: their sides, s.outside): the set that
-// plain double names, proven by k's signs, else every set in turn; no set: the rows are empty.
+// Plain double's projection of c onto the rows by the dual active-set method (Goldfarb and Idnani,
+// "A numerically stable dual method for solving strictly convex quadratic programs", Mathematical
+// Programming 27 (1983), on min |x - c|^2 / 2): the active set it ends with, or none where it finds
+// no feasible point or does not settle within its step limit. A guess for try_set, which proves or
+// refutes it: nothing here needs an error bound.
+[[nodiscard]] constexpr found projected_set(const rows& r, point3 c) {
+    using v3d = std::array<double, 3>;
+    const auto normal = [&](unsigned i) { return v3d{r[i].normal.x, r[i].normal.y, r[i].normal.z}; };
+    const auto dot3 = [](const v3d& a, const v3d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+    v3d x{c.x, c.y, c.z};
+    unsigned set[3] = {0, 0, 0}, n = 0;
+    double u[3] = {0, 0, 0};
+    const auto excess_at = [&](unsigned i) { return dot3(normal(i), x) - r[i].offset; };
+    for (unsigned step = 0; step < 4 * r.n + 8; ++step) {
+        // the row most violated, by e_i / |n_i|, beyond rounding (2^-45 of its terms' magnitude)
+        unsigned p = r.n;
+        double worst = 0.0;
+        for (unsigned i = 0; i < r.n; ++i) {
+            if ((n > 0 && set[0] == i) || (n > 1 && set[1] == i) || (n > 2 && set[2] == i)) continue;
+            const v3d m = normal(i);
+            const double e = excess_at(i);
+            const double size = (m[0] < 0 ? -m[0] : m[0]) * (x[0] < 0 ? -x[0] : x[0]) +
+                                (m[1] < 0 ? -m[1] : m[1]) * (x[1] < 0 ? -x[1] : x[1]) +
+                                (m[2] < 0 ? -m[2] : m[2]) * (x[2] < 0 ? -x[2] : x[2]) + (r[i].offset < 0 ? -r[i].offset : r[i].offset);
+            if (!(e > 0x1p-45 * size)) continue;
+            const double score = e * e / dot3(m, m);
+            if (score > worst) worst = score, p = i;
+        }
+        if (p == r.n) {
+            if (n == 0) return {};
+            return {true, active{n, {set[0], set[1], set[2]}}};
+        }
+        // steps toward row p: x - t z with z = n_p less its part in the active rows' span, the
+        // multipliers u - t q (G q = N n_p), until p is active or a multiplier reaches zero
+        double up = 0.0;
+        for (int partial = 0; partial < 4; ++partial) {
+            const v3d np = normal(p);
+            double g[3][3], b[3], q[3] = {0, 0, 0};
+            for (unsigned a = 0; a < n; ++a) {
+                b[a] = dot3(normal(set[a]), np);
+                for (unsigned e = 0; e < n; ++e) g[a][e] = dot3(normal(set[a]), normal(set[e]));
+            }
+            if (n == 1) {
+                if (!(g[0][0] > 0.0)) return {};
+                q[0] = b[0] / g[0][0];
+            } else if (n == 2) {
+                const double det = g[0][0] * g[1][1] - g[0][1] * g[1][0];
+                if (det == 0.0) return {};
+                q[0] = (g[1][1] * b[0] - g[0][1] * b[1]) / det, q[1] = (g[0][0] * b[1] - g[1][0] * b[0]) / det;
+            } else if (n == 3) {
+                const double det = g[0][0] * (g[1][1] * g[2][2] - g[1][2] * g[2][1]) - g[0][1] * (g[1][0] * g[2][2] - g[1][2] * g[2][0]) +
+                                   g[0][2] * (g[1][0] * g[2][1] - g[1][1] * g[2][0]);
+                if (det == 0.0) return {};
+                for (unsigned col = 0; col < 3; ++col) {
+                    double h[3][3];
+                    for (unsigned a = 0; a < 3; ++a)
+                        for (unsigned e = 0; e < 3; ++e) h[a][e] = e == col ? b[a] : g[a][e];
+                    q[col] = (h[0][0] * (h[1][1] * h[2][2] - h[1][2] * h[2][1]) - h[0][1] * (h[1][0] * h[2][2] - h[1][2] * h[2][0]) +
+                              h[0][2] * (h[1][0] * h[2][1] - h[1][1] * h[2][0])) /
+                             det;
+                }
+            }
+            v3d z = np;
+            for (unsigned a = 0; a < n; ++a) {
+                const v3d m = normal(set[a]);
+                for (unsigned e = 0; e < 3; ++e) z[e] -= q[a] * m[e];
+            }
+            const double zz = dot3(z, z);
+            const bool dependent = n == 3 || !(zz > 0x1p-60 * dot3(np, np));
+            constexpr double inf = __builtin_huge_val();
+            double t1 = inf;
+            unsigned block = 3;
+            for (unsigned a = 0; a < n; ++a)
+                if (q[a] > 0.0 && u[a] / q[a] < t1) t1 = u[a] / q[a], block = a;
+            const double t2 = dependent ? inf : excess_at(p) / zz;
+            if (!(t1 < inf) && !(t2 < inf)) return {}; // no feasible point (or not settled)
+            const double t = t2 < t1 ? t2 : t1;
+            if (!dependent)
+                for (unsigned e = 0; e < 3; ++e) x[e] -= t * z[e];
+            for (unsigned a = 0; a < n; ++a) u[a] -= t * q[a];
+            up += t;
+            if (t2 <= t1) { // p is active
+                set[n] = p, u[n] = up, ++n;
+                break;
+            }
+            for (unsigned a = block; a + 1 < n; ++a) set[a] = set[a + 1], u[a] = u[a + 1]; // the blocking row leaves
+            --n;
+        }
+    }
+    return {};
+}
+
+// The projection's active set for c outside the rows (s: their sides, s.outside), proven by k's
+// signs: with more than eight rows, outside the exact pass, first the set of plain double's
+// projection (projected_set); then the set that plain double's search names; then every set in
+// turn. No set: the rows are empty. (Measured: with six rows, a frustum's, the search costs less
+// than the projection; with the projection first in the exact pass too, a ball near a 26-DOP took
+// 12.1 us against 10.5 us before the projection, 8.5 us as here.)
 template <class K>
 [[nodiscard]] constexpr found nearest(K& k, const rows& r, point3 c, const sides& s) {
+    if (r.n > 8 && !arith::exact_pass_at_run_time<K>() && !__builtin_is_constant_evaluated()) // (a guess at extreme
+        if (const found g = projected_set(r, c); g.any)                                       // scales may overflow,
+            if (const found f = try_set(k, r, c, g.set); f.any) return f;                     // which constant evaluation refuses)
     if constexpr (!std::is_same_v<K, arith::approx_kernel>) {
         arith::approx_kernel a;
         const sides guess_sides = sides_of(a, r, c);
