@@ -180,8 +180,6 @@ template <class K>
     }
 }
 
-[[nodiscard]] constexpr double clamp(double x, double lo, double hi) { return x < lo ? lo : (x > hi ? hi : x); }
-
 // Plain double's guess: alternating projections between the segment and the box (the axes are
 // near orthonormal for a checked box), the last one's bound coordinates, and its squared distance.
 struct guess {

@@ -39,8 +39,6 @@ namespace certificate {
 
 enum class verdict : unsigned char { open, meets, apart };
 
-[[nodiscard]] constexpr double clamp(double x, double lo, double hi) { return x > lo ? (x < hi ? x : hi) : lo; } // NaN: lo
-
 // The parameter t in [0, 1] of the point of segment pa + t d nearest to the box [lo, hi] (plain
 // double): the sum of squared gaps is a convex piecewise quadratic in t, minimised on each piece
 // between the parameters where a coordinate crosses a bound.
@@ -169,11 +167,8 @@ template <class K, class R>
     if (!is_finite(b - a) || !is_finite(d - c) || !is_finite(a - c)) return verdict::open;
     const auto [s, t] = closest_parameters(a, b, c, d);
     if (!finite_all({s, t})) return verdict::open;
-    if (witness(k, rad, [=](auto L) {
-            const auto one = L(1.0);
-            return arith::scaled(arith::lift(L, a) - arith::lift(L, c), one) + arith::scaled(arith::lift(L, b) - arith::lift(L, a), L(s)) -
-                   arith::scaled(arith::lift(L, d) - arith::lift(L, c), L(t));
-        }))
+    if (witness(k, rad,
+                [=](auto L) { return on_segment_less(L, a, b, s, c) - arith::scaled(arith::lift(L, d) - arith::lift(L, c), L(t)); }))
         return verdict::meets;
     const vec3 v = (a + (b - a) * s) - (c + (d - c) * t);
     if (!is_finite(v) || (v.x == 0.0 && v.y == 0.0 && v.z == 0.0)) return verdict::open;
@@ -204,10 +199,8 @@ template <class K, class R>
     double s[3];
     for (unsigned j = 0; j < 3; ++j) s[j] = clamp(la[j] + t * d[j], lo[j], hi[j]);
     if (witness(k, rad, [=](auto L) {
-            const auto one = L(1.0);
-            return arith::scaled(arith::lift(L, a) - arith::lift(L, o), one) + arith::scaled(arith::lift(L, b) - arith::lift(L, a), L(t)) -
-                   arith::scaled(arith::lift(L, m[0]), L(s[0])) - arith::scaled(arith::lift(L, m[1]), L(s[1])) -
-                   arith::scaled(arith::lift(L, m[2]), L(s[2]));
+            return on_segment_less(L, a, b, t, o) - arith::scaled(arith::lift(L, m[0]), L(s[0])) -
+                   arith::scaled(arith::lift(L, m[1]), L(s[1])) - arith::scaled(arith::lift(L, m[2]), L(s[2]));
         }))
         return verdict::meets;
     const vec3 v = (a + (b - a) * t) - (o + m[0] * s[0] + m[1] * s[1] + m[2] * s[2]);

@@ -893,15 +893,14 @@ template <class K>
 } // namespace halfspaces
 
 namespace halfspaces {
-// A fixed order of two lists of n planes (the numbers in turn; NaN compares as equal), so a test
-// of two sets runs on the same order of its arguments whichever way they come: the approximate
-// tier then answers the same for both orders too.
+// A fixed order of two lists of n planes (their numbers in turn, see numbers_before), so a test
+// of two sets runs on the same order of its arguments whichever way they come.
 [[nodiscard]] constexpr bool planes_before(const plane3* a, const plane3* b, int n) {
     for (int i = 0; i < n; ++i) {
         const plane3 p = a[i], q = b[i];
         const double x[4] = {p.normal.x, p.normal.y, p.normal.z, p.offset}, y[4] = {q.normal.x, q.normal.y, q.normal.z, q.offset};
-        for (int j = 0; j < 4; ++j)
-            if (x[j] != y[j] && x[j] == x[j] && y[j] == y[j]) return x[j] < y[j];
+        if (numbers_before(x, y, 4)) return true;
+        if (numbers_before(y, x, 4)) return false;
     }
     return false;
 }

@@ -83,6 +83,17 @@ using linear2 = basic_linear<point2, vec2>;
 [[nodiscard]] constexpr bool finite(const segment2& s) { return finite(s.a) && finite(s.b); }
 [[nodiscard]] constexpr bool finite(const ray2& r) { return finite(r.origin) && finite(r.direction); }
 
+// A fixed order of two lists of n numbers (lexicographic; a NaN compares as equal), so a pair
+// runs on one order of its two shapes whichever way they come: the plain-double tier then also
+// answers the same for (a, b) and (b, a).
+[[nodiscard]] constexpr bool numbers_before(const double* x, const double* y, int n) {
+    for (int i = 0; i < n; ++i)
+        if (x[i] != y[i] && x[i] == x[i] && y[i] == y[i]) return x[i] < y[i];
+    return false;
+}
+// x clamped into [lo, hi] (lo <= hi); a NaN gives lo.
+[[nodiscard]] constexpr double clamp(double x, double lo, double hi) { return x > lo ? (x < hi ? x : hi) : lo; }
+
 [[nodiscard]] constexpr linear3 as_linear(const segment3& s) { return {s.a, vec3{0, 0, 0}, s.b, extent::segment}; }
 [[nodiscard]] constexpr linear3 as_linear(const ray3& r) { return {r.origin, r.direction, r.origin, extent::ray}; }
 [[nodiscard]] constexpr linear3 as_linear(const line3& l) { return {l.origin, l.direction, l.origin, extent::line}; }

@@ -37,6 +37,7 @@ export module incidence.detail:engines.separating_axes;
 import incidence.core;
 import incidence.arith;
 import incidence.shapes;
+import :engines.linear;
 
 export namespace incidence::detail::sat {
 
@@ -497,7 +498,7 @@ template <class K>
 } // namespace incidence::detail::sat
 export namespace incidence::detail {
 
-// The boxes in a fixed order (lexicographic on their numbers), so that the plain-double tier
+// The boxes in a fixed order (their numbers, see numbers_before), so that the plain-double tier
 // also answers the same for (a, b) and (b, a).
 [[nodiscard]] constexpr bool obb_before(const obb3& a, const obb3& b) {
     const double x[15] = {a.center.x,  a.center.y,  a.center.z,        a.axes[0].x,       a.axes[0].y,
@@ -506,9 +507,7 @@ export namespace incidence::detail {
     const double y[15] = {b.center.x,  b.center.y,  b.center.z,        b.axes[0].x,       b.axes[0].y,
                           b.axes[0].z, b.axes[1].x, b.axes[1].y,       b.axes[1].z,       b.axes[2].x,
                           b.axes[2].y, b.axes[2].z, b.half_extents[0], b.half_extents[1], b.half_extents[2]};
-    for (int i = 0; i < 15; ++i)
-        if (x[i] != y[i]) return x[i] < y[i];
-    return true;
+    return numbers_before(x, y, 15);
 }
 
 // The classic test in plain double (an alternative, compared in the audit): the rotation

@@ -48,9 +48,7 @@ export namespace incidence::detail {
 [[nodiscard]] constexpr bool capsule_less(const capsule3& x, const capsule3& y) {
     const double u[7] = {x.a.x, x.a.y, x.a.z, x.b.x, x.b.y, x.b.z, x.radius};
     const double w[7] = {y.a.x, y.a.y, y.a.z, y.b.x, y.b.y, y.b.z, y.radius};
-    for (unsigned i = 0; i < 7; ++i)
-        if (u[i] != w[i]) return u[i] < w[i];
-    return false;
+    return numbers_before(u, w, 7);
 }
 
 template <class K>
