@@ -329,18 +329,12 @@ template <class K>
                 const double det = g[0][0] * g[1][1] - g[0][1] * g[1][0];
                 if (det == 0.0) return {};
                 q[0] = (g[1][1] * b[0] - g[0][1] * b[1]) / det, q[1] = (g[0][0] * b[1] - g[1][0] * b[0]) / det;
-            } else if (n == 3) {
-                const double det = g[0][0] * (g[1][1] * g[2][2] - g[1][2] * g[2][1]) - g[0][1] * (g[1][0] * g[2][2] - g[1][2] * g[2][0]) +
-                                   g[0][2] * (g[1][0] * g[2][1] - g[1][1] * g[2][0]);
+            } else if (n == 3) { // Cramer's rule on G's columns
+                const arith::v3<double> g0{g[0][0], g[1][0], g[2][0]}, g1{g[0][1], g[1][1], g[2][1]}, g2{g[0][2], g[1][2], g[2][2]};
+                const arith::v3<double> rhs{b[0], b[1], b[2]};
+                const double det = arith::det3(g0, g1, g2);
                 if (det == 0.0) return {};
-                for (unsigned col = 0; col < 3; ++col) {
-                    double h[3][3];
-                    for (unsigned a = 0; a < 3; ++a)
-                        for (unsigned e = 0; e < 3; ++e) h[a][e] = e == col ? b[a] : g[a][e];
-                    q[col] = (h[0][0] * (h[1][1] * h[2][2] - h[1][2] * h[2][1]) - h[0][1] * (h[1][0] * h[2][2] - h[1][2] * h[2][0]) +
-                              h[0][2] * (h[1][0] * h[2][1] - h[1][1] * h[2][0])) /
-                             det;
-                }
+                q[0] = arith::det3(rhs, g1, g2) / det, q[1] = arith::det3(g0, rhs, g2) / det, q[2] = arith::det3(g0, g1, rhs) / det;
             }
             v3d z = np;
             for (unsigned a = 0; a < n; ++a) {
