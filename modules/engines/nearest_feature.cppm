@@ -42,6 +42,20 @@ export namespace incidence::detail {
 
 namespace nearest {
 
+// search(k), a search for the nearest feature or active set that reports whether it found one
+// (settled(result)); where k's signs refute every candidate (plain double's, within rounding of a
+// tie), the same search on exact signs, which name one.
+template <class K, class Search, class Settled>
+[[nodiscard]] constexpr auto found_or_exactly(K& k, Search search, Settled settled) {
+    auto result = search(k);
+    if constexpr (!std::is_same_v<K, arith::exact_kernel>)
+        if (!settled(result)) {
+            arith::exact_kernel e;
+            result = search(e);
+        }
+    return result;
+}
+
 enum class kind : unsigned char { vertex, edge, face };
 
 // A feature: a vertex a, an edge ab or a face abc.

@@ -127,11 +127,9 @@ template <class K>
 [[nodiscard]] constexpr arith::value_t<K> of(K& k, const obb3& b, point3 p, bool squared) {
     if (!usable(b, p)) return arith::exact_value(k, __builtin_nan(""));
     const ball_obb::frame f{b.center, p, {b.axes[0], b.axes[1], b.axes[2]}, {b.half_extents[0], b.half_extents[1], b.half_extents[2]}, 0.0};
-    auto [any, at] = ball_obb::minimiser(k, f);
-    if (!any) { // only plain double's signs, within rounding of zero, refute every set: exact signs name it
-        arith::exact_kernel e;
-        at = ball_obb::minimiser(e, f).second;
-    }
+    const auto at = nearest::found_or_exactly(
+                        k, [&](auto& kernel) { return ball_obb::minimiser(kernel, f); }, [](const auto& m) { return m.first; })
+                        .second;
     if (at != ball_obb::active{})
         return ball_obb::with_distance(f, at, [&](auto q) -> arith::value_t<K> {
             if (k.sgn([=](auto L) { return q(L).num; }) == sign::zero) return arith::exact_value(k, 0.0); // on the box

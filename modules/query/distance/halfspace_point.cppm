@@ -52,11 +52,13 @@ template <class K>
     if (r.empty) return arith::exact_value(k, inf);
     const ball_rows::sides s = ball_rows::sides_of(k, r, p);
     if (s.outside) {
-        ball_rows::found f = ball_rows::nearest(k, r, p, s);
-        if (!f.any && std::is_same_v<K, arith::approx_kernel>) { // plain double may refute every set near a tie: exact signs decide
-            arith::exact_kernel e;
-            f = ball_rows::nearest(e, r, p, ball_rows::sides_of(e, r, p));
-        }
+        const ball_rows::found f = nearest::found_or_exactly(
+            k,
+            [&](auto& kernel) {
+                if constexpr (std::is_same_v<std::remove_reference_t<decltype(kernel)>, K>) return ball_rows::nearest(kernel, r, p, s);
+                else return ball_rows::nearest(kernel, r, p, ball_rows::sides_of(kernel, r, p));
+            },
+            [](const ball_rows::found& x) { return x.any; });
         if (!f.any) return arith::exact_value(k, inf); // the rows are empty
         return ball_rows::with_distance(r, p, f.set, [&](auto q) -> arith::value_t<K> {
             if (squared) return arith::value(k, q);
