@@ -1,6 +1,6 @@
 // Benchmarks: the 2D pairs: points, lines, rays, segments (CGAL Epeck as truth, Epick beside) and
-// polygons; the disk (circle2) against each of them, and containment in the disk; and the planar
-// polygon in space against every shape.
+// polygons; the disk (circle2) against each of them, containment in the disk and of the disk in a
+// polygon; and the planar polygon in space against every shape.
 #include "bench.hpp"
 #include <optional>
 #include <tuple>
@@ -48,6 +48,26 @@ void disk_tiers(const std::string& pair, bool near) {
         Contains ? "contains" : "intersects");
 }
 
+// contains(polygon2, circle2): random disks, or a disk in a star polygon of radius its distance to
+// the nearest edge (testkit/circle2_cases.hpp's disk_in_star) for the near-degenerate set.
+void polygon_holds_disk_tiers(bool near) {
+    struct held_case {
+        circle2 c{};
+        support::polygon_store g;
+    };
+    support::rng r = set_rng(near);
+    std::vector<held_case> cs;
+    while (cs.size() < set_size) {
+        held_case d;
+        d.c = near ? support::disk_in_star(r, d.g) : support::disk_random_around<polygon2>(r, d.g).first;
+        cs.push_back(std::move(d));
+    }
+    tiers(
+        "polygon2_circle2", near ? "near_degenerate" : "random", cs,
+        [](const held_case& d) { return support::polygon_holds_disk_truth(d.g.view(), d.c); },
+        [](auto tier, const held_case& d) { return contains<decltype(tier)>(d.g.view(), d.c); }, "contains");
+}
+
 } // namespace
 
 void register_planar2(bool near) {
@@ -76,6 +96,7 @@ void register_planar2(bool near) {
     disk_tiers<segment2, true>("circle2_segment2", near);
     disk_tiers<circle2, true>("circle2_circle2", near);
     disk_tiers<polygon2, true>("circle2_polygon2", near);
+    polygon_holds_disk_tiers(near);
     polygon3_tiers<point3>("point_polygon", near);
     polygon3_tiers<segment3>("polygon_segment", near);
     polygon3_tiers<ray3>("polygon_ray", near);

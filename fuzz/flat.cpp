@@ -12,7 +12,8 @@
 // any positions, so possibly self-intersecting: polygon2::make must accept exactly the simple
 // ones (CGAL Polygon_2::is_simple and disjoint rings, oracle::polygon_simple), and for those the
 // contracts hold against oracle::polygon_intersect; contains(polygon, point | segment) too (the
-// segment against oracle::polygon_contains_segment). 3D polygon mode
+// segment against oracle::polygon_contains_segment), and a disk (doubles 24..26) against the
+// polygon both ways, contains(polygon, disk) against circle2_cases.hpp's polygon_holds_disk_truth. 3D polygon mode
 // (byte 0 & 0xc0 == 0x40 and byte 1 & 0x80): a polygon3 of six vertices (12 doubles, one ring or
 // two of three as above) in the plane where coordinate byte 0 % 3 is the 13th double, exactly
 // planar, against the 3D shape of kind byte 1 % 6 (9 more doubles): polygon3::make must accept
@@ -165,7 +166,7 @@ void check_polygon(const polygon2& g, const B& b, bool finite) {
 }
 // A disk of the doubles d[0..3) (centre, radius) against b: every tier on any bits; on finite ones
 // the contracts against testkit/circle2_cases.hpp's oracle, and contains(disk, b) for a point, a
-// segment, a disk or a polygon.
+// segment, a disk or a polygon, and contains(polygon, disk).
 template <class B>
 void check_disk(const double* d, const B& b, bool finite) {
     const circle2 c{{d[0], d[1]}, d[2]};
@@ -175,10 +176,13 @@ void check_disk(const double* d, const B& b, bool finite) {
     (void)classify(b, c);
     if (!(finite && std::isfinite(d[0]) && std::isfinite(d[1]) && std::isfinite(d[2]))) {
         if (intersects<exact>(c, b)) std::abort();
+        if constexpr (std::is_same_v<B, polygon2>)
+            if (contains(b, c)) std::abort();
         return;
     }
     contracts(c, b, support::disk_truth(c, b));
     if constexpr (!std::is_same_v<B, ray2> && !std::is_same_v<B, line2>) contains_contracts_with(c, b, support::disk_holds_truth(c, b));
+    if constexpr (std::is_same_v<B, polygon2>) contains_contracts_with(b, c, support::polygon_holds_disk_truth(b, c));
 }
 // The 3D polygon: every tier finishes; on finite input make() accepts exactly the simple rings, and
 // the contracts hold against the triangulation oracle (support::polygon3_truth).

@@ -1,6 +1,7 @@
 // Cases and checks for a circle2 (the closed disk) against a point2, circle2, segment2, ray2, line2
 // or polygon2 (the families circle2_point2, circle2_circle2, circle2_segment2, circle2_ray2,
-// circle2_line2, circle2_polygon2), and contains(circle2, point2 | segment2 | circle2 | polygon2).
+// circle2_line2, circle2_polygon2), contains(circle2, point2 | segment2 | circle2 | polygon2) and
+// contains(polygon2, circle2).
 // Oracle: CGAL's squared distance from the centre over Epeck with the shape embedded in the plane
 // z = 0 (oracle::ball_flat), exact rationals for two disks and for a point (oracle::ball_ball,
 // ball_contains_ball, point_in_ball), and for a polygon its set holding the centre (CGAL
@@ -19,7 +20,10 @@
 // contains: a disk of radius 5m around a small integer centre and vertices on its circle ((3m, 4m)
 // away) or inside; a star polygon whose farthest vertex gives the radius (rounded); a disk inside
 // another, touching it from inside ((3q, 4q) away, radius 5m - 5q), halved or grown by an ulp.
+// contains(polygon2, circle2): a disk inside a star polygon, its radius the distance to the nearest
+// edge (disk_in_star).
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
@@ -72,6 +76,18 @@ bool disk_truth(const incidence::circle2& c, const B& b) {
     } else {
         return oracle::ball_flat(flat_of(b), C, r);
     }
+}
+// Is the disk in the polygon's set (simple rings that do not meet, as the generators' star polygons
+// and make() give)? A zero radius: its centre in the set; else the centre in it and no edge
+// strictly within the radius (CGAL's squared distance over Epeck): such an edge has the outside
+// on one side of it, within the disk.
+inline bool polygon_holds_disk_truth(const incidence::polygon2& g, const incidence::circle2& c) {
+    using namespace incidence;
+    if (!oracle::polygon_intersect(polygon_data_of(g), oracle::flat2{oracle::flat2::point, {c.center.x, c.center.y}})) return false;
+    const double r = std::fabs(c.radius);
+    bool near = false;
+    if (r > 0.0) each_edge(g, [&](point2 p, point2 q) { near = near || oracle::segment_in_open_ball(a3(p), a3(q), a3(c.center), r); });
+    return !near;
 }
 // Is b in the disk? Its vertices (a disk: the centres within the difference of the radii).
 template <class B>
@@ -258,6 +274,44 @@ std::pair<incidence::circle2, B> disk_holding(rng& r, polygon_store& store) {
     }
     return {realise(c, tr), b};
 }
+// contains(polygon2, circle2): a star polygon (a hole half of the time) in small coordinates and a
+// disk around a point inside it (between the rings, or a ring point moved towards there) whose
+// radius is its distance from the nearest edge (in double, rounded), kept, nudged by ulps, halved
+// or grown by 1/16; one time in eight a ring point with radius 0. Then one random exact-or-nudged
+// scale and translation; `store` holds the polygon.
+inline incidence::circle2 disk_in_star(rng& r, polygon_store& store) {
+    using namespace incidence;
+    const point2 centre{small(r), small(r)};
+    const int n = r.integer(1, 3);
+    star_polygon(r, n, centre, 1.0, store);
+    vec2 along{};
+    const point2 X = ring_point(r, store, along);
+    circle2 c{X, 0.0};
+    if (r.integer(0, 7) != 0) {
+        const point2 P = centre + vec2{0.375 * n, 0.0}; // between the rings
+        c.center = r.coin() ? P : X + (r.integer(1, 4) * 0.0625) * (P - X);
+        double nearest = 1e300;
+        each_edge(store.view(), [&](point2 p, point2 q) { // the squared distance in double
+            const vec2 d = q - p, m = c.center - p;
+            const double t = std::clamp(dot(m, d) / dot(d, d), 0.0, 1.0);
+            const vec2 e = m - t * d;
+            nearest = std::fmin(nearest, dot(e, e));
+        });
+        c.radius = std::sqrt(nearest);
+        switch (r.integer(0, 7)) {
+        case 0: c.radius = nudge(c.radius, r.integer(-3, 3)); break;
+        case 1: c.radius *= 1.0625; break;
+        case 2:
+        case 3:
+        case 4: c.radius *= 0.5; break;
+        default: break;
+        }
+    }
+    transform tr = random_transform(r, true, true);
+    realise_polygon(store, tr);
+    return realise(c, tr);
+}
+
 template <class B>
 std::pair<incidence::circle2, B> disk_random_around(rng& r, polygon_store& store) {
     for (;;)

@@ -1,5 +1,5 @@
 // The checks of a circle2 against a point2, circle2, segment2, ray2, line2 or polygon2, and of
-// contains(circle2, point2 | segment2 | circle2 | polygon2), on circle2_cases.hpp's cases against its
+// contains(circle2, point2 | segment2 | circle2 | polygon2) and contains(polygon2, circle2), on circle2_cases.hpp's cases against its
 // oracle (every tier's contract, both argument orders, classify). Include after testing.hpp,
 // check.hpp and the CGAL oracle header.
 #pragma once
@@ -41,6 +41,26 @@ void disk_contains(const std::string& name, long n, double approx_bound) {
         [&](rng& g) { return disk_holding<B>(g, store); }, false,
         [](const incidence::circle2& c, const B& b) { return disk_holds_truth(c, b); },
         [](const incidence::circle2& c, const B& b) { return shape_str(c) + " " + disk_partner_str(b); });
+}
+
+// contains(polygon2, circle2) on `n` random disks (disk_random) and `n` disks in a star polygon
+// (disk_in_star) against polygon_holds_disk_truth.
+inline void polygon_holds_disk(const std::string& name, long n, double approx_bound) {
+    using incidence::circle2;
+    using incidence::polygon2;
+    polygon_store store;
+    contains_oracle<polygon2, circle2>(
+        name + " (polygon around the disk)", n, approx_bound,
+        [&](rng& g) {
+            const auto [c, p] = disk_random_around<polygon2>(g, store);
+            return std::pair{p, c};
+        },
+        [&](rng& g) {
+            const circle2 c = disk_in_star(g, store);
+            return std::pair{store.view(), c};
+        },
+        false, [](const polygon2& p, const circle2& c) { return polygon_holds_disk_truth(p, c); },
+        [](const polygon2& p, const circle2& c) { return disk_partner_str(p) + " " + shape_str(c); });
 }
 
 } // namespace support

@@ -64,36 +64,43 @@ template <class L>
     return s * s;
 }
 
-// Is p in the ball (in space, or the disk in the plane)?
-template <class K, class P, class R>
-[[nodiscard]] constexpr bool holds(K& k, P p, P c, R r) {
-    return k.sgn([=](auto L) {
-        const auto m = arith::lift(L, p) - arith::lift(L, c);
-        return squared(L, r) - arith::dot(m, m);
-    }) != sign::negative;
+// The sign of r^2 - |x - c|^2 that puts x in the closed ball (>= 0) or, `open`, in the open one (> 0).
+template <bool open>
+[[nodiscard]] constexpr bool within(sign s) {
+    return open ? s == sign::positive : s != sign::negative;
 }
 
-// A segment, a ray or a line (finite) against the ball, in space or in the plane (the disk).
-template <class K, class P, class V, class R>
+// Is p in the ball (in space, or the disk in the plane; `open`: strictly inside)?
+template <bool open = false, class K, class P, class R>
+[[nodiscard]] constexpr bool holds(K& k, P p, P c, R r) {
+    return within<open>(k.sgn([=](auto L) {
+        const auto m = arith::lift(L, p) - arith::lift(L, c);
+        return squared(L, r) - arith::dot(m, m);
+    }));
+}
+
+// A segment, a ray or a line (finite) against the ball, in space or in the plane (the disk);
+// `open`: a point of it strictly inside (the same case analysis, each final sign strict).
+template <bool open = false, class K, class P, class V, class R>
 [[nodiscard]] constexpr bool meets(K& k, const basic_linear<P, V>& s, P c, R r) {
-    if (holds(k, s.o, c, r)) return true;
+    if (holds<open>(k, s.o, c, r)) return true;
     if (s.is_point()) return false;
     const auto lb = [=](auto L) { return arith::dot(s.O(L) - arith::lift(L, c), s.D(L)); };
     if (s.kind != extent::line && k.sgn(lb) != sign::negative) return false; // the origin is nearest
     if (s.kind == extent::segment) {
-        if (holds(k, s.q, c, r)) return true;
+        if (holds<open>(k, s.q, c, r)) return true;
         if (k.sgn([=](auto L) {
                 const auto D = s.D(L);
                 return arith::dot(D, D) + lb(L);
             }) != sign::positive)
             return false;
     }
-    return k.sgn([=](auto L) {
+    return within<open>(k.sgn([=](auto L) {
         const auto m = s.O(L) - arith::lift(L, c);
         const auto D = s.D(L);
         const auto b = arith::dot(m, D);
         return b * b - arith::dot(D, D) * (arith::dot(m, m) - squared(L, r));
-    }) != sign::negative;
+    }));
 }
 
 template <class K, class R>

@@ -31,7 +31,8 @@
 // pass the first goes through point2_polygon2's rounded_parity (the point in double within a
 // proven radius) before the signs. The same
 // engine serves contains(polygon3, segment3 | triangle3) in the projection (polygon_segment.cppm,
-// polygon_triangle.cppm).
+// polygon_triangle.cppm). any_odd_piece (the boundary covered an odd number of times along an
+// edge) serves contains(polygon2, circle2) (contains/circle2_pairs.cppm).
 // Source: Haines, "Point in polygon strategies", Graphics Gems IV (1994), the crossings test.
 // Approximate tier: the same signs in plain double. Error bound: for inputs whose nonzero
 // magnitudes lie in [2^-500, 2^500], wrong only when a deciding sign is within 2^-44 of its
@@ -121,6 +122,59 @@ template <class Edges>
         return false;
     });
     return unclear ? certainty::uncertain : (odd ? certainty::yes : certainty::no);
+}
+
+// The edges along the segment p q (p != q, an edge of g) cover each of its points some number of
+// times, p q itself once. test(u, v) is called for the pieces u v of p q (between consecutive ends
+// of those edges) covered an odd number of times, until it returns true: the boundary that
+// separates odd from even crossing parity (an evenly covered piece separates nothing). Edges along
+// p q: both ends on its line (orientation signs of degree 2) and an overlap beyond one point; a
+// point's place along the line is one of its coordinates (x unless the line is vertical: exact).
+// Only when some other edge lies along p q (never on a simple boundary) are the pieces formed: a
+// scan of the edges per piece end.
+template <class K, class Test>
+[[nodiscard]] constexpr bool any_odd_piece(K& k, const polygon2& g, point2 p, point2 q, const Test& test) {
+    const bool by_x = p.x != q.x;
+    const auto key = [by_x](point2 w) { return by_x ? w.x : w.y; };
+    const point2 first = key(p) < key(q) ? p : q, last = key(p) < key(q) ? q : p;
+    const double lo = key(first), hi = key(last);
+    // f(a, b, ka, kb) for each edge along p q, ka < kb its ends' places, until f returns true
+    const auto along = [&](const auto& f) {
+        return any_edge(g, [&](point2 a, point2 b) {
+            const double ka = key(a) < key(b) ? key(a) : key(b), kb = key(a) < key(b) ? key(b) : key(a);
+            if (!(ka < hi && kb > lo)) return false; // no overlap beyond a point
+            const auto on_line = [&](point2 w) { return k.sgn([=](auto L) { return poly::orient2d(L, p, q, w); }) == sign::zero; };
+            if (!on_line(a) || !on_line(b)) return false;
+            return f(a, b, ka, kb);
+        });
+    };
+    int edges_along = 0;
+    (void)along([&](point2, point2, double, double) { return ++edges_along > 1; });
+    if (edges_along <= 1) return test(p, q);
+    // the piece from the end u (place ku) to the next end: tested when covered an odd number of times
+    const auto piece_from = [&](double ku, point2 u) {
+        double kv = hi;
+        point2 v = last;
+        (void)along([&](point2 a, point2 b, double, double) {
+            const point2 ends[2] = {a, b};
+            for (const point2 w : ends)
+                if (key(w) > ku && key(w) < kv) kv = key(w), v = w;
+            return false;
+        });
+        int cover = 0;
+        (void)along([&](point2, point2, double ka, double kb) {
+            cover += ka <= ku && kb >= kv;
+            return false;
+        });
+        return cover % 2 == 1 && test(u, v);
+    };
+    if (piece_from(lo, first)) return true;
+    return along([&](point2 a, point2 b, double, double) {
+        const point2 ends[2] = {a, b};
+        for (const point2 w : ends)
+            if (key(w) > lo && key(w) < hi && piece_from(key(w), w)) return true;
+        return false;
+    });
 }
 
 // The polygon's point set against the connected shape x: an edge meets x, or p (a point of x)

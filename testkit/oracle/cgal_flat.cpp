@@ -387,6 +387,14 @@ bool flat_holds_ball(const flat& a, const std::array<double, 3>& c, double r_out
     return room >= 0 && ball_meets<K>(a, c, room);
 }
 
+bool segment_in_open_ball(const std::array<double, 3>& a, const std::array<double, 3>& b, const std::array<double, 3>& c, double r) {
+    using K = CGAL::Exact_predicates_exact_constructions_kernel;
+    const K::Point_3 A(a[0], a[1], a[2]), B(b[0], b[1], b[2]), C(c[0], c[1], c[2]);
+    const K::FT R(r);
+    const K::FT d = A == B ? CGAL::squared_distance(C, A) : CGAL::squared_distance(C, K::Segment_3(A, B));
+    return d < R * R;
+}
+
 bool flat_do_intersect_cgal(const flat& a, const flat& b) { return user_meets<CGAL::Exact_predicates_exact_constructions_kernel>(a, b); }
 bool flat_intersect_epick(const flat& a, const flat& b) { return user_meets<CGAL::Exact_predicates_inexact_constructions_kernel>(a, b); }
 

@@ -147,6 +147,9 @@ bool ball_flat_epick(const flat& a, const std::array<double, 3>& c, double r);
 // The ball |x - c| <= |r_inner| within |r_outer| of the flat shape (a capsule's segment): |r_inner|
 // <= |r_outer| and the centre within |r_outer| - |r_inner| of it, the difference exact (Epeck).
 bool flat_holds_ball(const flat& a, const std::array<double, 3>& c, double r_outer, double r_inner);
+// Does the closed segment a b (a = b: a point) come strictly within |r| of c: its squared distance
+// from c (CGAL's squared_distance over Epeck) below r r?
+bool segment_in_open_ball(const std::array<double, 3>& a, const std::array<double, 3>& b, const std::array<double, 3>& c, double r);
 // CGAL's do_intersect itself, also for the ray-ray and line-ray pairs where it is wrong (the
 // fixtures show it).
 bool flat_do_intersect_cgal(const flat& a, const flat& b);
