@@ -72,7 +72,7 @@ template <class K>
         if (!polygon2d::boxes_meet(polygon2d::bounds(v, 2), xb)) return false;
         return enters(p, q) && polygon2d::any_odd_piece(k, g, p, q, enters);
     });
-    return !crossed && polygon2d::inside(k, g, c.center);
+    return !crossed && polygon2d::odd_crossings(k, g, c.center); // the box was tested above
 }
 
 } // namespace incidence::detail
