@@ -143,16 +143,13 @@ template <class K, class Test>
     const auto key = [by_x](point2 w) { return by_x ? w.x : w.y; };
     const point2 first = key(p) < key(q) ? p : q, last = key(p) < key(q) ? q : p;
     const double lo = key(first), hi = key(last);
-    // the other coordinate's range over p q: an edge along p q lies within it
-    const auto other = [by_x](point2 w) { return by_x ? w.y : w.x; };
-    const double olo = other(p) < other(q) ? other(p) : other(q), ohi = other(p) < other(q) ? other(q) : other(p);
+    const box2 pq_box = bounds(segment2{p, q}); // an edge along p q meets it where they overlap
     // f(a, b, ka, kb) for each edge along p q, ka < kb its ends' places, until f returns true
     const auto along = [&](const auto& f) {
         return any_edge(g, [&](point2 a, point2 b) {
             const double ka = key(a) < key(b) ? key(a) : key(b), kb = key(a) < key(b) ? key(b) : key(a);
-            if (!(ka < hi && kb > lo)) return false; // no overlap beyond a point
-            const double oa = other(a) < other(b) ? other(a) : other(b), ob = other(a) < other(b) ? other(b) : other(a);
-            if (ob < olo || oa > ohi) return false; // off p q's box: not on its line where they overlap
+            if (!(ka < hi && kb > lo)) return false;                       // no overlap beyond a point
+            if (!boxes_meet(bounds(segment2{a, b}), pq_box)) return false; // off p q's box: not along p q
             const auto on_line = [&](point2 w) { return k.sgn([=](auto L) { return poly::orient2d(L, p, q, w); }) == sign::zero; };
             if (!on_line(a) || !on_line(b)) return false;
             return f(a, b, ka, kb);
