@@ -3,8 +3,10 @@
 // random and near-degenerate sets (points on the boundary, at a face, an edge or a vertex, inside).
 // The answer each loop checks: whether the point is outside or on the solid (d >= 0), against the
 // exact value of the oracle (testkit/oracle/cgal_distance.cpp); the values themselves are checked in
-// tests/query/distance/.
+// tests/query/distance/. Peers: CGAL Epick (the ball, the capsule, the tetrahedron) and FCL (the
+// capsule, the oriented box), below.
 #include "bench.hpp"
+#include <cmath>
 #include <optional>
 #include <utility>
 
@@ -19,22 +21,35 @@ bool not_inside(const D& d) {
     else return d.hi >= 0.0;
 }
 
+// A set, its answers (the oracle's), and the set's name's tail for the peers' rows.
+template <class S>
+struct distance_set {
+    std::vector<std::pair<S, point3>> cases;
+    std::vector<bool> truth;
+    std::string tail;
+};
+
 template <class S, class Gen>
-void distance_tiers(const std::string& name, bool near, Gen gen, oracle::distance_solid (*solid_of)(const S&)) {
+[[gnu::noinline]] distance_set<S> distance_tiers(const std::string& name, bool near, Gen gen,
+                                                 oracle::distance_solid (*solid_of)(const S&)) {
     support::rng r = set_rng(near);
-    std::vector<std::pair<S, point3>> cs;
-    while (cs.size() < set_size)
-        if (const auto c = gen(r, near)) cs.push_back(*c);
+    distance_set<S> set;
+    while (set.cases.size() < set_size)
+        if (const auto c = gen(r, near)) set.cases.push_back(*c);
     auto truth = [solid_of](const std::pair<S, point3>& c) {
         const auto k = oracle::check_distance(solid_of(c.first), support::a3(c.second), false, 0.0, 0.0, 0.0, 0.0);
         return k.sign >= 0;
     };
+    const std::string dist = near ? "near_degenerate" : "random";
     tiers(
-        name, near ? "near_degenerate" : "random", cs, truth,
+        name, dist, set.cases, truth,
         [](auto tier, const std::pair<S, point3>& c) {
             return not_inside<decltype(tier)>(signed_distance<decltype(tier)>(c.first, c.second));
         },
         "distance");
+    for (const auto& c : set.cases) set.truth.push_back(truth(c));
+    set.tail = "/distance/" + name + "/" + dist;
+    return set;
 }
 
 oracle::distance_solid ball_solid(const sphere3& s) {
@@ -60,25 +75,63 @@ std::optional<std::pair<P, point3>> at_centre(support::rng& r, bool near) {
 
 } // namespace
 
+// The peers: CGAL Epick's squared distances as its users write a signed distance
+// (testkit/oracle/cgal_oracle.cpp), and FCL's distance between a ball of radius 0 and the solid
+// (bench/fcl_peer.cpp: apart, or on or in, for which FCL gives no distance).
 void register_distance(bool near) {
-    distance_tiers<sphere3>(
-        "point_sphere", near,
-        [](support::rng& r, bool n) -> std::optional<std::pair<sphere3, point3>> {
-            const auto c = n ? support::capsule_near<point3>(r) : support::capsule_random<point3>(r);
-            if (!c) return std::nullopt;
-            return std::pair{sphere3{c->first.a, c->first.radius}, c->second};
-        },
-        ball_solid);
-    distance_tiers<capsule3>(
-        "capsule_point", near,
-        [](support::rng& r, bool n) { return n ? support::capsule_near<point3>(r) : support::capsule_random<point3>(r); }, capsule_solid);
+    {
+        const auto set = distance_tiers<sphere3>(
+            "point_sphere", near,
+            [](support::rng& r, bool n) -> std::optional<std::pair<sphere3, point3>> {
+                const auto c = n ? support::capsule_near<point3>(r) : support::capsule_random<point3>(r);
+                if (!c) return std::nullopt;
+                return std::pair{sphere3{c->first.a, c->first.radius}, c->second};
+            },
+            ball_solid);
+        reg("cgal_epick" + set.tail, set.cases, set.truth, check::approximate, [](const std::pair<sphere3, point3>& c) {
+            double o[3], p[3];
+            arr(c.first.center, o), arr(c.second, p);
+            return oracle::capsule_point_distance_epick(o, o, c.first.radius, p) >= 0.0;
+        });
+    }
+    {
+        const auto set = distance_tiers<capsule3>(
+            "capsule_point", near,
+            [](support::rng& r, bool n) { return n ? support::capsule_near<point3>(r) : support::capsule_random<point3>(r); },
+            capsule_solid);
+        reg("cgal_epick" + set.tail, set.cases, set.truth, check::approximate, [](const std::pair<capsule3, point3>& c) {
+            double a[3], b[3], p[3];
+            arr(c.first.a, a), arr(c.first.b, b), arr(c.second, p);
+            return oracle::capsule_point_distance_epick(a, b, c.first.radius, p) >= 0.0;
+        });
+        reg("fcl" + set.tail, set.cases, set.truth, check::approximate, [](const std::pair<capsule3, point3>& c) {
+            double a[3], b[3], p[3];
+            arr(c.first.a, a), arr(c.first.b, b), arr(c.second, p);
+            return fcl_peer::point_apart_capsule(p, a, b, std::fabs(c.first.radius));
+        });
+    }
     distance_tiers<convex_polyhedron3>("convex_polyhedron_point", near, at_centre<convex_polyhedron3>, rows_solid<convex_polyhedron3>);
     distance_tiers<frustum3>("frustum_point", near, at_centre<frustum3>, rows_solid<frustum3>);
     distance_tiers<kdop<6>>("kdop_point_6", near, at_centre<kdop<6>>, rows_solid<kdop<6>>);
     distance_tiers<kdop<14>>("kdop_point_14", near, at_centre<kdop<14>>, rows_solid<kdop<14>>);
     distance_tiers<kdop<26>>("kdop_point_26", near, at_centre<kdop<26>>, rows_solid<kdop<26>>);
-    distance_tiers<tetrahedron3>("point_tetrahedron", near, at_centre<tetrahedron3>, tetrahedron_solid);
-    distance_tiers<obb3>("obb_point", near, at_centre<obb3>, rows_solid<obb3>);
+    {
+        const auto set = distance_tiers<tetrahedron3>("point_tetrahedron", near, at_centre<tetrahedron3>, tetrahedron_solid);
+        reg("cgal_epick" + set.tail, set.cases, set.truth, check::approximate, [](const std::pair<tetrahedron3, point3>& c) {
+            double t[12], p[3];
+            arr(c.first.a, t), arr(c.first.b, t + 3), arr(c.first.c, t + 6), arr(c.first.d, t + 9), arr(c.second, p);
+            return oracle::tetrahedron_point_distance_epick(t, p) >= 0.0;
+        });
+    }
+    {
+        const auto set = distance_tiers<obb3>("obb_point", near, at_centre<obb3>, rows_solid<obb3>);
+        reg("fcl" + set.tail, set.cases, set.truth, check::approximate, [](const std::pair<obb3, point3>& c) {
+            double cb[3], ab[9], hb[3], p[3];
+            obb_arrays(c.first, cb, ab, hb);
+            arr(c.second, p);
+            return fcl_peer::point_apart_obb(p, cb, ab, hb);
+        });
+    }
     {
         // a mesh: the store outlives the view each case holds
         struct mesh_case {

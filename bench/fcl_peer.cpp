@@ -1,5 +1,5 @@
 // FCL 0.7 (Debian libfcl-dev) as a benchmark peer: fcl::OBB<double>::overlap,
-// fcl::detail::sphereBoxIntersect, sphereCapsuleIntersect, capsuleCapsuleDistance, GJKSolver_libccd and fcl::detail::Intersect<double>::intersect_Triangle, called as FCL's users call them.
+// fcl::detail::sphereBoxIntersect, sphereBoxDistance, sphereCapsuleIntersect, sphereCapsuleDistance, capsuleCapsuleDistance, GJKSolver_libccd and fcl::detail::Intersect<double>::intersect_Triangle, called as FCL's users call them.
 #include "fcl_peer.hpp"
 
 #include <fcl/geometry/bvh/BVH_model.h>
@@ -74,6 +74,20 @@ bool capsule_obb(const double a[3], const double b[3], double r, const double cb
     const posed_capsule k = capsule(a, b, r);
     const fcl::detail::GJKSolver_libccd<double> solver;
     return solver.shapeIntersect(k.shape, k.pose, fcl::Box<double>(2 * hb[0], 2 * hb[1], 2 * hb[2]), box_pose(cb, ab), nullptr);
+}
+bool point_apart_obb(const double p[3], const double cb[3], const double ab[9], const double hb[3]) {
+    fcl::Transform3<double> at = fcl::Transform3<double>::Identity();
+    at.translation() = v(p);
+    double dist = 0;
+    return fcl::detail::sphereBoxDistance<double>(fcl::Sphere<double>(0.0), at, fcl::Box<double>(2 * hb[0], 2 * hb[1], 2 * hb[2]),
+                                                  box_pose(cb, ab), &dist, nullptr, nullptr);
+}
+bool point_apart_capsule(const double p[3], const double a[3], const double b[3], double r) {
+    const posed_capsule k = capsule(a, b, r);
+    fcl::Transform3<double> at = fcl::Transform3<double>::Identity();
+    at.translation() = v(p);
+    double dist = 0;
+    return fcl::detail::sphereCapsuleDistance<double>(fcl::Sphere<double>(0.0), at, k.shape, k.pose, &dist, nullptr, nullptr);
 }
 bool triangle_triangle(const double p1[3], const double p2[3], const double p3[3], const double q1[3], const double q2[3],
                        const double q3[3]) {

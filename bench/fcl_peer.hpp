@@ -19,6 +19,12 @@ bool sphere_obb(const double c[3], double r, const double cb[3], const double ab
 bool capsule_sphere(const double a[3], const double b[3], double r, const double c[3], double rs);
 bool capsule_capsule(const double a1[3], const double b1[3], double r1, const double a2[3], const double b2[3], double r2);
 bool capsule_obb(const double a[3], const double b[3], double r, const double cb[3], const double ab[9], const double hb[3]);
+// Is point p apart from a box (as above) or a capsule, as FCL's distance API answers it:
+// fcl::detail::sphereBoxDistance and sphereCapsuleDistance with a ball of radius 0 at p, true when
+// they report a distance (> 0). FCL gives no distance for a point on or in the solid, so a point on
+// the boundary is not apart here, where the signed distance is 0.
+bool point_apart_obb(const double p[3], const double cb[3], const double ab[9], const double hb[3]);
+bool point_apart_capsule(const double p[3], const double a[3], const double b[3], double r);
 bool triangle_triangle(const double p1[3], const double p2[3], const double p3[3], const double q1[3], const double q2[3],
                        const double q3[3]);
 

@@ -8,6 +8,7 @@
 #include <CGAL/Min_sphere_of_spheres_d.h>
 #include <CGAL/Min_sphere_of_spheres_d_traits_3.h>
 #include <vector>
+#include <algorithm>
 #include <CGAL/intersections.h>
 #include <CGAL/squared_distance_3.h>
 #include <cmath>
@@ -523,6 +524,23 @@ bool point_in_box_epick(const double p[3], const double mn[3], const double mx[3
 }
 int orient3d_epick(const double a[3], const double b[3], const double c[3], const double d[3]) {
     return -sgn(CGAL::orientation(P<KI>(a), P<KI>(b), P<KI>(c), P<KI>(d)));
+}
+double capsule_point_distance_epick(const double a[3], const double b[3], double r, const double p[3]) {
+    const KI::Point_3 x = P<KI>(p), u = P<KI>(a), w = P<KI>(b);
+    const double d2 = u == w ? CGAL::squared_distance(x, u) : CGAL::squared_distance(x, KI::Segment_3(u, w));
+    return std::sqrt(d2) - std::fabs(r);
+}
+double tetrahedron_point_distance_epick(const double t[12], const double p[3]) {
+    const KI::Point_3 x = P<KI>(p), v[4] = {P<KI>(t), P<KI>(t + 3), P<KI>(t + 6), P<KI>(t + 9)};
+    const KI::Tetrahedron_3 tet(v[0], v[1], v[2], v[3]);
+    if (const double d2 = CGAL::squared_distance(x, tet); d2 > 0.0) return std::sqrt(d2);
+    if (tet.is_degenerate() || !tet.has_on_bounded_side(x)) return 0.0;
+    double d2 = CGAL::squared_distance(x, KI::Triangle_3(v[1], v[2], v[3]));
+    for (int i = 0; i < 3; ++i) { // the faces opposite v[1], v[2], v[3]
+        const KI::Triangle_3 f(v[0], v[(i + 2) % 3 + 1], v[(i + 1) % 3 + 1]);
+        d2 = std::min(d2, CGAL::squared_distance(x, f));
+    }
+    return -std::sqrt(d2);
 }
 
 } // namespace oracle

@@ -303,6 +303,14 @@ bool triangle_triangle_epick(const double a[3], const double b[3], const double 
 bool box_box_epick(const double amn[3], const double amx[3], const double bmn[3], const double bmx[3]);
 bool point_in_box_epick(const double p[3], const double mn[3], const double mx[3]);
 int orient3d_epick(const double a[3], const double b[3], const double c[3], const double d[3]);
+// The signed distance from point p to a capsule (segment ab, radius r; a ball when a = b) or a solid
+// tetrahedron (t: its four vertices as x y z), as a CGAL Epick user computes it:
+// sqrt(squared_distance(Point_3, Segment_3 | Point_3)) - |r|; outside the tetrahedron
+// sqrt(squared_distance(Point_3, Tetrahedron_3)) (0 on or in it), inside minus the least
+// sqrt(squared_distance(Point_3, Triangle_3)) over its faces (0 for a flat one). Rounded: double
+// constructions.
+double capsule_point_distance_epick(const double a[3], const double b[3], double r, const double p[3]);
+double tetrahedron_point_distance_epick(const double t[12], const double p[3]);
 
 // The exact values of intersection() (cgal_values.cpp): where a line, a ray or a segment (o and d:
 // a ray's or line's origin and direction, a segment's end points) meets a set, over Epeck by other
