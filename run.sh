@@ -6,7 +6,9 @@
 #                   benchmark smoke, audit output and report in Chromium), then the ASan+UBSan
 #                   build: its tests, and each fuzzer's corpus replay and a fixed-time run
 # and ./run.sh demo: the tiers on touching cases + a speed table, in the terminal; ./run.sh bench
-# [benchmark flags]: the optimised benchmarks, a table in the terminal and every timing in bench.json.
+# [benchmark flags]: the optimised benchmarks, a table in the terminal and every timing in bench.json;
+# ./run.sh oracle [scale] [Catch2 test spec]: the oracle tests with their case counts times the scale
+# (default 20), one test program after another, each log in build/oracle-runs.
 # All install what is missing first (Debian bookworm + bookworm-backports) and skip what is there.
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -120,8 +122,31 @@ test)
     echo "== all suites passed in $(( $(date +%s) - start )) s"
     echo "$total_passed passed, $total_failed failed"
     ;;
+oracle)
+    # The oracle tests with more cases than the suite's: every release test program's tests that
+    # match the Catch2 spec (default: tagged [oracle]), each case count times the scale (default 20).
+    setup
+    data
+    build release
+    scale=${2:-20}
+    spec=${3:-[oracle]}
+    start=$(date +%s)
+    failed=()
+    mkdir -p build/oracle-runs
+    for t in build/release/tests/test_*; do
+        [ -f "$t" ] && [ -x "$t" ] || continue
+        "$t" --list-tests "$spec" | grep -q "^0 matching test cases" && continue
+        log="build/oracle-runs/$(basename "$t").log" t0=$(date +%s) rc=0
+        INCIDENCE_CASES_SCALE=$scale "$t" "$spec" --skip-benchmarks >"$log" 2>&1 || rc=$?
+        grep -E "\[cases\]" "$log" || true
+        echo "== $(basename "$t"): exit $rc in $(( $(date +%s) - t0 )) s (log: $log)"
+        [ $rc -eq 0 ] || failed+=("$(basename "$t")")
+    done
+    echo "== oracle tests at scale $scale done in $(( $(date +%s) - start )) s; failed: ${failed[*]:-none}"
+    [ ${#failed[@]} -eq 0 ]
+    ;;
 *)
-    echo "usage: $0 audit | test | demo | bench [benchmark flags]" >&2
+    echo "usage: $0 audit | test | demo | bench [benchmark flags] | oracle [scale] [Catch2 test spec]" >&2
     exit 2
     ;;
 esac
