@@ -9,7 +9,7 @@
 // ray_spheres beside <tier>/scalar_loop_intersection/...); boxes against a frustum (frustum_aabbs, and the classic culling test's
 // loop, approximate/method_culling_loop/frustum_aabbs) and oriented boxes against it
 // (frustum_obbs) and balls (frustum_spheres, and the classic test's loop); oriented boxes against
-// one box (aabb_obbs). The triangles in every tier,
+// one box or one ball (aabb_obbs, sphere_obbs). The triangles in every tier,
 // beside the loop over the scalar query that it replaces, on each SIMD target the processor has:
 //   <tier>/batch_intersects/ray_triangles/<dist>              the dispatched (best) target
 //   <tier>/batch_intersects/ray_triangles_<TARGET>/<dist>     one target (AVX3 = AVX-512, AVX2, SSE4)
@@ -758,6 +758,7 @@ void register_batch(bool near) {
     reg_culling_method<sphere3>("approximate/method_culling_loop/frustum_spheres/" + dist, balls,
                                 [](const frustum3& f, const sphere3& b) { return method::frustum_sphere_planes(f, b); });
     reg_one_many_tiers("aabb_obbs", dist, obbs_of(solids_set<aabb3, aabb3>(near), !near));
+    reg_one_many_tiers("sphere_obbs", dist, obbs_of(solids_set<sphere3, aabb3>(near), !near));
 }
 
 } // namespace bench

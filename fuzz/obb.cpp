@@ -17,8 +17,9 @@
 // (an oriented box's containment: its corners in exact rationals). And the culling batch: ten
 // boxes from the doubles against the frustum (batches.hpp: every lane the scalar answer in every
 // tier, on a SIMD target byte 0 picks), and six oriented boxes (byte 1 picks the target and one
-// tier), and the six against the box p q or its ordered copy (byte 3; byte 2 picks the target and
-// one tier). Any finding aborts.
+// tier), the six against the box p q or its ordered copy (byte 3; byte 2 picks the target and one
+// tier), and the six against a ball (byte 4; byte 5 picks the target and one tier). Any finding
+// aborts.
 #include "testkit/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <array>
@@ -206,6 +207,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         batch_contracts_one_tier(fr, std::span<const obb3>(obbs), size < 2 ? 0 : data[1]);
         // the same against one box: box (maybe inverted) or p q ordered, byte 3 says which
         batch_contracts_one_tier(size < 4 || data[3] % 2 == 0 ? box : boxes[8], std::span<const obb3>(obbs), size < 3 ? 0 : data[2]);
+        // and against one ball: centre c and radius v[9], or centre p and radius v[10] (byte 4 says
+        // which; byte 5 picks the target and one tier)
+        const sphere3 ball = size < 5 || data[4] % 2 == 0 ? sphere3{c, v[9]} : sphere3{p, v[10]};
+        batch_contracts_one_tier(ball, std::span<const obb3>(obbs), size < 6 ? 0 : data[5]);
         (void)method::frustum_obb_sat(fr, o);
         (void)method::frustum_obb_decomposition(fr, o);
         // two half-space sets: a second polyhedron of 1 to 6 planes from other doubles (byte 2)

@@ -1,6 +1,6 @@
 // Many boxes or balls against one box or one ball: batch::intersects<Tier>(one, many, out) for one
 // and many among aabb3 and sphere3 (the broad phase's and the culling's tests), and many oriented
-// boxes against one box, for many as an array of shapes or as a structure-of-arrays packet
+// boxes against one box or one ball, for many as an array of shapes or as a structure-of-arrays packet
 // (boxes_soa, spheres_soa, obbs_soa). out[i] is 1 where many[i] meets the closed box or ball
 // `one`, else 0: the answer of the scalar intersects<Tier>(one, many[i]), bit for bit, in every
 // tier (tests/batch/solids.cpp checks it on every SIMD target).
@@ -15,6 +15,10 @@
 // for the approximate tier and against the scalar's static bounds per axis family, taken over a
 // block of 64 lanes, in the filtered tiers; a lane they leave open (touching or flat boxes) goes
 // to the scalar query.
+// Oriented boxes against a ball (ball_obbs_simd.cpp): the scalar query's first look
+// (ball_obb::first_look: slabs along the coordinate axes and the box's axes, and the box's centre
+// in the ball; degrees 2 and 3), in plain double for the approximate tier and in the filtered tiers
+// against each lane's own bound, the scalar's; a lane it leaves open goes to the scalar query.
 module;
 #include <array>
 #include <cstddef>
@@ -41,6 +45,8 @@ void ball_balls(const double* const* ball, const double* const* balls, std::size
 // obbs: fifteen arrays of n (centre x, y, z, axis 0 x, y, z, axis 1, axis 2, half extents 0, 1,
 // 2); gammas: the scalar filter's five (box_obb_gammas), or null for the approximate tier.
 void box_obbs(const double* const* box, const double* const* obbs, std::size_t n, const double* gammas, std::uint8_t* out);
+// ball: four values (centre, radius); gammas: the scalar filter's three (ball_obb_gammas), or null.
+void ball_obbs(const double* const* ball, const double* const* obbs, std::size_t n, const double* gammas, std::uint8_t* out);
 } // namespace incidence::batch::simd
 }
 
@@ -118,6 +124,17 @@ inline constexpr std::array<double, 5> box_obb_gammas = [] {
     return g;
 }();
 
+// The scalar filter's gamma for ball_obb::first_look's three values (the coordinate slabs, the
+// box's centre in the ball, the box-axis slabs), read off the expressions' own operation counts.
+inline constexpr std::array<double, 3> ball_obb_gammas = [] {
+    namespace ball_obb = incidence::detail::ball_obb;
+    const ball_obb::frame f{{0, 0, 0}, {0, 0, 0}, {vec3{1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1}}, {1, 1, 1}, 1};
+    const arith::lift_filter l{};
+    auto gamma = []<int N>(const arith::filtered<N>&) { return arith::error_bound(arith::filtered<N>{0.0, 1.0}); };
+    return std::array<double, 3>{gamma(ball_obb::look_coordinate(l, f, 0)), gamma(ball_obb::look_centre(l, f)),
+                                 gamma(ball_obb::look_box_axis(l, f, 0))};
+}();
+
 // n lanes of `Many` (its fields' arrays) against `one`: the kernel of the tier, then the scalar
 // query where the filter left a lane open. The number of lanes met.
 template <tier Tier, class One, class Many, class At>
@@ -125,7 +142,9 @@ std::size_t solids_block(const One& one, const double* const* many, std::size_t 
     const one_fields<One> fields(one);
     constexpr bool filter = !std::is_same_v<Tier, approximate>;
     if constexpr (std::is_same_v<One, aabb3> && std::is_same_v<Many, aabb3>) simd::box_boxes(fields.p, many, n, out);
-    else if constexpr (std::is_same_v<Many, obb3>) simd::box_obbs(fields.p, many, n, filter ? box_obb_gammas.data() : nullptr, out);
+    else if constexpr (std::is_same_v<One, aabb3> && std::is_same_v<Many, obb3>)
+        simd::box_obbs(fields.p, many, n, filter ? box_obb_gammas.data() : nullptr, out);
+    else if constexpr (std::is_same_v<Many, obb3>) simd::ball_obbs(fields.p, many, n, filter ? ball_obb_gammas.data() : nullptr, out);
     else if constexpr (std::is_same_v<One, aabb3>) simd::box_balls(fields.p, many, false, n, filter, out);
     else if constexpr (std::is_same_v<Many, aabb3>) simd::box_balls(many, fields.p, true, n, filter, out);
     else simd::ball_balls(fields.p, many, n, filter, out);
@@ -184,6 +203,10 @@ template <tier Tier = exact>
     return detail::solids<Tier>(one, many, out);
 }
 template <tier Tier = exact>
+[[nodiscard]] result<std::size_t> intersects(const sphere3& one, std::span<const obb3> many, std::span<std::uint8_t> out) {
+    return detail::solids<Tier>(one, many, out);
+}
+template <tier Tier = exact>
 [[nodiscard]] result<std::size_t> intersects(const aabb3& one, const boxes_soa& many, std::span<std::uint8_t> out) {
     return detail::solids<Tier>(one, many, out);
 }
@@ -201,6 +224,10 @@ template <tier Tier = exact>
 }
 template <tier Tier = exact>
 [[nodiscard]] result<std::size_t> intersects(const sphere3& one, const spheres_soa& many, std::span<std::uint8_t> out) {
+    return detail::solids<Tier>(one, many, out);
+}
+template <tier Tier = exact>
+[[nodiscard]] result<std::size_t> intersects(const sphere3& one, const obbs_soa& many, std::span<std::uint8_t> out) {
     return detail::solids<Tier>(one, many, out);
 }
 

@@ -19,8 +19,10 @@
 //                       then r^2 |n|^2 - (n . w)^2 >= 0 decides (degree 8).
 //   all free (inside):  det A != 0; |(a_k x a_l) . (c - o)| <= h_j |det A| for each j (degree 4,
 //                       as contains(obb3, point3)): yes.
-// Every value is times a lifted 1 where its degree needs it, so each sign is homogeneous. The set
-// that plain double names (the centre's clamped coordinates) is tried first, then all 27.
+// Every value is times a lifted 1 where its degree needs it, so each sign is homogeneous. A first
+// look (first_look below: slabs along the coordinate axes and the box's axes, and the box's centre
+// in the ball) settles most pairs before any set is tried. Then the set that plain double names
+// (the centre's clamped coordinates) is tried first, then all 27.
 // Source: Ericson, Real-Time Collision Detection (2005), sections 5.1.4 (closest point on an OBB)
 // and 5.2.5 (sphere against box); Boyd and Vandenberghe, Convex Optimization (2004), section
 // 5.5.3 (KKT conditions).
@@ -29,6 +31,7 @@
 // permanent (tests/query/intersects/obb_sphere.cpp).
 module;
 #include <array>
+#include <optional>
 #include <type_traits>
 #include <utility>
 export module incidence.detail:engines.ball_obb;
@@ -36,6 +39,7 @@ import incidence.core;
 import incidence.arith;
 import incidence.shapes;
 import :engines.separating_axes;
+import :engines.sphere;
 
 export namespace incidence::detail {
 
@@ -240,6 +244,56 @@ template <class K>
     return {false, first};
 }
 
+// The first look, before the box coordinates: three kinds of sign that settle most pairs of a broad
+// phase or a culling pass at once, each deciding only where it is proven positive (a value
+// returned here; the batch of oriented boxes against one ball, modules/batch/ball_obbs_simd.cpp,
+// evaluates the same values in lanes and relies on their form):
+//   coordinate axis m: |c_m - o_m| 1 - ((h_0 |a_0m| + h_1 |a_1m|) + h_2 |a_2m|) - |r| 1 > 0: no,
+//     since the box lies within o_m +- the sum (degree 2);
+//   centre:            r r - |o - c|^2 > 0: yes, the box's centre is in the ball (degree 2);
+//   box axis j:        |a_j . (c - o)| 1 - ((h_0 |a_j . a_0| + h_1 |a_j . a_1|) + h_2 |a_j . a_2|)
+//                      - |r| ((|a_jx| + |a_jy|) + |a_jz|) 1 > 0: no, since along a_j the box spans
+//                      a_j . o +- the h sum and the ball a_j . c +- |r| |a_j| (degree 3).
+// Source: Ericson, Real-Time Collision Detection (2005), section 5.2.1 (separating-axis test).
+[[nodiscard]] constexpr double component(const vec3& v, unsigned m) { return m == 0 ? v.x : (m == 1 ? v.y : v.z); }
+[[nodiscard]] constexpr double component(const point3& p, unsigned m) { return m == 0 ? p.x : (m == 1 ? p.y : p.z); }
+
+template <class L>
+[[nodiscard]] constexpr auto look_coordinate(L l, const frame& f, unsigned m) {
+    const double h0 = f.h[0], h1 = f.h[1], h2 = f.h[2];
+    const auto reach = (l(h0) * l(ball::magnitude(component(f.a[0], m))) + l(h1) * l(ball::magnitude(component(f.a[1], m)))) +
+                       l(h2) * l(ball::magnitude(component(f.a[2], m)));
+    return sat::magnitude(l(component(f.c, m)) - l(component(f.o, m))) * l(1.0) - reach - l(ball::magnitude(f.r)) * l(1.0);
+}
+template <class L>
+[[nodiscard]] constexpr auto look_centre(L l, const frame& f) {
+    const auto g = arith::lift(l, f.o) - arith::lift(l, f.c);
+    return l(f.r) * l(f.r) - arith::dot(g, g);
+}
+template <class L>
+[[nodiscard]] constexpr auto look_box_axis(L l, const frame& f, unsigned j) {
+    const auto aj = arith::lift(l, f.a[j]);
+    const auto reach = (l(f.h[0]) * sat::magnitude(arith::dot(aj, arith::lift(l, f.a[0]))) +
+                        l(f.h[1]) * sat::magnitude(arith::dot(aj, arith::lift(l, f.a[1])))) +
+                       l(f.h[2]) * sat::magnitude(arith::dot(aj, arith::lift(l, f.a[2])));
+    const vec3 a = f.a[j];
+    const auto norm1 = (l(ball::magnitude(a.x)) + l(ball::magnitude(a.y))) + l(ball::magnitude(a.z));
+    return sat::magnitude(arith::dot(aj, arith::lift(l, f.c) - arith::lift(l, f.o))) * l(1.0) - reach -
+           l(ball::magnitude(f.r)) * norm1 * l(1.0);
+}
+
+// The first look's verdict: no, yes, or nothing where no sign of it is proven positive (its signs
+// are hint::optional: an unproven one fails no pass).
+template <class K>
+[[nodiscard]] constexpr std::optional<bool> first_look(K& k, const frame& f) {
+    for (unsigned m = 0; m < 3; ++m)
+        if (arith::sgn<arith::hint::optional>(k, [=](auto L) { return look_coordinate(L, f, m); }) == sign::positive) return false;
+    if (arith::sgn<arith::hint::optional>(k, [=](auto L) { return look_centre(L, f); }) == sign::positive) return true;
+    for (unsigned j = 0; j < 3; ++j)
+        if (arith::sgn<arith::hint::optional>(k, [=](auto L) { return look_box_axis(L, f, j); }) == sign::positive) return false;
+    return std::nullopt;
+}
+
 // (o - p) 1 + sum f_j a_j: the box's corner of signed extents f, less p (degree 2).
 template <class L>
 [[nodiscard]] constexpr auto corner_less(L l, const obb3& box, const double (&f)[3], point3 p) {
@@ -253,6 +307,7 @@ template <class K>
 [[nodiscard]] constexpr bool meets(K& k, const obb3& b, const sphere3& s) {
     const frame f{
         b.center, s.center, {b.axes[0], b.axes[1], b.axes[2]}, {b.half_extents[0], b.half_extents[1], b.half_extents[2]}, s.radius};
+    if (const std::optional<bool> seen = first_look(k, f)) return *seen;
     const auto [any, at] = minimiser(k, f);
     if (any) return within(k, f, at);
     const active first = at;

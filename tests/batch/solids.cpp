@@ -1,9 +1,10 @@
 // batch::intersects(one, many) for one and many among aabb3 and sphere3, and for oriented boxes
-// against one box: on every SIMD target this processor has, each lane's answer equals the scalar
+// against one box or one ball: on every SIMD target this processor has, each lane's answer equals the scalar
 // intersects<Tier>(one, many[i]) in all four tiers, for the array and the structure-of-arrays entry
 // points, on random shapes, on shapes that touch exactly (boxes sharing a face, an edge or a
 // corner; balls touching a box's face, edge or corner, from Pythagorean triples and quadruples;
-// tangent balls; oriented boxes through a point of the box's boundary, flat ones among them) and a
+// tangent balls; oriented boxes through a point of the box's boundary or of the ball's sphere,
+// flat ones among them) and a
 // few ulps off, at scales 2^-500..2^500, and on special values (NaN, infinities, inverted boxes,
 // negative radii and extents). The exact lanes that touch are checked against the known truth
 // (touching meets).
@@ -310,6 +311,72 @@ obb_set special_obb_set(support::rng& r) {
     return s;
 }
 
+// Oriented boxes against one ball: the ball of centre 0 and radius 9 (moved by a few integers), and
+// - random (kind 0): oriented boxes as make_obb_set's random ones;
+// - touching (kinds 1, 2): support::near_obb boxes placed so that a corner, edge or face point of
+//   theirs lies on a point s of the sphere with integer coordinates (|s| = 9: (1, 4, 8), (4, 4, 7),
+//   (0, 0, 9) signed and permuted), turned through s where their centre would lie in the ball, so
+//   that most of the box is outside: they meet, exactly (known[i] = 1), unless a third of them
+//   turned by a random rotation instead or a quarter moved a few ulps;
+// the whole set at 2^k for a third of the sets.
+struct ball_obb_set {
+    sphere3 ball;
+    std::vector<obb3> obbs;
+    std::vector<int> touching;
+};
+ball_obb_set make_ball_obb_set(support::rng& r, int kind) {
+    ball_obb_set s;
+    const point3 centre{double(r.integer(-3, 3)), double(r.integer(-3, 3)), double(r.integer(-3, 3))};
+    s.ball = sphere3{centre, 9};
+    const obb_set random = make_obb_set(r, 0);
+    for (std::size_t i = 0; i < random.obbs.size(); ++i) {
+        if (kind == 0) {
+            s.obbs.push_back(random.obbs[i]);
+            s.touching.push_back(0);
+            continue;
+        }
+        const int base[3][3] = {{1, 4, 8}, {4, 4, 7}, {0, 0, 9}};
+        const int* b = base[r.integer(0, 2)];
+        int perm[3] = {0, 1, 2};
+        for (int j = 2; j > 0; --j) std::swap(perm[j], perm[r.integer(0, j)]);
+        const vec3 dir{(r.coin() ? -1.0 : 1.0) * b[perm[0]], (r.coin() ? -1.0 : 1.0) * b[perm[1]], (r.coin() ? -1.0 : 1.0) * b[perm[2]]};
+        const point3 on = centre + dir;
+        obb3 box = support::near_obb(r);
+        for (double& h : box.half_extents) h *= 2;
+        const bool turned = r.integer(0, 2) == 0;
+        if (turned) box.axes = support::random_frame(r);
+        box.center = on + (box.center - support::boundary_point(r, box, true));
+        const vec3 in = box.center - centre;
+        if (dot(in, in) < 81) box.center = on + (on - box.center); // the box turned through s
+        int known = turned ? 0 : 1;
+        if (r.integer(0, 3) == 0) {
+            box.center = {support::nudge(box.center.x, r.integer(-3, 3)), support::nudge(box.center.y, r.integer(-3, 3)), box.center.z};
+            known = 0;
+        }
+        s.obbs.push_back(box);
+        s.touching.push_back(known);
+    }
+    if (r.integer(0, 2) == 0) {
+        const int k = r.integer(-500, 500);
+        s.ball = audit::scaled(s.ball, k);
+        for (obb3& b : s.obbs) b = audit::scaled(b, k);
+    }
+    return s;
+}
+// The same sets with special numbers in a field of the ball or of a box, or a negative extent.
+ball_obb_set special_ball_obb_set(support::rng& r) {
+    auto pick = [&] { return support::special_or_uniform(r); };
+    ball_obb_set s = make_ball_obb_set(r, r.integer(0, 1));
+    const obb_set special = special_obb_set(r);
+    for (std::size_t i = 0; i < s.obbs.size() && i < special.obbs.size(); ++i)
+        if (r.coin()) s.obbs[i] = special.obbs[i], s.touching[i] = 0;
+    if (r.integer(0, 3) == 0) {
+        s.ball = r.coin() ? sphere3{{pick(), pick(), pick()}, pick()} : sphere3{s.ball.center, -s.ball.radius};
+        for (int& t : s.touching) t = 0;
+    }
+    return s;
+}
+
 template <class Make>
 void obbs_on_every_target(const char* name, long sets, Make make) {
     counts c[4];
@@ -346,6 +413,32 @@ TEST_CASE("batch solids: oriented boxes, every lane is the scalar answer, specia
     obbs_on_every_target("special", support::cases(100), [](support::rng& r, int) { return special_obb_set(r); });
 }
 
+template <class Make>
+void ball_obbs_on_every_target(const char* name, long sets, Make make) {
+    counts c[4];
+    const int targets = support::on_every_target(name, [&](support::rng& r, const std::string& where, const char*) {
+        for (long k = 0; k < sets; ++k) {
+            const ball_obb_set s = make(r, static_cast<int>(k % 3));
+            every_tier(s.ball, s.obbs, s.touching, 1, c, where + ", ball against oriented boxes");
+        }
+    });
+    std::printf("[cases] batch solids %s, ball-obbs: %d SIMD targets, %ld lanes per tier (%ld uncertain to the scalar filter); lanes "
+                "unlike the scalar answer %ld %ld %ld %ld (exact, conservative, aggressive, approximate); exact touching lanes not met: "
+                "%ld\n",
+                name, targets, c[0].lanes, c[0].uncertain, c[0].wrong, c[1].wrong, c[2].wrong, c[3].wrong, c[0].touching_wrong);
+    CHECK(targets >= 2);
+    for (const counts& x : c) CHECK(x.wrong == 0);
+    CHECK(c[0].touching_wrong == 0);
+}
+
+TEST_CASE("batch solids: oriented boxes against a ball, every lane is the scalar answer, random and touching, every target", "[batch]") {
+    ball_obbs_on_every_target("random and touching", support::cases(100), make_ball_obb_set);
+}
+
+TEST_CASE("batch solids: oriented boxes against a ball, every lane is the scalar answer, special values, every target", "[batch]") {
+    ball_obbs_on_every_target("special", support::cases(100), [](support::rng& r, int) { return special_ball_obb_set(r); });
+}
+
 TEST_CASE("batch solids: touching lanes are counted", "[batch]") {
     // the touching cases are not vacuous: most lanes of a touching set are known to touch
     support::rng r(support::seed());
@@ -363,6 +456,13 @@ TEST_CASE("batch solids: touching lanes are counted", "[batch]") {
     }
     std::printf("[cases] batch solids: %ld of %ld oriented boxes of the touching sets meet the box exactly\n", obb_known, obb_lanes);
     CHECK(obb_known * 3 > obb_lanes);
+    long ball_known = 0, ball_lanes = 0;
+    for (int k = 0; k < 20; ++k) {
+        const ball_obb_set s = make_ball_obb_set(r, 1);
+        for (const int t : s.touching) ball_known += t, ++ball_lanes;
+    }
+    std::printf("[cases] batch solids: %ld of %ld oriented boxes of the touching sets meet the ball exactly\n", ball_known, ball_lanes);
+    CHECK(ball_known * 3 > ball_lanes);
 }
 
 TEST_CASE("batch solids: sizes", "[batch]") {
@@ -392,6 +492,13 @@ TEST_CASE("batch solids: sizes", "[batch]") {
         aabb3{{1, 1, 1}, {2, 2, 2}}, batch::obbs_soa{x, x, x, x, x, x, x, x, x, x, x, x, x, x, y}, std::span<std::uint8_t>(out.data(), 2));
     REQUIRE(bad_obbs.has_error());
     CHECK(bad_obbs.error().code == errc::size_mismatch);
+    const auto ball_obbs = batch::intersects<exact>(sphere3{{2, 0, 0}, 1}, std::span<const obb3>(obbs), out);
+    REQUIRE(ball_obbs.has_value());
+    CHECK(ball_obbs.value() == 3); // touching the face x = 1
+    const auto bad_ball_obbs = batch::intersects<exact>(sphere3{{2, 0, 0}, 1}, batch::obbs_soa{x, x, x, x, x, x, x, x, x, x, x, x, x, x, y},
+                                                        std::span<std::uint8_t>(out.data(), 2));
+    REQUIRE(bad_ball_obbs.has_error());
+    CHECK(bad_ball_obbs.error().code == errc::size_mismatch);
 }
 
 } // namespace test_batch_solids
