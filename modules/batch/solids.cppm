@@ -16,9 +16,11 @@
 // block of 64 lanes, in the filtered tiers; a lane they leave open (touching or flat boxes) goes
 // to the scalar query.
 // Oriented boxes against a ball (ball_obbs_simd.cpp): the scalar query's first look
-// (ball_obb::first_look: slabs along the coordinate axes and the box's axes, and the box's centre
-// in the ball; degrees 2 and 3), in plain double for the approximate tier and in the filtered tiers
-// against each lane's own bound, the scalar's; a lane it leaves open goes to the scalar query.
+// (ball_obb::first_look: slabs along the coordinate axes and the box's axes, the box's centre in
+// the ball, the box's point of the ball centre's clamped coordinates in the ball, a slab along
+// the direction from that point to the centre; degrees 2 to 6), in plain double for the
+// approximate tier and in the filtered tiers against each lane's own bound, the scalar's; a lane it
+// leaves open goes to the scalar query.
 module;
 #include <array>
 #include <cstddef>
@@ -45,7 +47,7 @@ void ball_balls(const double* const* ball, const double* const* balls, std::size
 // obbs: fifteen arrays of n (centre x, y, z, axis 0 x, y, z, axis 1, axis 2, half extents 0, 1,
 // 2); gammas: the scalar filter's five (box_obb_gammas), or null for the approximate tier.
 void box_obbs(const double* const* box, const double* const* obbs, std::size_t n, const double* gammas, std::uint8_t* out);
-// ball: four values (centre, radius); gammas: the scalar filter's three (ball_obb_gammas), or null.
+// ball: four values (centre, radius); gammas: the scalar filter's six (ball_obb_gammas), or null.
 void ball_obbs(const double* const* ball, const double* const* obbs, std::size_t n, const double* gammas, std::uint8_t* out);
 } // namespace incidence::batch::simd
 }
@@ -124,15 +126,19 @@ inline constexpr std::array<double, 5> box_obb_gammas = [] {
     return g;
 }();
 
-// The scalar filter's gamma for ball_obb::first_look's three values (the coordinate slabs, the
-// box's centre in the ball, the box-axis slabs), read off the expressions' own operation counts.
-inline constexpr std::array<double, 3> ball_obb_gammas = [] {
+// The scalar filter's gamma for ball_obb::first_look's six values (the coordinate slabs, the box's
+// centre in the ball, the box-axis slabs, the box's clamped point in the ball, the gap along the
+// direction from that point to c and its square against the radius's), read off the expressions'
+// own operation counts.
+inline constexpr std::array<double, 6> ball_obb_gammas = [] {
     namespace ball_obb = incidence::detail::ball_obb;
     const ball_obb::frame f{{0, 0, 0}, {0, 0, 0}, {vec3{1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1}}, {1, 1, 1}, 1};
     const arith::lift_filter l{};
     auto gamma = []<int N>(const arith::filtered<N>&) { return arith::error_bound(arith::filtered<N>{0.0, 1.0}); };
-    return std::array<double, 3>{gamma(ball_obb::look_coordinate(l, f, 0)), gamma(ball_obb::look_centre(l, f)),
-                                 gamma(ball_obb::look_box_axis(l, f, 0))};
+    const vec3 d{1, 1, 1};
+    return std::array<double, 6>{gamma(ball_obb::look_coordinate(l, f, 0)), gamma(ball_obb::look_centre(l, f)),
+                                 gamma(ball_obb::look_box_axis(l, f, 0)),   gamma(ball_obb::look_clamped(l, f, {1, 1, 1})),
+                                 gamma(ball_obb::look_apart_gap(l, f, d)),  gamma(ball_obb::look_apart(l, f, d))};
 }();
 
 // n lanes of `Many` (its fields' arrays) against `one`: the kernel of the tier, then the scalar

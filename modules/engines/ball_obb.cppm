@@ -20,9 +20,10 @@
 //   all free (inside):  det A != 0; |(a_k x a_l) . (c - o)| <= h_j |det A| for each j (degree 4,
 //                       as contains(obb3, point3)): yes.
 // Every value is times a lifted 1 where its degree needs it, so each sign is homogeneous. A first
-// look (first_look below: slabs along the coordinate axes and the box's axes, and the box's centre
-// in the ball) settles most pairs before any set is tried. Then the set that plain double names
-// (the centre's clamped coordinates) is tried first, then all 27.
+// look (first_look below: slabs along the coordinate axes and the box's axes, the box's centre in
+// the ball, the box's point of c's clamped coordinates in the ball, a slab along the direction from
+// that point to c) settles most pairs before any set is tried. Then the set those coordinates name
+// is tried first, then all 27.
 // Source: Ericson, Real-Time Collision Detection (2005), sections 5.1.4 (closest point on an OBB)
 // and 5.2.5 (sphere against box); Boyd and Vandenberghe, Convex Optimization (2004), section
 // 5.5.3 (KKT conditions).
@@ -60,13 +61,17 @@ struct frame {
     double r;
 };
 
-// w = (c - o) 1 - sum over bound j of a_j (+-h_j): c less the bound coordinates' part of x*.
+// (c - o) 1 - sum over j of a_j t_j: c less the box's point of coordinates t (degree 2).
 template <class L>
-[[nodiscard]] constexpr auto residual(L l, const frame& f, const active& at) {
-    const double t0 = at[0] * f.h[0], t1 = at[1] * f.h[1], t2 = at[2] * f.h[2];
+[[nodiscard]] constexpr auto residual_at(L l, const frame& f, double t0, double t1, double t2) {
     const auto e = arith::lift(l, f.c) - arith::lift(l, f.o);
     return arith::scaled(e, l(1.0)) - arith::scaled(arith::lift(l, f.a[0]), l(t0)) - arith::scaled(arith::lift(l, f.a[1]), l(t1)) -
            arith::scaled(arith::lift(l, f.a[2]), l(t2));
+}
+// w = (c - o) 1 - sum over bound j of a_j (+-h_j): c less the bound coordinates' part of x*.
+template <class L>
+[[nodiscard]] constexpr auto residual(L l, const frame& f, const active& at) {
+    return residual_at(l, f, at[0] * f.h[0], at[1] * f.h[1], at[2] * f.h[2]);
 }
 
 // A value's side agrees with the bound's (+1: >= 0, -1: <= 0).
@@ -244,7 +249,7 @@ template <class K>
     return {false, first};
 }
 
-// The first look, before the box coordinates: three kinds of sign that settle most pairs of a broad
+// The first look, before the box coordinates: five kinds of sign that settle most pairs of a broad
 // phase or a culling pass at once, each deciding only where it is proven positive (a value
 // returned here; the batch of oriented boxes against one ball, modules/batch/ball_obbs_simd.cpp,
 // evaluates the same values in lanes and relies on their form):
@@ -254,6 +259,12 @@ template <class K>
 //   box axis j:        |a_j . (c - o)| 1 - ((h_0 |a_j . a_0| + h_1 |a_j . a_1|) + h_2 |a_j . a_2|)
 //                      - |r| ((|a_jx| + |a_jy|) + |a_jz|) 1 > 0: no, since along a_j the box spans
 //                      a_j . o +- the h sum and the ball a_j . c +- |r| |a_j| (degree 3).
+//   a point of the box: r r (1 1) - |(c - o) 1 - sum a_j t_j|^2 > 0 with |t_j| <= h_j (plain
+//                      double's nearest, clamped): yes, that point is in the ball (degree 4).
+//   slab along d:      with d = c - o - sum a_j t_j in plain double (that point to c), the gap
+//                      g = (d . (c - o)) 1 - ((h_0 |d . a_0| + h_1 |d . a_1|) + h_2 |d . a_2|) > 0
+//                      (degree 3) and g g - r r (d . d) (1 1) > 0 (degree 6): no, since along d
+//                      the box reaches d . o + the h sum and the ball starts at d . c - |r| |d|.
 // Source: Ericson, Real-Time Collision Detection (2005), section 5.2.1 (separating-axis test).
 [[nodiscard]] constexpr double component(const vec3& v, unsigned m) { return m == 0 ? v.x : (m == 1 ? v.y : v.z); }
 [[nodiscard]] constexpr double component(const point3& p, unsigned m) { return m == 0 ? p.x : (m == 1 ? p.y : p.z); }
@@ -282,6 +293,42 @@ template <class L>
            l(ball::magnitude(f.r)) * norm1 * l(1.0);
 }
 
+// The box's point nearest c by plain double (c's coordinates along each axis, clamped to +-h_j; 0
+// for a zero axis or a NaN): any coordinates within the extents name a point of the box exactly.
+[[nodiscard]] constexpr std::array<double, 3> clamped(const frame& f) {
+    std::array<double, 3> t{};
+    const vec3 e = f.c - f.o;
+    for (unsigned j = 0; j < 3; ++j) {
+        const double aa = dot(f.a[j], f.a[j]), h = f.h[j];
+        const double s = aa > 0.0 ? dot(f.a[j], e) / aa : 0.0;
+        t[j] = s >= h ? h : (s <= -h ? -h : (s == s ? s : 0.0));
+    }
+    return t;
+}
+template <class L>
+[[nodiscard]] constexpr auto look_clamped(L l, const frame& f, const std::array<double, 3>& t) {
+    const auto w = residual_at(l, f, t[0], t[1], t[2]);
+    return l(f.r) * l(f.r) * (l(1.0) * l(1.0)) - arith::dot(w, w);
+}
+// The direction from that point to c, in plain double (any direction serves as a slab's).
+[[nodiscard]] constexpr vec3 apart_direction(const frame& f, const std::array<double, 3>& t) {
+    return f.c - f.o - t[0] * f.a[0] - t[1] * f.a[1] - t[2] * f.a[2];
+}
+template <class L>
+[[nodiscard]] constexpr auto look_apart_gap(L l, const frame& f, const vec3& d) {
+    const auto dd = arith::lift(l, d);
+    const auto reach = (l(f.h[0]) * sat::magnitude(arith::dot(dd, arith::lift(l, f.a[0]))) +
+                        l(f.h[1]) * sat::magnitude(arith::dot(dd, arith::lift(l, f.a[1])))) +
+                       l(f.h[2]) * sat::magnitude(arith::dot(dd, arith::lift(l, f.a[2])));
+    return arith::dot(dd, arith::lift(l, f.c) - arith::lift(l, f.o)) * l(1.0) - reach;
+}
+template <class L>
+[[nodiscard]] constexpr auto look_apart(L l, const frame& f, const vec3& d) {
+    const auto dd = arith::lift(l, d);
+    const auto gap = look_apart_gap(l, f, d);
+    return gap * gap - l(f.r) * l(f.r) * arith::dot(dd, dd) * (l(1.0) * l(1.0));
+}
+
 // The first look's verdict: no, yes, or nothing where no sign of it is proven positive (its signs
 // are hint::optional: an unproven one fails no pass).
 template <class K>
@@ -291,6 +338,12 @@ template <class K>
     if (arith::sgn<arith::hint::optional>(k, [=](auto L) { return look_centre(L, f); }) == sign::positive) return true;
     for (unsigned j = 0; j < 3; ++j)
         if (arith::sgn<arith::hint::optional>(k, [=](auto L) { return look_box_axis(L, f, j); }) == sign::positive) return false;
+    const std::array<double, 3> t = clamped(f);
+    if (arith::sgn<arith::hint::optional>(k, [=](auto L) { return look_clamped(L, f, t); }) == sign::positive) return true;
+    const vec3 d = apart_direction(f, t);
+    if (arith::sgn<arith::hint::optional>(k, [=](auto L) { return look_apart_gap(L, f, d); }) == sign::positive &&
+        arith::sgn<arith::hint::optional>(k, [=](auto L) { return look_apart(L, f, d); }) == sign::positive)
+        return false;
     return std::nullopt;
 }
 

@@ -240,6 +240,22 @@ void every_pair_on_every_target(const char* name, long sets, Make make) {
 //   = 1), unless a third of them turned by a random rotation instead (the point is then there only
 //   to rounding) or a quarter moved a few ulps;
 // the whole set at 2^k for a third of the sets.
+// A support::near_obb box with its extents doubled, a third of them turned by a random rotation
+// (`turned`), moved so that a corner, edge or face point of it lies on `on`: exactly unless turned.
+obb3 touching_box(support::rng& r, point3 on, bool& turned) {
+    obb3 b = support::near_obb(r);
+    for (double& h : b.half_extents) h *= 2;
+    turned = r.integer(0, 2) == 0;
+    if (turned) b.axes = support::random_frame(r);
+    b.center = on + (b.center - support::boundary_point(r, b, true));
+    return b;
+}
+// A quarter of the boxes moved a few ulps, then no longer known to touch.
+void nudged_now_and_then(support::rng& r, obb3& b, int& known) {
+    if (r.integer(0, 3) != 0) return;
+    b.center = {support::nudge(b.center.x, r.integer(-3, 3)), support::nudge(b.center.y, r.integer(-3, 3)), b.center.z};
+    known = 0;
+}
 struct obb_set {
     aabb3 box;
     std::vector<obb3> obbs;
@@ -269,16 +285,10 @@ obb_set make_obb_set(support::rng& r, int kind) {
             for (int a = 0; a < 3; ++a)
                 p[a] = a == on || r.coin() ? (r.coin() ? hi[a] : lo[a])
                                            : 0.5 * r.integer(static_cast<int>(2 * lo[a]), static_cast<int>(2 * hi[a]));
-            b = support::near_obb(r);
-            for (double& h : b.half_extents) h *= 2;
-            const bool turned = r.integer(0, 2) == 0;
-            if (turned) b.axes = support::random_frame(r);
-            b.center = point3{p[0], p[1], p[2]} + (b.center - support::boundary_point(r, b, true));
+            bool turned = false;
+            b = touching_box(r, point3{p[0], p[1], p[2]}, turned);
             known = turned ? 0 : 1;
-            if (r.integer(0, 3) == 0) {
-                b.center = {support::nudge(b.center.x, r.integer(-3, 3)), support::nudge(b.center.y, r.integer(-3, 3)), b.center.z};
-                known = 0;
-            }
+            nudged_now_and_then(r, b, known);
         }
         s.obbs.push_back(b);
         s.touching.push_back(known);
@@ -341,18 +351,12 @@ ball_obb_set make_ball_obb_set(support::rng& r, int kind) {
         for (int j = 2; j > 0; --j) std::swap(perm[j], perm[r.integer(0, j)]);
         const vec3 dir{(r.coin() ? -1.0 : 1.0) * b[perm[0]], (r.coin() ? -1.0 : 1.0) * b[perm[1]], (r.coin() ? -1.0 : 1.0) * b[perm[2]]};
         const point3 on = centre + dir;
-        obb3 box = support::near_obb(r);
-        for (double& h : box.half_extents) h *= 2;
-        const bool turned = r.integer(0, 2) == 0;
-        if (turned) box.axes = support::random_frame(r);
-        box.center = on + (box.center - support::boundary_point(r, box, true));
+        bool turned = false;
+        obb3 box = touching_box(r, on, turned);
         const vec3 in = box.center - centre;
         if (dot(in, in) < 81) box.center = on + (on - box.center); // the box turned through s
         int known = turned ? 0 : 1;
-        if (r.integer(0, 3) == 0) {
-            box.center = {support::nudge(box.center.x, r.integer(-3, 3)), support::nudge(box.center.y, r.integer(-3, 3)), box.center.z};
-            known = 0;
-        }
+        nudged_now_and_then(r, box, known);
         s.obbs.push_back(box);
         s.touching.push_back(known);
     }
