@@ -12,6 +12,7 @@ import incidence.core;
 import incidence.arith;
 import incidence.shapes;
 import :outward;
+import :aabb_of;
 
 export namespace incidence::bound {
 
@@ -19,8 +20,13 @@ namespace detail {
 // dot(d, p) rounded; two additions err by at most 2u(1+u) sum |terms| (u = 2^-53), and adding or
 // subtracting the bound itself rounds by about u sum more: 2^-50 (|x|+|y|+|z|) covers both, for
 // every direction (d in {-1, 0, 1}^3). Sums of subnormals are exact.
+// The zero terms are left out (a direction's are known where the loops below unroll): adding a zero
+// changes no sum but the sign of a zero one.
 [[nodiscard]] constexpr double dot_of(direction3 d, point3 p) {
-    return (d.x * p.x + d.y * p.y) + d.z * p.z; // the products are exact
+    const double x = d.x * p.x, y = d.y * p.y, z = d.z * p.z; // the products are exact
+    if (d.z == 0) return d.y == 0 ? x : (d.x == 0 ? y : x + y);
+    if (d.y == 0) return d.x == 0 ? z : x + z;
+    return d.x == 0 ? y + z : (x + y) + z;
 }
 [[nodiscard]] constexpr double dot_error(point3 p) {
     return ((p.x < 0 ? -p.x : p.x) + (p.y < 0 ? -p.y : p.y) + (p.z < 0 ? -p.z : p.z)) * 0x1p-50;
@@ -33,24 +39,35 @@ namespace detail {
 template <int K>
 [[nodiscard]] constexpr result<kdop<K>> kdop_of(std::span<const point3> points) {
     if (points.empty()) return error{errc::empty_input};
-    for (const point3& p : points)
-        if (!is_finite(p)) return error{errc::not_finite};
     kdop<K> out{};
+    if constexpr (K == 6) { // the axes alone: no sum, the box's bounds exactly
+        const result<aabb3> box = aabb_of(points);
+        if (!box) return box.error();
+        const aabb3 b = box.value();
+        out.min = {b.min.x, b.min.y, b.min.z}, out.max = {b.max.x, b.max.y, b.max.z};
+        return out;
+    }
     constexpr auto dirs = kdop<K>::directions();
     constexpr unsigned m = K / 2;
-    // Pass 1, every direction per point (each point read once): the smallest upper bound of a
-    // minimum and the largest lower bound of a maximum.
+    // Pass 1, every direction per point (each point read once): the rounded minimum and maximum,
+    // and the largest point's error bound (widest); then an upper bound of each exact minimum (the
+    // rounded least sum's point q: fl(v_q + widest) >= fl(v_q + err_q) >= its exact sum, rounding
+    // being monotone) and a lower bound of each exact maximum.
     std::array<double, m> min_upper, max_lower;
     min_upper.fill(__builtin_huge_val()), max_lower.fill(-__builtin_huge_val());
+    double widest = 0.0;
     for (const point3& p : points) {
-        const double err = detail::dot_error(p);
+        if (!is_finite(p)) return error{errc::not_finite};
+        const double e = detail::dot_error(p);
+        widest = e > widest ? e : widest;
 #pragma clang loop unroll(full)
         for (unsigned i = 0; i < m; ++i) {
             const double v = detail::dot_of(dirs[i], p);
-            min_upper[i] = v + err < min_upper[i] ? v + err : min_upper[i];
-            max_lower[i] = v - err > max_lower[i] ? v - err : max_lower[i];
+            min_upper[i] = v < min_upper[i] ? v : min_upper[i];
+            max_lower[i] = v > max_lower[i] ? v : max_lower[i];
         }
     }
+    for (unsigned i = 0; i < m; ++i) min_upper[i] = min_upper[i] + widest, max_lower[i] = max_lower[i] - widest;
     // Pass 2: the points whose rounded interval reaches past the other bound (usually one per
     // side), then their exact sums.
     std::vector<std::size_t> candidates;
