@@ -381,23 +381,28 @@ ball_obb_set special_ball_obb_set(support::rng& r) {
     return s;
 }
 
+// The one shape of a set of oriented boxes: a box or a ball.
+const aabb3& one_of(const obb_set& s) { return s.box; }
+const sphere3& one_of(const ball_obb_set& s) { return s.ball; }
+
+// Sets from make (kinds 0, 1, 2 in turn) on every SIMD target; pair names the one shape and the
+// many (box-obbs, ball-obbs), against says so in a failure's context.
 template <class Make>
-void obbs_on_every_target(const char* name, long sets, Make make) {
+void obbs_on_every_target(const char* name, const char* pair, const char* against, long sets, Make make) {
     counts c[4];
     const int targets = support::on_every_target(name, [&](support::rng& r, const std::string& where, const char*) {
         for (long k = 0; k < sets; ++k) {
-            const obb_set s = make(r, static_cast<int>(k % 3));
-            every_tier(s.box, s.obbs, s.touching, 1, c, where + ", box against oriented boxes");
+            const auto s = make(r, static_cast<int>(k % 3));
+            every_tier(one_of(s), s.obbs, s.touching, 1, c, where + against);
         }
     });
-    std::printf("[cases] batch solids %s, box-obbs: %d SIMD targets, %ld lanes per tier (%ld uncertain to the scalar filter); lanes "
+    std::printf("[cases] batch solids %s, %s: %d SIMD targets, %ld lanes per tier (%ld uncertain to the scalar filter); lanes "
                 "unlike the scalar answer %ld %ld %ld %ld (exact, conservative, aggressive, approximate); exact touching lanes not met: "
                 "%ld\n",
-                name, targets, c[0].lanes, c[0].uncertain, c[0].wrong, c[1].wrong, c[2].wrong, c[3].wrong, c[0].touching_wrong);
+                name, pair, targets, c[0].lanes, c[0].uncertain, c[0].wrong, c[1].wrong, c[2].wrong, c[3].wrong, c[0].touching_wrong);
     CHECK(targets >= 2);
     for (const counts& x : c) CHECK(x.wrong == 0);
     CHECK(c[0].touching_wrong == 0);
-    return;
 }
 } // namespace
 
@@ -410,37 +415,21 @@ TEST_CASE("batch solids: every lane is the scalar answer, special values, every 
 }
 
 TEST_CASE("batch solids: oriented boxes, every lane is the scalar answer, random and touching, every target", "[batch]") {
-    obbs_on_every_target("random and touching", support::cases(100), make_obb_set);
+    obbs_on_every_target("random and touching", "box-obbs", ", box against oriented boxes", support::cases(100), make_obb_set);
 }
 
 TEST_CASE("batch solids: oriented boxes, every lane is the scalar answer, special values, every target", "[batch]") {
-    obbs_on_every_target("special", support::cases(100), [](support::rng& r, int) { return special_obb_set(r); });
-}
-
-template <class Make>
-void ball_obbs_on_every_target(const char* name, long sets, Make make) {
-    counts c[4];
-    const int targets = support::on_every_target(name, [&](support::rng& r, const std::string& where, const char*) {
-        for (long k = 0; k < sets; ++k) {
-            const ball_obb_set s = make(r, static_cast<int>(k % 3));
-            every_tier(s.ball, s.obbs, s.touching, 1, c, where + ", ball against oriented boxes");
-        }
-    });
-    std::printf("[cases] batch solids %s, ball-obbs: %d SIMD targets, %ld lanes per tier (%ld uncertain to the scalar filter); lanes "
-                "unlike the scalar answer %ld %ld %ld %ld (exact, conservative, aggressive, approximate); exact touching lanes not met: "
-                "%ld\n",
-                name, targets, c[0].lanes, c[0].uncertain, c[0].wrong, c[1].wrong, c[2].wrong, c[3].wrong, c[0].touching_wrong);
-    CHECK(targets >= 2);
-    for (const counts& x : c) CHECK(x.wrong == 0);
-    CHECK(c[0].touching_wrong == 0);
+    obbs_on_every_target("special", "box-obbs", ", box against oriented boxes", support::cases(100),
+                         [](support::rng& r, int) { return special_obb_set(r); });
 }
 
 TEST_CASE("batch solids: oriented boxes against a ball, every lane is the scalar answer, random and touching, every target", "[batch]") {
-    ball_obbs_on_every_target("random and touching", support::cases(100), make_ball_obb_set);
+    obbs_on_every_target("random and touching", "ball-obbs", ", ball against oriented boxes", support::cases(100), make_ball_obb_set);
 }
 
 TEST_CASE("batch solids: oriented boxes against a ball, every lane is the scalar answer, special values, every target", "[batch]") {
-    ball_obbs_on_every_target("special", support::cases(100), [](support::rng& r, int) { return special_ball_obb_set(r); });
+    obbs_on_every_target("special", "ball-obbs", ", ball against oriented boxes", support::cases(100),
+                         [](support::rng& r, int) { return special_ball_obb_set(r); });
 }
 
 TEST_CASE("batch solids: touching lanes are counted", "[batch]") {
