@@ -73,6 +73,40 @@ std::optional<std::pair<P, point3>> at_centre(support::rng& r, bool near) {
     return std::pair{c->first, c->second.center};
 }
 
+// Two points, segments, rays, lines or triangles (distance/<name>): the distance in every tier on the flat
+// pairs' sets at scale 1 (random; near-degenerate: meeting, parallel and coplanar arrangements
+// alternating with sets apart by a small dyadic offset, testkit/flat_cases.hpp). The answer each
+// loop checks: whether the distance rounds to 0 (d = 0; an interval's lower end <= 0 for
+// conservative, its upper end for aggressive), against the exact distance; the peer: CGAL Epick's
+// sqrt(squared_distance) (not for the triangle's pairs).
+template <class A, class B>
+[[gnu::noinline]] void linear_distance_tiers(const std::string& name, bool near) {
+    support::rng r = set_rng(near);
+    std::vector<std::pair<A, B>> cs;
+    while (cs.size() < set_size)
+        cs.push_back(!near ? support::flat_random<A, B>(r, false)
+                           : (cs.size() % 2 == 0 ? support::flat_near<A, B>(r, false) : support::flat_apart<A, B>(r, false)));
+    // the distance rounds to 0 (they meet, or miss by less than half the least subnormal)
+    const auto truth = [](const std::pair<A, B>& c) {
+        return oracle::check_flat_distance(support::to_flat(c.first), support::to_flat(c.second), false, 0.0, 0.0, 0.0, 0.0).rounded;
+    };
+    const std::string dist = near ? "near_degenerate" : "random";
+    tiers(
+        name, dist, cs, truth,
+        [](auto tier, const std::pair<A, B>& c) {
+            const auto d = distance<decltype(tier)>(c.first, c.second);
+            if constexpr (std::is_same_v<decltype(d), const double>) return d == 0.0;
+            else if constexpr (std::is_same_v<decltype(tier), conservative>) return d.lo <= 0.0;
+            else return d.hi <= 0.0;
+        },
+        "distance");
+    if constexpr (std::is_same_v<B, triangle3>) return; // no peer row (oracle::flat_distance_epick)
+    std::vector<bool> t;
+    for (const auto& c : cs) t.push_back(truth(c));
+    reg("cgal_epick/distance/" + name + "/" + dist, cs, t, check::approximate,
+        [](const std::pair<A, B>& c) { return oracle::flat_distance_epick(support::to_flat(c.first), support::to_flat(c.second)) == 0.0; });
+}
+
 } // namespace
 
 // The peers: CGAL Epick's squared distances as its users write a signed distance
@@ -132,6 +166,21 @@ void register_distance(bool near) {
             return fcl_peer::point_apart_obb(p, cb, ab, hb);
         });
     }
+    linear_distance_tiers<line3, line3>("line_line", near);
+    linear_distance_tiers<line3, point3>("line_point", near);
+    linear_distance_tiers<line3, ray3>("line_ray", near);
+    linear_distance_tiers<line3, segment3>("line_segment", near);
+    linear_distance_tiers<point3, point3>("point_point", near);
+    linear_distance_tiers<point3, ray3>("point_ray", near);
+    linear_distance_tiers<point3, segment3>("point_segment", near);
+    linear_distance_tiers<ray3, ray3>("ray_ray", near);
+    linear_distance_tiers<ray3, segment3>("ray_segment", near);
+    linear_distance_tiers<segment3, segment3>("segment_segment", near);
+    linear_distance_tiers<line3, triangle3>("line_triangle", near);
+    linear_distance_tiers<point3, triangle3>("point_triangle", near);
+    linear_distance_tiers<ray3, triangle3>("ray_triangle", near);
+    linear_distance_tiers<segment3, triangle3>("segment_triangle", near);
+    linear_distance_tiers<triangle3, triangle3>("triangle_triangle", near);
     {
         // a mesh: the store outlives the view each case holds
         struct mesh_case {

@@ -6,7 +6,11 @@
 // is a conservative hit, a sure conservative hit is an exact hit, and every exact value lies in the
 // conservative and aggressive intervals. Where the shapes are well formed (make() accepts them),
 // differential against the exact values over CGAL Epeck (testkit/oracle/cgal_values.cpp): the
-// exact tier's hit exists iff the oracle's, and its t is correctly rounded. Any finding aborts.
+// exact tier's hit exists iff the oracle's, and its t is correctly rounded. The distance families
+// whose fuzzer is "values" (points, segments, rays, lines, triangles) the same way: every tier on
+// any bits; where finite, the exact value in both intervals, in both argument orders, and
+// correctly rounded against CGAL's squared_distance over Epeck or the exact QP (a triangle's pairs
+// but a point's). Any finding aborts.
 #include "testkit/oracle/cgal_oracle.hpp"
 #include "replay.hpp"
 #include <array>
@@ -164,6 +168,54 @@ void run(const F& fam, const bits& b, bool check) {
     (void)fam;
 }
 
+// A point, segment, ray, line or triangle from the doubles at offset i.
+template <class X>
+X part_of(const bits& b, int i) {
+    if constexpr (std::is_same_v<X, point3>) return b.p(i);
+    else if constexpr (std::is_same_v<X, segment3>) return {b.p(i), b.p(i + 3)};
+    else if constexpr (std::is_same_v<X, triangle3>) return {b.p(i), b.p(i + 3), b.p(i + 6)};
+    else return {b.p(i), b.d(i + 3)};
+}
+oracle::flat flat_of(const point3& p) { return {oracle::flat::point, {p.x, p.y, p.z}}; }
+oracle::flat flat_of(const segment3& s) { return {oracle::flat::segment, {s.a.x, s.a.y, s.a.z, s.b.x, s.b.y, s.b.z}}; }
+oracle::flat flat_of(const triangle3& t) {
+    return {oracle::flat::triangle, {t.a.x, t.a.y, t.a.z, t.b.x, t.b.y, t.b.z, t.c.x, t.c.y, t.c.z}};
+}
+template <class X>
+oracle::flat flat_of(const X& x) {
+    return {std::is_same_v<X, ray3> ? oracle::flat::ray : oracle::flat::line,
+            {x.origin.x, x.origin.y, x.origin.z, x.direction.x, x.direction.y, x.direction.z}};
+}
+
+template <class A, class B>
+void run_flat_distance(const bits& b, bool check);
+
+// A distance family: every tier on any bits; where finite, the exact value in both intervals, the
+// same in both argument orders, and correctly rounded against CGAL's.
+template <class F>
+void run_distance(const F&, const bits& b, bool check) {
+    using A = typename F::first_type;
+    using B = typename F::second_type;
+    if constexpr (flat_distance_shape<A> && flat_distance_shape<B>) run_flat_distance<A, B>(b, check);
+}
+template <class A, class B>
+void run_flat_distance(const bits& b, bool check) {
+    const A x = part_of<A>(b, 0);
+    const B y = part_of<B>(b, 12);
+    for (const bool squared : {false, true}) {
+        const double e = squared ? squared_distance(x, y) : distance(x, y);
+        const interval c = squared ? squared_distance<conservative>(y, x) : distance<conservative>(y, x);
+        const interval a = squared ? squared_distance<aggressive>(x, y) : distance<aggressive>(x, y);
+        const double p = squared ? squared_distance<approximate>(x, y) : distance<approximate>(x, y);
+        if (!check) continue;
+        const double er = squared ? squared_distance(y, x) : distance(y, x);
+        if (std::memcmp(&e, &er, sizeof e) != 0) std::abort();
+        if (!c.contains(e) || !a.contains(e)) std::abort();
+        const auto k = oracle::check_flat_distance(flat_of(x), flat_of(y), squared, e, c.lo, c.hi, p);
+        if (k.known && (!k.rounded || !k.enclosed)) std::abort(); // known: the exact QP may decline
+    }
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -172,12 +224,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::memcpy(b.v, data + 1, size - 1 < sizeof b.v ? size - 1 : sizeof b.v);
     std::size_t count = 0;
     catalog::for_each_value_family([&](const auto& f) { count += std::string_view(f.fuzzer) == "values"; });
+    catalog::for_each_distance([&](const auto& f) { count += std::string_view(f.fuzzer) == "values"; });
     const std::size_t pick = data[0] % (count == 0 ? 1 : count);
     std::size_t i = 0;
     const bool check = finite(b);
     catalog::for_each_value_family([&](const auto& f) {
         if (std::string_view(f.fuzzer) != "values") return;
         if (i++ == pick) run(f, b, check);
+    });
+    catalog::for_each_distance([&](const auto& f) {
+        if (std::string_view(f.fuzzer) != "values") return;
+        if (i++ == pick) run_distance(f, b, check);
     });
     return 0;
 }

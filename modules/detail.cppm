@@ -61,6 +61,8 @@ export import :contains.tetrahedron_pairs;
 export import :intersection.linear_pairs;
 export import :distance.ball_point;
 export import :distance.box_point;
+export import :distance.linear_pairs;
+export import :distance.triangle_pairs;
 export import :distance.halfspace_point;
 export import :distance.triangles_point;
 
@@ -94,6 +96,12 @@ struct farthest_body {
     template <class K, class A, class B>
     [[nodiscard]] constexpr auto operator()(K& k, const A& a, const B& b) const {
         return detail::max_squared_distance(k, a, b);
+    }
+};
+struct euclidean_body {
+    template <class K, class A, class B>
+    [[nodiscard]] constexpr auto operator()(K& k, const A& a, const B& b) const {
+        return detail::distance(k, a, b);
     }
 };
 struct signed_body {

@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <functional>
 #include <optional>
 #include <string>
@@ -84,6 +85,46 @@ struct distance_tally {
     }
 };
 
+// The range where a case is held to the approximate bound: the nonzero magnitudes in
+// [2^-120, 2^120] (in_range_at_all) and no deciding sign within `margin` of its permanent (clear).
+struct bound_scope {
+    double largest = 0;
+    bool in_range_at_all = false, clear = false;
+    double margin = 0x1p-40, relative = 0x1p-40; // the bound: relative M (M^2 squared) + 2^-140 (2^-280)
+};
+// The scope of a case of magnitudes m whose deciding signs' least relative margin is min_rel.
+inline bound_scope scope_of(const magnitudes& m, double min_rel, double margin = 0x1p-40, double relative = 0x1p-40) {
+    bound_scope b;
+    b.margin = margin, b.relative = relative, b.largest = m.largest;
+    b.clear = min_rel >= margin;
+    b.in_range_at_all = m.largest <= 0x1p120 && m.smallest >= 0x1p-120;
+    return b;
+}
+
+// One value in every tier (x exact, c and a the intervals, ap approximate) against the oracle's
+// check k of them.
+inline void tally_value(distance_tally& t, const bound_scope& b, bool squared, const oracle::distance_check& k, double x,
+                        incidence::interval c, incidence::interval a, double ap, const std::string& what) {
+    ++t.cases;
+    if (!k.known) {
+        ++t.declined;
+        return;
+    }
+    const bool in_range = b.in_range_at_all && b.clear;
+    const double scale = squared ? b.largest * b.largest : b.largest;
+    const bool beyond = !(k.error <= b.relative * scale + (squared ? 0x1p-280 : 0x1p-140));
+    const bool over = in_range && beyond;
+    if (b.in_range_at_all && !b.clear) ++t.near_decision, t.near_decision_over += beyond;
+    t.bounded += in_range;
+    if (in_range && scale > 0) t.worst = std::max(t.worst, k.error / scale);
+    const bool bad = !k.rounded || !k.enclosed || over;
+    t.not_rounded += !k.rounded, t.not_enclosed += !k.enclosed, t.over_bound += over;
+    if (bad && ++t.printed <= 5)
+        std::printf("  %s %s of %s: exact %a, [%a, %a] and [%a, %a], approximate %a; oracle %a (rounded %d, enclosed %d, error %.3g)\n",
+                    t.name.c_str(), squared ? "squared" : "unsquared", what.c_str(), x, c.lo, c.hi, a.lo, a.hi, ap, k.value, k.rounded,
+                    k.enclosed, k.error);
+}
+
 // One case: both distances of p and s in every tier against the oracle.
 template <class S>
 void check_distance_case(distance_tally& t, const S& s, incidence::point3 p, const oracle::distance_solid& solid, const std::string& what) {
@@ -95,34 +136,45 @@ void check_distance_case(distance_tally& t, const S& s, incidence::point3 p, con
     support_margin::margin_kernel mk;
     if constexpr (requires { detail::signed_distance(mk, s, p); }) (void)detail::signed_distance(mk, s, p);
     else (void)detail::signed_distance(mk, p, s);
-    const bool clear = mk.min_rel >= 0x1p-40;
-    const bool in_range_at_all = m.largest <= 0x1p120 && m.smallest >= 0x1p-120;
-    const bool in_range = in_range_at_all && clear;
+    const bound_scope b = scope_of(m, mk.min_rel);
     for (const bool squared : {false, true}) {
         const double x = squared ? squared_distance(s, p) : signed_distance(s, p);
         const interval c = squared ? squared_distance<conservative>(s, p) : signed_distance<conservative>(s, p);
         const interval a = squared ? squared_distance<aggressive>(s, p) : signed_distance<aggressive>(s, p);
         const double ap = squared ? squared_distance<approximate>(s, p) : signed_distance<approximate>(s, p);
-        ++t.cases;
         const auto k = oracle::check_distance(solid, {p.x, p.y, p.z}, squared, x, std::max(c.lo, a.lo), std::min(c.hi, a.hi), ap);
-        if (!k.known) {
-            ++t.declined;
-            continue;
-        }
-        t.inside += !squared && k.sign < 0;
-        const double scale = squared ? m.largest * m.largest : m.largest;
-        const bool beyond = !(k.error <= 0x1p-40 * scale + (squared ? 0x1p-280 : 0x1p-140));
-        const bool over = in_range && beyond;
-        if (in_range_at_all && !clear) ++t.near_decision, t.near_decision_over += beyond;
-        t.bounded += in_range;
-        if (in_range && scale > 0) t.worst = std::max(t.worst, k.error / scale);
-        const bool bad = !k.rounded || !k.enclosed || over;
-        t.not_rounded += !k.rounded, t.not_enclosed += !k.enclosed, t.over_bound += over;
-        if (bad && ++t.printed <= 5)
-            std::printf("  %s %s of %s and %s: exact %a, [%a, %a] and [%a, %a], approximate %a; oracle %a (rounded %d, enclosed %d, "
-                        "error %.3g)\n",
-                        t.name.c_str(), squared ? "squared" : "signed", what.c_str(), str(p).c_str(), x, c.lo, c.hi, a.lo, a.hi, ap,
-                        k.value, k.rounded, k.enclosed, k.error);
+        t.inside += !squared && k.known && k.sign < 0;
+        tally_value(t, b, squared, k, x, c, a, ap, what + " and " + str(p));
+    }
+}
+
+// One case of two points, segments, rays, lines or triangles: distance and squared_distance in
+// every tier, both argument orders, against the oracle (oracle::check_flat_distance: CGAL's, or the
+// exact QP). The bound's scope: margin 2^-20, relative 2^-30 (modules/query/distance/linear_pairs.cppm).
+template <class A, class B>
+void check_flat_distance_case(distance_tally& t, const A& a, const B& b) {
+    using namespace incidence;
+    magnitudes m;
+    for (const auto& f : {to_flat(a), to_flat(b)}) {
+        const int n = f.kind == oracle::flat::point ? 3 : f.kind == oracle::flat::triangle ? 9 : 6;
+        for (int i = 0; i < n; ++i) m.add(f.v[i]);
+    }
+    support_margin::margin_kernel mk;
+    if constexpr (requires { detail::distance(mk, a, b); }) (void)detail::distance(mk, a, b);
+    else (void)detail::distance(mk, b, a);
+    const bound_scope s = scope_of(m, mk.min_rel, 0x1p-20, 0x1p-30);
+    for (const bool squared : {false, true}) {
+        const double x = squared ? squared_distance(a, b) : distance(a, b);
+        const interval c = squared ? squared_distance<conservative>(a, b) : distance<conservative>(a, b);
+        const interval g = squared ? squared_distance<aggressive>(a, b) : distance<aggressive>(a, b);
+        const double ap = squared ? squared_distance<approximate>(a, b) : distance<approximate>(a, b);
+        // the other order gives the same values, bit for bit
+        const double xr = squared ? squared_distance(b, a) : distance(b, a);
+        const double apr = squared ? squared_distance<approximate>(b, a) : distance<approximate>(b, a);
+        CHECK(std::memcmp(&x, &xr, sizeof x) == 0);
+        CHECK(std::memcmp(&ap, &apr, sizeof ap) == 0);
+        const auto k = oracle::check_flat_distance(to_flat(a), to_flat(b), squared, x, std::max(c.lo, g.lo), std::min(c.hi, g.hi), ap);
+        tally_value(t, s, squared, k, x, c, g, ap, str(a) + " and " + str(b));
     }
 }
 

@@ -11,7 +11,8 @@
 //   parallel  both along one direction d (or -d, 2d): collinear with overlapping, touching or
 //             separated ranges, or side by side in a plane; a plane containing d;
 //   coplanar  the second shape lies in the first one's plane (a line in a triangle's plane, two
-//             triangles in one plane).
+//             triangles in one plane);
+//   apart     (flat_apart, for distances) the second shape placed at X plus a small dyadic offset.
 // Random: coordinates in [-1, 1] at a random scale 2^-500..2^500, half of them in one plane
 // z = c (every shape but a tetrahedron, so pairs of lines can meet; a box then has a face in
 // it), unnudged.
@@ -292,6 +293,21 @@ std::pair<A, B> flat_near(rng& r, bool any_scale = true) {
         transform tr = random_transform(r, true, any_scale);
         return {realise(a, tr), realise(b, tr)};
     }
+}
+
+// Apart: a placed at X, b at X + h, h a small dyadic vector (zero for 1 in 729 cases), each along
+// its own or a common direction, so that the nearest points fall exactly on an end, inside, or
+// along a parallel stretch; then moved (the distance tests' third arrangement).
+template <class A, class B>
+std::pair<A, B> flat_apart(rng& r, bool any_scale = true) {
+    using namespace incidence;
+    const point3 X = small_point(r);
+    const vec3 h{r.integer(-4, 4) * 0.25, r.integer(-4, 4) * 0.25, r.integer(-4, 4) * 0.25};
+    const vec3 d = small_dir(r);
+    const auto a = place<A>(r, X, d, r.coin());
+    const auto b = place<B>(r, X + h, r.coin() ? d : small_dir(r), r.coin());
+    transform tr = random_transform(r, true, any_scale);
+    return {realise(a, tr), realise(b, tr)};
 }
 
 // Random shapes; every point and direction in the plane z = c for half of the cases.

@@ -428,7 +428,9 @@ inline constexpr std::tuple value_families{
 // clang-format on
 
 // squared_distance(a, b) and signed_distance(a, b) of a point and a solid (and the box's
-// max_squared_distance). The approximate tier's stated bound: for aabb_point gamma_5 relative on the
+// max_squared_distance); squared_distance(a, b) and distance(a, b) of two points, segments, rays,
+// lines or triangles (their bound: 2^-30 M^2 where no deciding sign lies within 2^-20 of its
+// permanent, modules/query/distance/linear_pairs.cppm and triangle_pairs.cppm). The approximate tier's stated bound: for aabb_point gamma_5 relative on the
 // squared distance (modules/query/distance/box_point.cppm), 0 here; for the others, where no deciding
 // sign lies within 2^-40 of its permanent, |d~ - d| <= bound M + 2^-140 for the signed distance and
 // bound M^2 + 2^-280 for the squared one, M the largest magnitude among the inputs' numbers, inputs
@@ -444,6 +446,21 @@ inline constexpr std::tuple distances{
     family<kdop<14>, point3, 0>{"kdop_point", "distance/halfspace_point", "spheres_boxes", 0x1p-40, "exact QP outside, rows in rationals inside (testkit/oracle/cgal_distance.cpp)", "the same active set and roots in double", {}},
     family<point3, tetrahedron3, 0>{"point_tetrahedron", "distance/triangles_point", "spheres_boxes", 0x1p-40, "exact QP outside, faces in rationals inside (testkit/oracle/cgal_distance.cpp)", "the same region walk and roots in double", {}},
     family<mesh3, point3, 0>{"mesh_point", "distance/triangles_point", "spheres_boxes", 0x1p-40, "point-triangle distances over Epeck, crossing parity (testkit/oracle/cgal_distance.cpp)", "the same region walk and roots in double", {}},
+    family<line3, line3, 0>{"line_line", "distance/linear_pairs", "values", 0x1p-30, "CGAL squared_distance over Epeck (testkit/oracle/cgal_distance.cpp)", "the same candidates and quotients in double", {}},
+    family<line3, point3, 0>{"line_point", "distance/linear_pairs", "values", 0x1p-30, "CGAL squared_distance over Epeck (testkit/oracle/cgal_distance.cpp)", "the same candidates and quotients in double", {}},
+    family<line3, ray3, 0>{"line_ray", "distance/linear_pairs", "values", 0x1p-30, "CGAL squared_distance over Epeck (testkit/oracle/cgal_distance.cpp)", "the same candidates and quotients in double", {}},
+    family<line3, segment3, 0>{"line_segment", "distance/linear_pairs", "values", 0x1p-30, "CGAL squared_distance over Epeck (testkit/oracle/cgal_distance.cpp)", "the same candidates and quotients in double", {}},
+    family<point3, point3, 0>{"point_point", "distance/linear_pairs", "values", 0x1p-30, "CGAL squared_distance over Epeck (testkit/oracle/cgal_distance.cpp)", "the same candidates and quotients in double", {}},
+    family<point3, ray3, 0>{"point_ray", "distance/linear_pairs", "values", 0x1p-30, "CGAL squared_distance over Epeck (testkit/oracle/cgal_distance.cpp)", "the same candidates and quotients in double", {}},
+    family<point3, segment3, 0>{"point_segment", "distance/linear_pairs", "values", 0x1p-30, "CGAL squared_distance over Epeck (testkit/oracle/cgal_distance.cpp)", "the same candidates and quotients in double", {}},
+    family<ray3, ray3, 0>{"ray_ray", "distance/linear_pairs", "values", 0x1p-30, "CGAL squared_distance over Epeck (testkit/oracle/cgal_distance.cpp)", "the same candidates and quotients in double", {}},
+    family<ray3, segment3, 0>{"ray_segment", "distance/linear_pairs", "values", 0x1p-30, "CGAL squared_distance over Epeck (testkit/oracle/cgal_distance.cpp)", "the same candidates and quotients in double", {}},
+    family<segment3, segment3, 0>{"segment_segment", "distance/linear_pairs", "values", 0x1p-30, "CGAL squared_distance over Epeck (testkit/oracle/cgal_distance.cpp)", "the same candidates and quotients in double", {}},
+    family<line3, triangle3, 0>{"line_triangle", "distance/triangle_pairs", "values", 0x1p-30, "exact QP, CGAL QP_solver over Gmpzf (testkit/oracle/cgal_distance.cpp)", "the same walk, candidates and quotients in double", {}},
+    family<point3, triangle3, 0>{"point_triangle", "distance/triangle_pairs", "values", 0x1p-30, "CGAL squared_distance over Epeck (testkit/oracle/cgal_distance.cpp)", "the same walk, candidates and quotients in double", {}},
+    family<ray3, triangle3, 0>{"ray_triangle", "distance/triangle_pairs", "values", 0x1p-30, "exact QP, CGAL QP_solver over Gmpzf (testkit/oracle/cgal_distance.cpp)", "the same walk, candidates and quotients in double", {}},
+    family<segment3, triangle3, 0>{"segment_triangle", "distance/triangle_pairs", "values", 0x1p-30, "exact QP, CGAL QP_solver over Gmpzf (testkit/oracle/cgal_distance.cpp)", "the same walk, candidates and quotients in double", {}},
+    family<triangle3, triangle3, 0>{"triangle_triangle", "distance/triangle_pairs", "values", 0x1p-30, "exact QP, CGAL QP_solver over Gmpzf (testkit/oracle/cgal_distance.cpp)", "the same walk, candidates and quotients in double", {}},
 };
 // clang-format on
 

@@ -1,6 +1,7 @@
-// squared_distance<Tier>(a, b), max_squared_distance<Tier>(a, b) and signed_distance<Tier>(a, b):
-// the squared distance between the nearest (farthest) points, and the signed distance from a point
-// to a solid (positive outside, negative inside, zero on the boundary). exact: correctly rounded;
+// squared_distance<Tier>(a, b), distance<Tier>(a, b), max_squared_distance<Tier>(a, b) and
+// signed_distance<Tier>(a, b): the squared distance between the nearest (farthest) points, the
+// distance, and the signed distance from a point to a solid (positive outside, negative inside,
+// zero on the boundary). exact: correctly rounded;
 // conservative and aggressive: an interval that contains the exact value; approximate: plain double
 // with the pair's stated bound. The bodies: modules/query/distance/.
 module;
@@ -45,6 +46,37 @@ template <tier Tier = exact, distance_solid S>
 [[nodiscard]] constexpr auto signed_distance(const point3& p, const S& s) {
     return signed_distance<Tier>(s, p);
 }
+// distance(s, p) = distance(p, s): zero inside the solid, the signed distance outside (the
+// positive part of a correctly rounded value is correctly rounded; of an enclosure, an enclosure).
+template <tier Tier = exact, distance_solid S>
+[[nodiscard]] constexpr auto distance(const S& s, const point3& p) {
+    const auto d = signed_distance<Tier>(s, p);
+    if constexpr (std::is_same_v<decltype(d), const interval>) return interval{d.lo < 0.0 ? 0.0 : d.lo, d.hi < 0.0 ? 0.0 : d.hi};
+    else return d < 0.0 ? 0.0 : d;
+}
+template <tier Tier = exact, distance_solid S>
+[[nodiscard]] constexpr auto distance(const point3& p, const S& s) {
+    return distance<Tier>(s, p);
+}
+
+// Points, segments, rays, lines and triangles against each other, in either order: the squared
+// distance and the distance between their nearest points (0 where they meet; a NaN or infinite
+// number: NaN).
+template <class S>
+concept flat_distance_shape = detail::linear_distance::linear_part<S> || std::is_same_v<S, triangle3>;
+template <tier Tier = exact, flat_distance_shape A, flat_distance_shape B>
+[[nodiscard]] constexpr auto squared_distance(const A& a, const B& b) {
+    if constexpr (detail::linear_distance::rank<A> <= detail::linear_distance::rank<B>)
+        return detail::value_pair<Tier>(a, b, detail::nearest_body{});
+    else return detail::value_pair<Tier>(b, a, detail::nearest_body{});
+}
+template <tier Tier = exact, flat_distance_shape A, flat_distance_shape B>
+[[nodiscard]] constexpr auto distance(const A& a, const B& b) {
+    if constexpr (detail::linear_distance::rank<A> <= detail::linear_distance::rank<B>)
+        return detail::value_pair<Tier>(a, b, detail::euclidean_body{});
+    else return detail::value_pair<Tier>(b, a, detail::euclidean_body{});
+}
+
 template <tier Tier = exact>
 [[nodiscard]] constexpr auto max_squared_distance(const aabb3& b, const point3& p) {
     return detail::value_pair<Tier>(b, p, detail::farthest_body{});

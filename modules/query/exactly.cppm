@@ -17,6 +17,7 @@ struct intersection_body;
 struct nearest_body;
 struct farthest_body;
 struct signed_body;
+struct euclidean_body;
 
 // Body{}(exact kernel, a, b) as an R; R{} where the exact kernel met an input it cannot represent.
 template <class Body, class R, class A, class B>

@@ -8,17 +8,25 @@
 //     in rationals: a tetrahedron's from its vertices);
 //   a mesh: Q0 = the least CGAL::squared_distance(Point_3, Triangle_3) over its triangles (a
 //     collinear one as its segments), the side by mesh_inside (cgal_mesh.cpp).
+// Between two points, segments, rays or lines (check_flat_distance): Q0 = CGAL::squared_distance
+// over Epeck of the two (a degenerate one as its point; a ray against a segment as the segment of
+// the ray that holds the nearest point: see there); a point against a triangle: CGAL's
+// squared_distance over Epeck (a collinear triangle as its edges); a triangle against a segment,
+// ray, line or triangle: the exact QP's minimum of |x - y|^2 (cgal_lp.cpp); the distance
+// sqrt(Q0), the squared Q0.
 // Correct rounding is decided at the midpoints next to x, exactly (ties to even).
 #include "cgal_oracle.hpp"
 #include "cgal_lp_point.hpp"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/squared_distance_3.h>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <type_traits>
 #include <utility>
+#include <variant>
 
 #include <gmpxx.h>
 
@@ -206,12 +214,9 @@ std::optional<exact_value> truth(const distance_solid& s, const std::array<doubl
     return std::nullopt;
 }
 
-} // namespace
-
-distance_check check_distance(const distance_solid& s, const std::array<double, 3>& p, bool squared, double x, double lo, double hi,
-                              double approx) {
+// The checks of x, [lo, hi] and approx against v.
+distance_check check_value(const std::optional<exact_value>& v, double x, double lo, double hi, double approx) {
     distance_check out;
-    const auto v = truth(s, p, squared);
     if (!v) return out;
     out.known = true;
     out.rounded = rounds_to(*v, x);
@@ -236,6 +241,86 @@ distance_check check_distance(const distance_solid& s, const std::array<double, 
         out.error = std::fabs(d.get_d());
     }
     return out;
+}
+
+// A point, segment, ray or line over kernel Kernel: the degenerate ones as their point.
+template <class Kernel>
+using linear_shape = std::variant<typename Kernel::Point_3, typename Kernel::Segment_3, typename Kernel::Ray_3, typename Kernel::Line_3>;
+template <class Kernel>
+std::optional<linear_shape<Kernel>> linear_of(const flat& f) {
+    using P = typename Kernel::Point_3;
+    using V = typename Kernel::Vector_3;
+    const P a(f.v[0], f.v[1], f.v[2]);
+    const bool zero = f.v[3] == 0 && f.v[4] == 0 && f.v[5] == 0;
+    switch (f.kind) {
+    case flat::point: return linear_shape<Kernel>(a);
+    case flat::segment: {
+        const P b(f.v[3], f.v[4], f.v[5]);
+        if (a == b) return linear_shape<Kernel>(a);
+        return linear_shape<Kernel>(typename Kernel::Segment_3(a, b));
+    }
+    case flat::ray:
+        if (zero) return linear_shape<Kernel>(a);
+        return linear_shape<Kernel>(typename Kernel::Ray_3(a, V(f.v[3], f.v[4], f.v[5])));
+    case flat::line:
+        if (zero) return linear_shape<Kernel>(a);
+        return linear_shape<Kernel>(typename Kernel::Line_3(a, V(f.v[3], f.v[4], f.v[5])));
+    default: return std::nullopt;
+    }
+}
+
+} // namespace
+
+distance_check check_distance(const distance_solid& s, const std::array<double, 3>& p, bool squared, double x, double lo, double hi,
+                              double approx) {
+    return check_value(truth(s, p, squared), x, lo, hi, approx);
+}
+
+// A point against a triangle: CGAL's squared_distance (a collinear triangle as its edges); a
+// triangle against a segment, a ray, a line or a triangle: the exact QP on the two sets.
+static std::optional<mpq_class> triangle_truth(const flat& a, const flat& b) {
+    if (b.kind != flat::triangle) return triangle_truth(b, a);
+    if (a.kind == flat::point) return triangle_sqdist(point(a.v), point(b.v), point(b.v + 3), point(b.v + 6));
+    return qp_sets_squared_distance(lp_set(a), lp_set(b));
+}
+
+distance_check check_flat_distance(const flat& a, const flat& b, bool squared, double x, double lo, double hi, double approx) {
+    const auto of = [&](const mpq_class& q0) {
+        exact_value v;
+        if (squared) v.t = q0;
+        else v.q = q0;
+        return check_value(v, x, lo, hi, approx);
+    };
+    if (a.kind == flat::triangle || b.kind == flat::triangle) {
+        const auto q0 = triangle_truth(a, b);
+        if (!q0) return {};
+        return of(*q0);
+    }
+    auto u = linear_of<K>(a), w = linear_of<K>(b);
+    if (!u || !w) return {};
+    // CGAL 5.5's squared_distance(Ray_3, Segment_3) is wrong for a segment on the ray's line ahead
+    // of its origin and pointing back at it (the ray from 0 along z and the segment from (0, 0, 3)
+    // to (0, 0, 2): 4, not 0); so a ray against a segment is the ray's part that can hold the
+    // nearest point, the segment from the origin O to O + (t + 1) D, t the larger of 0 and the
+    // segment's end points' parameters along D (exact).
+    const auto cut = [](std::optional<linear_shape<K>>& x, const std::optional<linear_shape<K>>& other) {
+        const auto* r = std::get_if<K::Ray_3>(&*x);
+        const auto* s = std::get_if<K::Segment_3>(&*other);
+        if (r == nullptr || s == nullptr) return;
+        const K::Vector_3 d = r->to_vector();
+        K::FT t = 0;
+        for (const K::Point_3& p : {s->source(), s->target()}) t = CGAL::max(t, (p - r->source()) * d / (d * d));
+        x = linear_shape<K>(K::Segment_3(r->source(), r->source() + (t + 1) * d));
+    };
+    cut(u, w), cut(w, u);
+    return of(std::visit([](const auto& g, const auto& h) { return to_mpq(CGAL::squared_distance(g, h)); }, *u, *w));
+}
+
+double flat_distance_epick(const flat& a, const flat& b) {
+    using E = CGAL::Exact_predicates_inexact_constructions_kernel;
+    const auto u = linear_of<E>(a), w = linear_of<E>(b);
+    if (!u || !w) return std::nan("");
+    return std::sqrt(std::visit([](const auto& g, const auto& h) { return CGAL::to_double(CGAL::squared_distance(g, h)); }, *u, *w));
 }
 
 } // namespace oracle

@@ -361,7 +361,8 @@ std::optional<bool> qp_ball_meets(const convex_set& s, const std::array<double, 
     return **d <= mpq_class(r) * mpq_class(r);
 }
 
-std::optional<bool> qp_sets_within(const convex_set& a, const convex_set& b, double r1, double r2) {
+// The least |x - y|^2 / 2 over x in a and y in b, or nullopt (declined), or infeasible.
+static std::optional<qp_minimum> sets_half_squared_distance(const convex_set& a, const convex_set& b) {
     // minimise |x - y|^2 / 2 over x in a (variables 0, 1, 2) and y in b (3, 4, 5)
     program qp(CGAL::EQUAL, false, 0.0, false, 0.0);
     int var = 6, row = 0;
@@ -372,7 +373,17 @@ std::optional<bool> qp_sets_within(const convex_set& a, const convex_set& b, dou
         qp.set_d(k + 3, k + 3, 1.0);
         qp.set_d(k + 3, k, -1.0);
     }
-    const auto m = minimum(qp);
+    return minimum(qp);
+}
+
+std::optional<mpq_class> qp_sets_squared_distance(const convex_set& a, const convex_set& b) {
+    const auto m = sets_half_squared_distance(a, b);
+    if (!m || m->infeasible) return std::nullopt;
+    return mpq_class(2 * m->value);
+}
+
+std::optional<bool> qp_sets_within(const convex_set& a, const convex_set& b, double r1, double r2) {
+    const auto m = sets_half_squared_distance(a, b);
     if (!m) return std::nullopt;
     if (m->infeasible) return false;
     const mpq_class reach = abs(mpq_class(r1)) + abs(mpq_class(r2));

@@ -15,6 +15,9 @@ std::optional<std::array<mpq_class, 3>> lp_point(const convex_set& s);
 // The exact minimum of |x - c|^2 over s (CGAL's QP_solver over Gmpzf, certificate-checked): an
 // empty inner value when s is empty, nothing when every pricing strategy's answer is rejected.
 std::optional<std::optional<mpq_class>> qp_squared_distance(const convex_set& s, const std::array<double, 3>& c);
+// The exact minimum of |x - y|^2 over x in a and y in b (both nonempty); nullopt when every pricing
+// strategy's answer is rejected.
+std::optional<mpq_class> qp_sets_squared_distance(const convex_set& a, const convex_set& b);
 // The rows n . x <= c of s in rationals, for s given by half-spaces and slabs alone or a box with a
 // nonzero determinant (its six faces); nothing for another set.
 struct exact_row {

@@ -138,6 +138,14 @@ convex_set lp_set(const flat& f);
 bool flat_contains(const flat& a, const flat& b);
 bool flat_intersect(const flat& a, const flat& b);
 bool flat_intersect_epick(const flat& a, const flat& b);
+// The squared distance (squared) or the distance between a point, segment, ray, line or triangle
+// and another (cgal_distance.cpp: CGAL's squared_distance over Epeck, degenerate shapes as their
+// point sets; the exact QP for a triangle against a segment, ray, line or triangle), checked against
+// x, [lo, hi] and approx as check_distance does; known false for other kinds or a declined QP.
+distance_check check_flat_distance(const flat& a, const flat& b, bool squared, double x, double lo, double hi, double approx);
+// The same distance over Epick, as its users write it (a peer, for timing): sqrt(squared_distance);
+// NaN for a triangle (no peer row for the triangle pairs).
+double flat_distance_epick(const flat& a, const flat& b);
 // The ball |x - c| <= |r| against a flat shape or a solid: CGAL's squared_distance(Point_3, X)
 // against r r (exact over Epeck; rounded over Epick, a peer for timing), a coplanar tetrahedron as
 // its four faces. (Not CGAL's do_intersect(Sphere_3, X): for a triangle and a tetrahedron it reads

@@ -116,6 +116,8 @@ static_assert(!intersects(point3{1, 2, 2.0000000000000004}, sphere3{{0, 0, 0}, 3
 static_assert(intersects(B, aabb3{{1, 1, 1}, {2, 2, 2}}));
 static_assert(covers(aabb3{{0, 0, 0}, {1, 1, 1}}, aabb3{{1, 0, 0}, {2, 1, 1}}, aabb3{{0, 0, 0}, {2, 1, 1}}));
 static_assert(squared_distance(B, point3{2, 3, 4}) == 14.0);
+static_assert(squared_distance(point3{0, 0, 0}, point3{3, 4, 0}) == 25.0);
+static_assert(distance(segment3{{-1, 0, 0}, {1, 0, 0}}, segment3{{0, -1, 2}, {0, 1, 2}}) == 2.0);
 // predicates, including the subnormal range
 static_assert(orient3d(point3{0, 0, 0}, point3{tiny, 0, 0}, point3{0, tiny, 0}, point3{0, 0, -tiny}) == sign::positive);
 static_assert(orient3d(point3{0.1, 0.2, 0.3}, point3{0.2, 0.4, 0.6}, point3{0.3, 0.1, 0.7}, point3{0.1, 0.2, 0.3}) == sign::zero);

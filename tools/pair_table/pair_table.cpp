@@ -127,7 +127,7 @@ std::string document(const std::filesystem::path& root) {
          "interval where that interval is sure.\n\n";
     d += header;
     catalog::for_each_value_family([&](const auto& f) { d += row(root, facts(f, std::string("tests/query/") + f.table + ".cpp"), false); });
-    d += "\n## How far apart? `squared_distance<Tier>(a, b)`\n\n";
+    d += "\n## How far apart? `squared_distance<Tier>(a, b)`, `distance<Tier>(a, b)`, `signed_distance<Tier>(p, solid)`\n\n";
     d += header;
     catalog::for_each_distance([&](const auto& f) { d += row(root, facts(f, std::string("tests/query/") + f.table + ".cpp"), false); });
     return d;
